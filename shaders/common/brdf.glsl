@@ -1,0 +1,79 @@
+// The glTF 2.0 specification's reference BRDF (Appendix B): Lambert diffuse, GGX distribution,
+// height-correlated Smith visibility, Schlick Fresnel; and KHR_lights_punctual attenuation.
+#ifndef LLL_BRDF_GLSL
+#define LLL_BRDF_GLSL
+#include "shared/gpu_types.h"
+
+const float kPi = 3.14159265358979;
+
+struct Surface {
+  vec3 position;
+  vec3 normal;  // unit, facing the viewer's side for double-sided materials
+  vec3 view;    // unit, from the surface towards the eye
+  vec3 baseColor;
+  float alpha;
+  float metallic;
+  float roughness;
+  float occlusion;
+  vec3 emissive;
+};
+
+float distributionGgx(float nDotH, float alphaRoughness) {
+  float a2 = alphaRoughness * alphaRoughness;
+  float d = nDotH * nDotH * (a2 - 1.0) + 1.0;
+  return a2 / (kPi * d * d);
+}
+
+float visibilitySmithGgxCorrelated(float nDotL, float nDotV, float alphaRoughness) {
+  float a2 = alphaRoughness * alphaRoughness;
+  float ggxV = nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2);
+  float ggxL = nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2);
+  float sum = ggxV + ggxL;
+  return sum > 0.0 ? 0.5 / sum : 0.0;
+}
+
+vec3 fresnelSchlick(vec3 f0, float vDotH) { return f0 + (1.0 - f0) * pow(1.0 - vDotH, 5.0); }
+
+// BRDF * cos(theta_l) for light arriving from unit direction l.
+vec3 brdfCosine(Surface s, vec3 l) {
+  float nDotL = dot(s.normal, l);
+  if (nDotL <= 0.0) return vec3(0.0);
+  float nDotV = max(dot(s.normal, s.view), 1e-4);
+  vec3 h = normalize(l + s.view);
+  float nDotH = max(dot(s.normal, h), 0.0);
+  float vDotH = max(dot(s.view, h), 0.0);
+  float alphaRoughness = max(s.roughness * s.roughness, 1e-3);
+  vec3 f0 = mix(vec3(0.04), s.baseColor, s.metallic);
+  vec3 diffuseColor = mix(s.baseColor, vec3(0.0), s.metallic);
+  vec3 f = fresnelSchlick(f0, vDotH);
+  vec3 diffuse = (1.0 - f) * diffuseColor / kPi;
+  vec3 specular = f * distributionGgx(nDotH, alphaRoughness) * visibilitySmithGgxCorrelated(nDotL, nDotV, alphaRoughness);
+  return (diffuse + specular) * nDotL;
+}
+
+// KHR_lights_punctual: inverse square with the recommended smooth window to zero at the range.
+float rangeAttenuation(float distance, float range) {
+  float ratio = distance / range;
+  float window = clamp(1.0 - ratio * ratio * ratio * ratio, 0.0, 1.0);
+  return window * window / max(distance * distance, 1e-4);
+}
+
+float spotAttenuation(GpuLight light, vec3 towardsLight) {
+  if (uint(light.directionType.w) != kLightSpot) return 1.0;
+  float cd = dot(light.directionType.xyz, -towardsLight);
+  float t = clamp(cd * light.spotParams.z + light.spotParams.w, 0.0, 1.0);
+  return t * t;
+}
+
+// Radiance one light reflects from the surface towards the eye.
+vec3 evaluateLight(GpuLight light, Surface s) {
+  vec3 toLight = light.positionRange.xyz - s.position;
+  float distance = length(toLight);
+  if (distance >= light.positionRange.w) return vec3(0.0);
+  vec3 l = toLight / max(distance, 1e-6);
+  float attenuation = rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
+  if (attenuation <= 0.0) return vec3(0.0);
+  return brdfCosine(s, l) * light.colorIntensity.rgb * (light.colorIntensity.w * attenuation);
+}
+
+#endif

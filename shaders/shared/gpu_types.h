@@ -1,0 +1,50 @@
+// Structs read by both the C++ host code and GLSL. Written once here; see shared.h for the rules.
+#ifndef LLL_GPU_TYPES_H
+#define LLL_GPU_TYPES_H
+#include "shared/limits.h"
+
+LLL_NAMESPACE_BEGIN
+
+// One punctual light (KHR_lights_punctual), in world space.
+struct GpuLight {
+  vec4 positionRange;   // xyz position, w range (distance where the light is cut off)
+  vec4 colorIntensity;  // rgb linear colour, w intensity (candela)
+  vec4 directionType;   // xyz direction the spot points to (unit), w kLightPoint or kLightSpot
+  vec4 spotParams;      // x cos(outer cone), y cos(inner cone), z angle scale, w angle offset
+};
+LLL_CHECK_SIZE(GpuLight, 64);
+
+// Per-frame constants: camera, viewport and light count.
+struct FrameUniforms {
+  mat4 view;
+  mat4 proj;
+  mat4 viewProj;
+  mat4 invViewProj;
+  vec4 cameraPosition;  // xyz world, w unused
+  vec4 viewport;        // width, height, 1/width, 1/height
+  vec4 depthParams;     // near, far, tan(fovy/2) * aspect, tan(fovy/2)
+  uvec4 counts;         // x light count, y tile size, z tiles x, w tiles y
+  vec4 ambient;         // rgb constant ambient radiance, w exposure
+  uvec4 options;        // x debug view, y link format (0 compact, 1 wide), z link pool capacity, w unused
+};
+LLL_CHECK_SIZE(FrameUniforms, 4 * 64 + 6 * 16);
+
+// A metallic-roughness material (glTF 2.0).
+struct GpuMaterial {
+  vec4 baseColorFactor;
+  vec4 emissive;  // rgb emissive factor * KHR_materials_emissive_strength, w unused
+  vec4 params;    // x metallic, y roughness, z normal scale, w occlusion strength
+  uvec4 flags;    // x alpha mode, y double sided, z texture mask (bit per MaterialTexture), w unused
+  vec4 alpha;     // x alpha cutoff, yzw unused
+};
+LLL_CHECK_SIZE(GpuMaterial, 80);
+
+// Per-draw push constants of every mesh pass.
+struct DrawPush {
+  mat4 model;
+  uvec4 ids;  // x material index, yzw unused
+};
+LLL_CHECK_SIZE(DrawPush, 80);
+
+LLL_NAMESPACE_END
+#endif

@@ -1,0 +1,34 @@
+// Every fixed limit of lll in one place, shared by C++ and GLSL, each with its reason.
+#ifndef LLL_LIMITS_H
+#define LLL_LIMITS_H
+#include "shared/shared.h"
+
+LLL_NAMESPACE_BEGIN
+
+// Compact 8-byte links keep the light index in 8 bits (Bezrati 1.2.2): beyond this many lights
+// the 16-byte wide link is used.
+LLL_CONST(uint, kCompactLinkMaxLights, 256u);
+// Compact links keep "next" in 24 bits; 0xFFFFFF marks the end of a list.
+LLL_CONST(uint, kCompactLinkEnd, 0xFFFFFFu);
+LLL_CONST(uint, kLinkEnd, 0xFFFFFFFFu);
+// lavapipe caps storage buffers at 128 MiB; the link pool is one storage buffer.
+LLL_CONST(uint, kMaxStorageBufferBytes, 128u * 1024u * 1024u);
+// Light array in one storage buffer of 64-byte lights, so the same 128 MiB cap bounds it.
+LLL_CONST(uint, kMaxLights, 1u << 20);
+// 2D compute passes (linear depth, tonemap, tile reduction) use 8x8 groups: 64 invocations is a
+// multiple of every subgroup size we meet (8 on lavapipe, 32 on NVIDIA).
+LLL_CONST(uint, kTileGroupSize, 8u);
+// Largest supported tile: the tile-depth reduction walks a tile with one 8x8 group.
+LLL_CONST(uint, kMaxTileSize, 16u);
+// Largest render target side; keeps every per-pixel buffer under the storage buffer cap.
+LLL_CONST(uint, kMaxImageSide, 8192u);
+// Light types, stored in GpuLight.directionType.w.
+LLL_CONST(uint, kLightPoint, 0u);
+LLL_CONST(uint, kLightSpot, 1u);
+// Material alpha modes, stored in GpuMaterial.flags.
+LLL_CONST(uint, kAlphaOpaque, 0u);
+LLL_CONST(uint, kAlphaMask, 1u);
+LLL_CONST(uint, kAlphaBlend, 2u);
+
+LLL_NAMESPACE_END
+#endif

@@ -1,0 +1,29 @@
+// Lets one header declare a struct that both C++ and GLSL read. In C++ the GLSL vector and matrix
+// types map onto glm and every shared struct lives in namespace lll::gpu; GLSL sees plain structs.
+// Use only 16-byte-aligned members in order (vec4, uvec4, mat4, or four scalars), so std140,
+// std430 and C++ agree on every offset; the C++ side static_asserts the size of each struct.
+#ifndef LLL_SHARED_H
+#define LLL_SHARED_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+#define LLL_NAMESPACE_BEGIN \
+  namespace lll::gpu {      \
+  using vec2 = glm::vec2;   \
+  using vec4 = glm::vec4;   \
+  using uvec4 = glm::uvec4; \
+  using ivec4 = glm::ivec4; \
+  using mat4 = glm::mat4;   \
+  using uint = uint32_t;
+#define LLL_NAMESPACE_END }
+#define LLL_CONST(type, name, value) inline constexpr type name = value
+#define LLL_CHECK_SIZE(T, bytes) static_assert(sizeof(T) == (bytes), #T " must match its GLSL layout")
+#else
+#define LLL_NAMESPACE_BEGIN
+#define LLL_NAMESPACE_END
+#define LLL_CONST(type, name, value) const type name = value
+#define LLL_CHECK_SIZE(T, bytes)
+#endif
+
+#endif

@@ -1,0 +1,68 @@
+#include "app/commands.h"
+
+#include <fmt/format.h>
+
+#include "lighting/technique.h"
+#include "render/image_io.h"
+#include "render/renderer.h"
+#include "render/stats.h"
+#include "scene/builtin_scenes.h"
+
+namespace lll {
+
+namespace {
+
+// Fails the run when validation spoke: under --validate every message is an error.
+int validationExitCode(const Context& context) {
+  const auto messages = context.validationMessages();
+  if (messages.empty()) return 0;
+  fmt::print(stderr, "lll: error: {} validation message(s); see above\n", messages.size());
+  return 1;
+}
+
+}  // namespace
+
+int runRender(const RenderJob& job) {
+  findTechnique(job.settings.technique);  // reject a bad name before any slow work
+  validateResolution(job.settings.width, job.settings.height);
+  std::vector<std::string> warnings;
+  const Scene scene = loadScene(job.scene, &warnings);
+  for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
+  Context context(job.device);
+  Renderer renderer(context, scene, job.settings);
+  std::vector<FrameResult> frames;
+  for (uint32_t i = 0; i < job.settings.frames; ++i)
+    frames.push_back(renderer.renderFrame(i + 1 == job.settings.frames));
+  if (!job.outPng.empty()) writePng(job.outPng, renderer.ldrImage());
+  if (!job.outHdr.empty()) writeHdr(job.outHdr, renderer.hdrImage());
+  if (!job.outStats.empty()) {
+    RunInfo run{scene.name,          job.settings.technique, job.settings.width,    job.settings.height,
+                scene.lights.size(), scene.triangleCount(),  renderer.camera().name};
+    writeStatsJson(job.outStats, context, run, frames, renderer.technique().stats());
+  }
+  const auto summary = summarizePasses(frames);
+  for (const PassSummary& s : summary) fmt::print(stderr, "lll: {:<24} {:9.3f} ms\n", s.name, s.medianMs);
+  return validationExitCode(context);
+}
+
+int printScenes() {
+  for (const BuiltinSceneInfo& info : builtinScenes())
+    fmt::print("{:<12} {}{}\n", info.name, info.description,
+               info.name == kDefaultSceneName ? " (default)" : "");
+  fmt::print("or a path to a .gltf/.glb file\n");
+  return 0;
+}
+
+int printTechniques() {
+  for (const TechniqueInfo& t : techniques()) fmt::print("{:<10} {}\n", t.name, t.description);
+  return 0;
+}
+
+int printDevices() {
+  for (const DeviceInfo& d : lll::listDevices())
+    fmt::print("{}: {} ({}, {}, Vulkan {}){}\n", d.index, d.name, d.type, d.driver, d.apiVersion,
+               d.usable ? "" : "  unusable: " + d.whyUnusable);
+  return 0;
+}
+
+}  // namespace lll

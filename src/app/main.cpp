@@ -1,0 +1,79 @@
+// lll: the command-line front end. Parses options and calls the library (app/commands.h).
+// Exit codes: 0 success, 1 failure (or a validation message under --validate), 2 bad input.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdlib>
+
+#include "app/commands.h"
+#include "scene/errors.h"
+
+namespace {
+
+void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
+  auto& s = job.settings;
+  cmd.add_option("scene", job.scene.scene, "built-in scene name (see `lll scenes`) or .gltf/.glb path");
+  cmd.add_option("--width", s.width, "image width in pixels")->check(CLI::Range(1u, 8192u));
+  cmd.add_option("--height", s.height, "image height in pixels")->check(CLI::Range(1u, 8192u));
+  cmd.add_option("--technique", s.technique, "lighting technique (see `lll techniques`)");
+  cmd.add_option("--lights", job.scene.extraLights,
+                 "random point lights: scattered in the scene bounds, added to the file's own lights")
+      ->check(CLI::Range(0u, 1u << 20));
+  cmd.add_option("--seed", job.scene.seed, "seed for random lights");
+  cmd.add_option("--camera", s.camera, "camera name, or eye and target as \"ex,ey,ez,tx,ty,tz\"");
+  cmd.add_option("--frames", s.frames, "frames to render (timings are medians over them)")
+      ->check(CLI::Range(1u, 100000u));
+  cmd.add_option("--exposure", s.exposure, "exposure multiplier before tonemapping")
+      ->check(CLI::Range(1e-6f, 1e6f));
+  cmd.add_option("--ambient", s.ambient, "constant ambient radiance")->check(CLI::Range(0.0f, 1e3f));
+  cmd.add_option("--device", job.device.device, "auto | gpu | cpu | INDEX (see `lll devices`)");
+  cmd.add_flag("--validate", job.device.validation,
+               "Khronos validation layers on; any message fails the run");
+  cmd.add_option("--tile", s.tileSize, "light list tile size in pixels (lll)")
+      ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u}));
+  cmd.add_option("--lll-fill", s.lllFill, "light linked list fill: shells | ray | compute")
+      ->check(CLI::IsMember({"shells", "ray", "compute"}));
+  cmd.add_option("--lll-link", s.lllLink, "link format: compact (8 B, <=256 lights) | wide (16 B) | auto")
+      ->check(CLI::IsMember({"compact", "wide", "auto"}));
+  cmd.add_option("--debug-view", s.debugView, "none | heatmap | bounds | tiles (lll)")
+      ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"lll: real-time rendering with many dynamic lights (Light Linked List)"};
+  app.require_subcommand(1);
+  lll::RenderJob job;
+  if (std::getenv("LLL_VALIDATE")) job.device.validation = true;
+
+  CLI::App* render = app.add_subcommand("render", "render a scene off-screen to PNG (and HDR, stats)");
+  addRenderOptions(*render, job);
+  render->add_option("--out", job.outPng, "display image, tonemapped sRGB PNG");
+  render->add_option("--hdr", job.outHdr, "linear HDR image, .exr or .pfm");
+  render->add_option("--stats", job.outStats,
+                     "JSON with per-pass GPU times, device, driver, resolution, lights");
+  CLI::App* scenes = app.add_subcommand("scenes", "list the built-in scenes");
+  CLI::App* techniques = app.add_subcommand("techniques", "list the lighting techniques");
+  CLI::App* devices = app.add_subcommand("devices", "list the Vulkan devices");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    if (*render) return lll::runRender(job);
+    if (*scenes) return lll::printScenes();
+    if (*techniques) return lll::printTechniques();
+    if (*devices) return lll::printDevices();
+  } catch (const lll::InputError& e) {
+    fmt::print(stderr, "lll: error: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "lll: failure: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,365 @@
+#include "gpu/context.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "gpu/vk_check.h"
+#include "scene/errors.h"
+
+namespace lll {
+
+const char* vkResultName(VkResult result) {
+  switch (result) {
+#define LLL_RESULT(name) \
+  case name:             \
+    return #name;
+    LLL_RESULT(VK_SUCCESS)
+    LLL_RESULT(VK_NOT_READY)
+    LLL_RESULT(VK_TIMEOUT)
+    LLL_RESULT(VK_INCOMPLETE)
+    LLL_RESULT(VK_ERROR_OUT_OF_HOST_MEMORY)
+    LLL_RESULT(VK_ERROR_OUT_OF_DEVICE_MEMORY)
+    LLL_RESULT(VK_ERROR_INITIALIZATION_FAILED)
+    LLL_RESULT(VK_ERROR_DEVICE_LOST)
+    LLL_RESULT(VK_ERROR_MEMORY_MAP_FAILED)
+    LLL_RESULT(VK_ERROR_LAYER_NOT_PRESENT)
+    LLL_RESULT(VK_ERROR_EXTENSION_NOT_PRESENT)
+    LLL_RESULT(VK_ERROR_FEATURE_NOT_PRESENT)
+    LLL_RESULT(VK_ERROR_INCOMPATIBLE_DRIVER)
+    LLL_RESULT(VK_ERROR_TOO_MANY_OBJECTS)
+    LLL_RESULT(VK_ERROR_FORMAT_NOT_SUPPORTED)
+    LLL_RESULT(VK_ERROR_OUT_OF_POOL_MEMORY)
+#undef LLL_RESULT
+    default:
+      return "VK_ERROR_(unknown)";
+  }
+}
+
+void throwVulkanError(const char* expression, const char* file, int line, VkResult result) {
+  throw VulkanError(fmt::format("{} failed with {} at {}:{}", expression, vkResultName(result), file, line),
+                    result);
+}
+
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+std::string deviceTypeName(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return "discrete";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return "integrated";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return "virtual";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return "cpu";
+    default:
+      return "other";
+  }
+}
+
+// Lower is preferred: a real GPU before a software rasterizer.
+int deviceRank(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return 4;
+    default:
+      return 3;
+  }
+}
+
+bool hasExtension(VkPhysicalDevice device, const char* name) {
+  uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+int graphicsComputeQueue(VkPhysicalDevice device) {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+  for (uint32_t i = 0; i < count; ++i) {
+    const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+    if ((families[i].queueFlags & need) == need) return int(i);
+  }
+  return -1;
+}
+
+DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
+  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver};
+  vkGetPhysicalDeviceProperties2(device, &properties);
+  const VkPhysicalDeviceProperties& p = properties.properties;
+  DeviceInfo info;
+  info.index = index;
+  info.name = p.deviceName;
+  info.type = deviceTypeName(p.deviceType);
+  info.driver = fmt::format("{} {}", driver.driverName, driver.driverInfo);
+  info.apiVersion = fmt::format("{}.{}.{}", VK_API_VERSION_MAJOR(p.apiVersion),
+                                VK_API_VERSION_MINOR(p.apiVersion), VK_API_VERSION_PATCH(p.apiVersion));
+
+  VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f13};
+  if (p.apiVersion >= VK_API_VERSION_1_3) vkGetPhysicalDeviceFeatures2(device, &features);
+  if (p.apiVersion < VK_API_VERSION_1_3)
+    info.whyUnusable = "needs Vulkan 1.3";
+  else if (graphicsComputeQueue(device) < 0)
+    info.whyUnusable = "no graphics+compute queue";
+  else if (!f13.dynamicRendering || !f13.synchronization2)
+    info.whyUnusable = "no dynamicRendering/synchronization2";
+  else if (!features.features.fragmentStoresAndAtomics)
+    info.whyUnusable = "no fragmentStoresAndAtomics";
+  else if (!hasExtension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
+    info.whyUnusable = "no VK_KHR_push_descriptor";
+  info.usable = info.whyUnusable.empty();
+  return info;
+}
+
+VkInstance createBareInstance(bool validation, bool debugUtils) {
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "lll";
+  app.apiVersion = VK_API_VERSION_1_3;
+  std::vector<const char*> layers;
+  std::vector<const char*> extensions;
+  if (validation) layers.push_back(kValidationLayer);
+  if (debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = uint32_t(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = uint32_t(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  VkInstance instance = VK_NULL_HANDLE;
+  const VkResult result = vkCreateInstance(&info, nullptr, &instance);
+  if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
+    throw InputError(
+        "no Vulkan device: the Vulkan loader found no driver. Install a driver (on Debian: "
+        "apt-get install mesa-vulkan-drivers for the CPU device lavapipe) or check VK_DRIVER_FILES.");
+  VK_CHECK(result);
+  return instance;
+}
+
+std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+  std::vector<VkPhysicalDevice> devices(count);
+  VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
+  return devices;
+}
+
+}  // namespace
+
+std::vector<DeviceInfo> listDevices() {
+  VkInstance instance = createBareInstance(false, false);
+  std::vector<DeviceInfo> infos;
+  const auto devices = physicalDevices(instance);
+  for (uint32_t i = 0; i < devices.size(); ++i) infos.push_back(describe(devices[i], i));
+  vkDestroyInstance(instance, nullptr);
+  return infos;
+}
+
+Context::Context(const ContextOptions& options) {
+  createInstance(options.validation);
+  pickPhysicalDevice(options.device);
+  createDevice();
+  if (!options.quiet)
+    fmt::print(stderr, "lll: device {} ({}, {}, Vulkan {})\n", info_.name, info_.type, info_.driver,
+               info_.apiVersion);
+}
+
+Context::~Context() {
+  if (device_) {
+    vkDeviceWaitIdle(device_);
+    vkDestroyFence(device_, fence_, nullptr);
+    vkDestroyCommandPool(device_, commandPool_, nullptr);
+    vkDestroyDevice(device_, nullptr);
+  }
+  if (messenger_) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+    destroy(instance_, messenger_, nullptr);
+  }
+  if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL Context::onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                            VkDebugUtilsMessageTypeFlagsEXT,
+                                                            const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                            void* user) {
+  auto* self = static_cast<Context*>(user);
+  const char* level = severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
+  std::string message = fmt::format("validation {}: {}", level, data->pMessage ? data->pMessage : "");
+  fmt::print(stderr, "lll: {}\n", message);
+  std::lock_guard lock(self->messagesMutex_);
+  self->messages_.push_back(std::move(message));
+  return VK_FALSE;
+}
+
+void Context::createInstance(bool validation) {
+  validation_ = validation;
+  if (validation) {
+    uint32_t count = 0;
+    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    std::vector<VkLayerProperties> layers(count);
+    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    const bool found = std::any_of(layers.begin(), layers.end(), [](const VkLayerProperties& l) {
+      return std::strcmp(l.layerName, kValidationLayer) == 0;
+    });
+    if (!found)
+      throw InputError(
+          "--validate needs the Khronos validation layer, which is not installed "
+          "(on Debian: apt-get install vulkan-validationlayers)");
+  }
+  instance_ = createBareInstance(validation, validation);
+  if (!validation) return;
+  VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  info.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageType =
+      VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
+  info.pfnUserCallback = &Context::onValidationMessage;
+  info.pUserData = this;
+  auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+      vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+  VK_CHECK(create(instance_, &info, nullptr, &messenger_));
+}
+
+void Context::pickPhysicalDevice(const std::string& selector) {
+  const auto devices = physicalDevices(instance_);
+  std::vector<DeviceInfo> infos;
+  for (uint32_t i = 0; i < devices.size(); ++i) infos.push_back(describe(devices[i], i));
+  std::string listing;
+  for (const DeviceInfo& d : infos)
+    listing += fmt::format("\n  {}: {} ({}){}", d.index, d.name, d.type,
+                           d.usable ? "" : " unusable: " + d.whyUnusable);
+  if (devices.empty())
+    throw InputError(
+        "no Vulkan device: the loader reports none (on Debian: apt-get install mesa-vulkan-drivers)");
+
+  int chosen = -1;
+  if (!selector.empty() && std::all_of(selector.begin(), selector.end(), ::isdigit)) {
+    const unsigned long index = std::stoul(selector);
+    if (index >= infos.size() || !infos[index].usable)
+      throw InputError(
+          fmt::format("--device {}: no usable device with that index; devices:{}", selector, listing));
+    chosen = int(index);
+  } else if (selector == "auto" || selector == "gpu" || selector == "cpu") {
+    int bestRank = 1 << 30;
+    for (const DeviceInfo& d : infos) {
+      if (!d.usable) continue;
+      VkPhysicalDeviceProperties p;
+      vkGetPhysicalDeviceProperties(devices[d.index], &p);
+      const bool isCpu = p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+      if ((selector == "gpu" && isCpu) || (selector == "cpu" && !isCpu)) continue;
+      if (deviceRank(p.deviceType) < bestRank) {
+        bestRank = deviceRank(p.deviceType);
+        chosen = int(d.index);
+      }
+    }
+    if (chosen < 0)
+      throw InputError(fmt::format("no Vulkan device for --device {}; devices:{}", selector, listing));
+  } else {
+    throw InputError(fmt::format("--device {}: expected auto, gpu, cpu or a device index", selector));
+  }
+  physical_ = devices[size_t(chosen)];
+  info_ = infos[size_t(chosen)];
+  vkGetPhysicalDeviceProperties(physical_, &properties_);
+  vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  queueFamily_ = uint32_t(graphicsComputeQueue(physical_));
+}
+
+void Context::createDevice() {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, families.data());
+  timestampValidBits_ = families[queueFamily_].timestampValidBits;
+  timestampPeriodNs_ = timestampValidBits_ ? properties_.limits.timestampPeriod : 0.0;
+
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = queueFamily_;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+
+  VkPhysicalDeviceFeatures supported{};
+  vkGetPhysicalDeviceFeatures(physical_, &supported);
+  VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  f13.dynamicRendering = VK_TRUE;
+  f13.synchronization2 = VK_TRUE;
+  VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
+  features.features.fragmentStoresAndAtomics = VK_TRUE;
+  features.features.samplerAnisotropy = supported.samplerAnisotropy;
+  features.features.independentBlend = supported.independentBlend;
+
+  const char* extensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &queueInfo;
+  info.enabledExtensionCount = 1;
+  info.ppEnabledExtensionNames = extensions;
+  VK_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
+  vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+  cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
+      vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = queueFamily_;
+  VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &commandPool_));
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VK_CHECK(vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
+}
+
+uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
+                                 VkMemoryPropertyFlags preferred) const {
+  for (int pass = 0; pass < 2; ++pass) {
+    const VkMemoryPropertyFlags want = pass == 0 ? required | preferred : required;
+    for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
+      if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & want) == want) return i;
+    }
+  }
+  throw std::runtime_error("no Vulkan memory type with the required properties");
+}
+
+void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+  VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  allocInfo.commandPool = commandPool_;
+  allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocInfo.commandBufferCount = 1;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  VK_CHECK(vkAllocateCommandBuffers(device_, &allocInfo, &cmd));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  record(cmd);
+  VK_CHECK(vkEndCommandBuffer(cmd));
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  VK_CHECK(vkResetFences(device_, 1, &fence_));
+  VK_CHECK(vkQueueSubmit(queue_, 1, &submit, fence_));
+  VK_CHECK(vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
+  vkFreeCommandBuffers(device_, commandPool_, 1, &cmd);
+}
+
+std::vector<std::string> Context::validationMessages() const {
+  std::lock_guard lock(messagesMutex_);
+  return messages_;
+}
+
+}  // namespace lll

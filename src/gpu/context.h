@@ -1,0 +1,90 @@
+#pragma once
+// The Vulkan instance, the chosen physical device, one graphics+compute queue, and the validation
+// messenger. Devices are ranked discrete GPU first, CPU (lavapipe) last.
+#include <vulkan/vulkan.h>
+
+#include <functional>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace lll {
+
+struct ContextOptions {
+  std::string device = "auto";  // auto | gpu | cpu | INDEX (position in `lll devices`)
+  bool validation = false;      // Khronos validation layers; every message is recorded
+  bool quiet = false;           // do not print the chosen device
+};
+
+struct DeviceInfo {
+  uint32_t index = 0;
+  std::string name;
+  std::string type;  // discrete, integrated, virtual, cpu, other
+  std::string driver;
+  std::string apiVersion;
+  bool usable = false;  // Vulkan 1.3 with a graphics+compute queue and the features lll needs
+  std::string whyUnusable;
+};
+
+// Every Vulkan device on this machine, in enumeration order (for `lll devices` and --device INDEX).
+std::vector<DeviceInfo> listDevices();
+
+class Context {
+ public:
+  explicit Context(const ContextOptions& options);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  VkInstance instance() const { return instance_; }
+  VkPhysicalDevice physicalDevice() const { return physical_; }
+  VkDevice device() const { return device_; }
+  VkQueue queue() const { return queue_; }
+  uint32_t queueFamily() const { return queueFamily_; }
+  const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  const DeviceInfo& info() const { return info_; }
+  bool isCpuDevice() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
+  // Nanoseconds per timestamp tick; 0 when the queue has no timestamps.
+  double timestampPeriodNs() const { return timestampPeriodNs_; }
+  uint32_t timestampValidBits() const { return timestampValidBits_; }
+
+  uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
+                          VkMemoryPropertyFlags preferred = 0) const;
+
+  // Records commands into a fresh command buffer, submits them and waits for completion.
+  void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
+
+  // Validation messages (warnings and errors) seen since creation.
+  std::vector<std::string> validationMessages() const;
+  bool validationEnabled() const { return validation_; }
+
+  PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+
+ private:
+  static VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                            VkDebugUtilsMessageTypeFlagsEXT types,
+                                                            const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                            void* user);
+  void createInstance(bool validation);
+  void pickPhysicalDevice(const std::string& selector);
+  void createDevice();
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  VkCommandPool commandPool_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  uint32_t queueFamily_ = 0;
+  VkPhysicalDeviceProperties properties_{};
+  VkPhysicalDeviceMemoryProperties memory_{};
+  DeviceInfo info_;
+  double timestampPeriodNs_ = 0.0;
+  uint32_t timestampValidBits_ = 0;
+  bool validation_ = false;
+  mutable std::mutex messagesMutex_;
+  std::vector<std::string> messages_;
+};
+
+}  // namespace lll

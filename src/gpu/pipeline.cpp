@@ -1,0 +1,270 @@
+#include "gpu/pipeline.h"
+
+#include <fmt/format.h>
+
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+#include "gpu/context.h"
+#include "gpu/shader_registry.h"
+#include "gpu/vk_check.h"
+#include "scene/scene.h"
+
+namespace lll {
+
+std::span<const uint32_t> shaderCode(std::string_view path) {
+  for (const EmbeddedShader& shader : embeddedShaders()) {
+    if (shader.path == path) return {shader.words, shader.wordCount};
+  }
+  throw std::logic_error(fmt::format("shader '{}' is not embedded in this binary", path));
+}
+
+namespace {
+
+class ShaderModule {
+ public:
+  ShaderModule(Context& context, const std::string& path) : device_(context.device()) {
+    const auto code = shaderCode(path);
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = code.size_bytes();
+    info.pCode = code.data();
+    VK_CHECK(vkCreateShaderModule(device_, &info, nullptr, &module_));
+  }
+  ~ShaderModule() { vkDestroyShaderModule(device_, module_, nullptr); }
+  ShaderModule(const ShaderModule&) = delete;
+  ShaderModule& operator=(const ShaderModule&) = delete;
+  VkShaderModule handle() const { return module_; }
+
+ private:
+  VkDevice device_;
+  VkShaderModule module_ = VK_NULL_HANDLE;
+};
+
+struct Specialization {
+  std::vector<VkSpecializationMapEntry> entries;
+  VkSpecializationInfo info{};
+  explicit Specialization(const std::vector<uint32_t>& values) {
+    for (uint32_t i = 0; i < values.size(); ++i) entries.push_back({i, i * 4, 4});
+    info.mapEntryCount = uint32_t(entries.size());
+    info.pMapEntries = entries.data();
+    info.dataSize = values.size() * 4;
+    info.pData = values.data();
+  }
+  const VkSpecializationInfo* get() const { return entries.empty() ? nullptr : &info; }
+};
+
+}  // namespace
+
+PipelineLayout::PipelineLayout(Context& context, std::initializer_list<Binding> bindings, uint32_t pushBytes,
+                               VkShaderStageFlags pushStages, std::vector<VkDescriptorSetLayout> extraSets)
+    : context_(&context) {
+  std::vector<VkDescriptorSetLayoutBinding> vkBindings;
+  for (const Binding& b : bindings) vkBindings.push_back({b.binding, b.type, 1, b.stages, nullptr});
+  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+  setInfo.bindingCount = uint32_t(vkBindings.size());
+  setInfo.pBindings = vkBindings.data();
+  VK_CHECK(vkCreateDescriptorSetLayout(context.device(), &setInfo, nullptr, &pushSet_));
+  std::vector<VkDescriptorSetLayout> sets{pushSet_};
+  sets.insert(sets.end(), extraSets.begin(), extraSets.end());
+  VkPushConstantRange range{pushStages, 0, pushBytes};
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = uint32_t(sets.size());
+  info.pSetLayouts = sets.data();
+  info.pushConstantRangeCount = pushBytes ? 1 : 0;
+  info.pPushConstantRanges = &range;
+  VK_CHECK(vkCreatePipelineLayout(context.device(), &info, nullptr, &layout_));
+}
+
+PipelineLayout::~PipelineLayout() {
+  release();
+}
+
+PipelineLayout::PipelineLayout(PipelineLayout&& other) noexcept {
+  *this = std::move(other);
+}
+
+PipelineLayout& PipelineLayout::operator=(PipelineLayout&& other) noexcept {
+  if (this != &other) {
+    release();
+    context_ = std::exchange(other.context_, nullptr);
+    pushSet_ = std::exchange(other.pushSet_, VK_NULL_HANDLE);
+    layout_ = std::exchange(other.layout_, VK_NULL_HANDLE);
+  }
+  return *this;
+}
+
+void PipelineLayout::release() {
+  if (!context_) return;
+  vkDestroyPipelineLayout(context_->device(), layout_, nullptr);
+  vkDestroyDescriptorSetLayout(context_->device(), pushSet_, nullptr);
+  context_ = nullptr;
+}
+
+Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const GraphicsPipelineDesc& desc)
+    : context_(&context), bindPoint_(VK_PIPELINE_BIND_POINT_GRAPHICS), cullMode_(desc.cullMode) {
+  ShaderModule vertex(context, desc.vertexShader);
+  std::optional<ShaderModule> fragment;
+  if (!desc.fragmentShader.empty()) fragment.emplace(context, desc.fragmentShader);
+  const Specialization specialization(desc.specialization);
+  std::vector<VkPipelineShaderStageCreateInfo> stages;
+  stages.push_back({VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0,
+                    VK_SHADER_STAGE_VERTEX_BIT, vertex.handle(), "main", specialization.get()});
+  if (fragment)
+    stages.push_back({VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0,
+                      VK_SHADER_STAGE_FRAGMENT_BIT, fragment->handle(), "main", specialization.get()});
+
+  const VkVertexInputBindingDescription vertexBinding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  const VkVertexInputAttributeDescription attributes[] = {
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
+      {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
+  };
+  VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  if (desc.meshVertexInput) {
+    vertexInput.vertexBindingDescriptionCount = 1;
+    vertexInput.pVertexBindingDescriptions = &vertexBinding;
+    vertexInput.vertexAttributeDescriptionCount = 3;
+    vertexInput.pVertexAttributeDescriptions = attributes;
+  }
+  VkPipelineInputAssemblyStateCreateInfo inputAssembly{
+      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  inputAssembly.topology = desc.topology;
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = desc.cullMode;
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = desc.depthTest;
+  depth.depthWriteEnable = desc.depthWrite;
+  depth.depthCompareOp = desc.depthCompare;
+
+  std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
+  for (auto& blend : blends) {
+    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                           VK_COLOR_COMPONENT_A_BIT;
+    if (desc.blend == BlendMode::Additive) {
+      blend.blendEnable = VK_TRUE;
+      blend.srcColorBlendFactor = blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+      blend.srcAlphaBlendFactor = blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    } else if (desc.blend == BlendMode::Alpha) {
+      // Premultiplied alpha: shaders output colour * alpha, so additive glow and glass share a mode.
+      blend.blendEnable = VK_TRUE;
+      blend.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
+      blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+      blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+      blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    }
+  }
+  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blend.attachmentCount = uint32_t(blends.size());
+  blend.pAttachments = blends.data();
+  const VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                          VK_DYNAMIC_STATE_CULL_MODE};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = 3;
+  dynamic.pDynamicStates = dynamicStates;
+  VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+  rendering.colorAttachmentCount = uint32_t(desc.colorFormats.size());
+  rendering.pColorAttachmentFormats = desc.colorFormats.data();
+  rendering.depthAttachmentFormat = desc.depthFormat;
+
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
+  info.stageCount = uint32_t(stages.size());
+  info.pStages = stages.data();
+  info.pVertexInputState = &vertexInput;
+  info.pInputAssemblyState = &inputAssembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth;
+  info.pColorBlendState = &blend;
+  info.pDynamicState = &dynamic;
+  info.layout = layout.handle();
+  VK_CHECK(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
+}
+
+Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const std::string& computeShader,
+                   const std::vector<uint32_t>& specialization)
+    : context_(&context), bindPoint_(VK_PIPELINE_BIND_POINT_COMPUTE) {
+  ShaderModule module(context, computeShader);
+  const Specialization spec(specialization);
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                nullptr,
+                0,
+                VK_SHADER_STAGE_COMPUTE_BIT,
+                module.handle(),
+                "main",
+                spec.get()};
+  info.layout = layout.handle();
+  VK_CHECK(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
+}
+
+Pipeline::~Pipeline() {
+  release();
+}
+
+Pipeline::Pipeline(Pipeline&& other) noexcept {
+  *this = std::move(other);
+}
+
+Pipeline& Pipeline::operator=(Pipeline&& other) noexcept {
+  if (this != &other) {
+    release();
+    context_ = std::exchange(other.context_, nullptr);
+    pipeline_ = std::exchange(other.pipeline_, VK_NULL_HANDLE);
+    bindPoint_ = other.bindPoint_;
+    cullMode_ = other.cullMode_;
+  }
+  return *this;
+}
+
+void Pipeline::release() {
+  if (context_ && pipeline_) vkDestroyPipeline(context_->device(), pipeline_, nullptr);
+  pipeline_ = VK_NULL_HANDLE;
+  context_ = nullptr;
+}
+
+void Pipeline::bind(VkCommandBuffer cmd) const {
+  vkCmdBindPipeline(cmd, bindPoint_, pipeline_);
+  if (bindPoint_ == VK_PIPELINE_BIND_POINT_GRAPHICS) vkCmdSetCullMode(cmd, cullMode_);
+}
+
+DescriptorWriter& DescriptorWriter::buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer,
+                                           VkDeviceSize offset, VkDeviceSize range) {
+  entries_.push_back({binding, type, {buffer, offset, range}, {}, false});
+  return *this;
+}
+
+DescriptorWriter& DescriptorWriter::image(uint32_t binding, VkDescriptorType type, VkImageView view,
+                                          VkImageLayout layout, VkSampler sampler) {
+  entries_.push_back({binding, type, {}, {sampler, view, layout}, true});
+  return *this;
+}
+
+void DescriptorWriter::push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
+                            VkPipelineLayout layout) {
+  std::vector<VkWriteDescriptorSet> writes;
+  for (const Entry& e : entries_) {
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstBinding = e.binding;
+    w.descriptorCount = 1;
+    w.descriptorType = e.type;
+    if (e.isImage)
+      w.pImageInfo = &e.imageInfo;
+    else
+      w.pBufferInfo = &e.bufferInfo;
+    writes.push_back(w);
+  }
+  context.cmdPushDescriptorSet(cmd, bindPoint, layout, 0, uint32_t(writes.size()), writes.data());
+}
+
+}  // namespace lll

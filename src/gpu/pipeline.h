@@ -1,0 +1,109 @@
+#pragma once
+// Pipelines built from embedded SPIR-V. Every pass binds its per-pass resources as a push
+// descriptor set (set 0) so passes need no descriptor pools; mesh passes add the material
+// texture set (set 1). Descriptions are plain structs with the defaults most passes want.
+#include <vulkan/vulkan.h>
+
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+namespace lll {
+
+class Context;
+
+struct Binding {
+  uint32_t binding;
+  VkDescriptorType type;
+  VkShaderStageFlags stages;
+};
+
+class PipelineLayout {
+ public:
+  PipelineLayout() = default;
+  // set 0: push descriptors with `bindings`; then `extraSets` (not owned); push constants of
+  // `pushBytes` visible to `pushStages`.
+  PipelineLayout(Context& context, std::initializer_list<Binding> bindings, uint32_t pushBytes = 0,
+                 VkShaderStageFlags pushStages = 0, std::vector<VkDescriptorSetLayout> extraSets = {});
+  ~PipelineLayout();
+  PipelineLayout(PipelineLayout&& other) noexcept;
+  PipelineLayout& operator=(PipelineLayout&& other) noexcept;
+
+  VkPipelineLayout handle() const { return layout_; }
+
+ private:
+  void release();
+  Context* context_ = nullptr;
+  VkDescriptorSetLayout pushSet_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+};
+
+enum class BlendMode { None, Additive, Alpha };
+
+struct GraphicsPipelineDesc {
+  std::string vertexShader;     // path under shaders/, e.g. "common/mesh.vert"
+  std::string fragmentShader;   // empty for depth-only passes
+  bool meshVertexInput = true;  // lll::Vertex stream at binding 0; false: no vertex input
+  VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;
+  bool depthTest = true;
+  bool depthWrite = true;
+  VkCompareOp depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse-Z
+  BlendMode blend = BlendMode::None;
+  std::vector<VkFormat> colorFormats;
+  VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+  std::vector<uint32_t> specialization;  // constant_id 0, 1, ... in order
+};
+
+class Pipeline {
+ public:
+  Pipeline() = default;
+  Pipeline(Context& context, const PipelineLayout& layout, const GraphicsPipelineDesc& desc);
+  Pipeline(Context& context, const PipelineLayout& layout, const std::string& computeShader,
+           const std::vector<uint32_t>& specialization = {});
+  ~Pipeline();
+  Pipeline(Pipeline&& other) noexcept;
+  Pipeline& operator=(Pipeline&& other) noexcept;
+
+  VkPipeline handle() const { return pipeline_; }
+  VkPipelineBindPoint bindPoint() const { return bindPoint_; }
+  // Binds the pipeline and, for graphics, sets its cull mode (cull mode is dynamic state so the
+  // scene can switch it per material).
+  void bind(VkCommandBuffer cmd) const;
+  explicit operator bool() const { return pipeline_ != VK_NULL_HANDLE; }
+
+ private:
+  void release();
+  Context* context_ = nullptr;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  VkPipelineBindPoint bindPoint_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  VkCullModeFlags cullMode_ = VK_CULL_MODE_NONE;
+};
+
+// Writes for one push-descriptor update, built fluently and recorded with push().
+class DescriptorWriter {
+ public:
+  DescriptorWriter& buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset = 0,
+                           VkDeviceSize range = VK_WHOLE_SIZE);
+  DescriptorWriter& uniform(uint32_t binding, VkBuffer buffer) {
+    return this->buffer(binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffer);
+  }
+  DescriptorWriter& storage(uint32_t binding, VkBuffer buffer) {
+    return this->buffer(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer);
+  }
+  DescriptorWriter& image(uint32_t binding, VkDescriptorType type, VkImageView view, VkImageLayout layout,
+                          VkSampler sampler = VK_NULL_HANDLE);
+  void push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, VkPipelineLayout layout);
+
+ private:
+  struct Entry {
+    uint32_t binding;
+    VkDescriptorType type;
+    VkDescriptorBufferInfo bufferInfo;
+    VkDescriptorImageInfo imageInfo;
+    bool isImage;
+  };
+  std::vector<Entry> entries_;
+};
+
+}  // namespace lll

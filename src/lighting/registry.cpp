@@ -1,0 +1,27 @@
+#include <fmt/format.h>
+
+#include "lighting/technique.h"
+#include "scene/errors.h"
+
+namespace lll {
+
+std::unique_ptr<Technique> createForward(Context&, const GpuScene&, const RenderSettings&,
+                                         const FrameTargets&);
+
+const std::vector<TechniqueInfo>& techniques() {
+  static const std::vector<TechniqueInfo> table = {
+      {"forward", "brute force: every pixel evaluates every light (the reference)", &createForward},
+  };
+  return table;
+}
+
+const TechniqueInfo& findTechnique(const std::string& name) {
+  std::string known;
+  for (const TechniqueInfo& t : techniques()) {
+    if (t.name == name) return t;
+    known += (known.empty() ? "" : ", ") + t.name;
+  }
+  throw InputError(fmt::format("--technique {}: unknown technique (known: {})", name, known));
+}
+
+}  // namespace lll

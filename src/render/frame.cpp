@@ -1,0 +1,49 @@
+#include "render/frame.h"
+
+#include <vector>
+
+#include "gpu/pipeline.h"
+
+namespace lll {
+
+void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
+                    std::initializer_list<ColorTarget> colors, VkImageView depth, VkImageLayout depthLayout,
+                    bool clearDepth) {
+  std::vector<VkRenderingAttachmentInfo> colorInfos;
+  for (const ColorTarget& c : colors) {
+    VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    info.imageView = c.view;
+    info.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    info.loadOp = c.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+    info.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    colorInfos.push_back(info);
+  }
+  VkRenderingAttachmentInfo depthInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  depthInfo.imageView = depth;
+  depthInfo.imageLayout = depthLayout;
+  depthInfo.loadOp = clearDepth ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+  depthInfo.storeOp = depthLayout == VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL ? VK_ATTACHMENT_STORE_OP_STORE
+                                                                              : VK_ATTACHMENT_STORE_OP_NONE;
+  depthInfo.clearValue.depthStencil = {0.0f, 0};  // reverse-Z: far is 0
+  VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  info.renderArea = {{0, 0}, {width, height}};
+  info.layerCount = 1;
+  info.colorAttachmentCount = uint32_t(colorInfos.size());
+  info.pColorAttachments = colorInfos.data();
+  info.pDepthAttachment = depth ? &depthInfo : nullptr;
+  vkCmdBeginRendering(cmd, &info);
+  const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, {width, height}};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+DescriptorWriter meshPassDescriptors(const FrameContext& frame) {
+  DescriptorWriter writer;
+  writer.uniform(0, frame.uniformBuffer.handle())
+      .storage(1, frame.scene.lightBuffer().handle())
+      .storage(2, frame.scene.materialBuffer().handle());
+  return writer;
+}
+
+}  // namespace lll

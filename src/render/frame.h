@@ -1,0 +1,63 @@
+#pragma once
+// What a technique sees of the frame being recorded, and small helpers every pass uses.
+#include <vulkan/vulkan.h>
+
+#include <initializer_list>
+
+#include "gpu/pass_timer.h"
+#include "gpu/resources.h"
+#include "render/gpu_scene.h"
+#include "render/settings.h"
+#include "shared/gpu_types.h"
+
+namespace lll {
+
+class Context;
+
+// Screen-sized targets. Layouts between passes: depth stays DEPTH_READ_ONLY_OPTIMAL after the
+// prepass (read-only depth attachment and sampled); hdr is COLOR_ATTACHMENT_OPTIMAL while the
+// technique runs; ldr is GENERAL (storage, written by the tonemap).
+struct FrameTargets {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  Image depth;  // D32 reverse-Z
+  Image hdr;    // RGBA16F linear radiance
+  Image ldr;    // RGBA8 display-encoded
+};
+
+struct FrameContext {
+  Context& context;
+  VkCommandBuffer cmd;
+  PassTimer& timer;
+  const GpuScene& scene;
+  const FrameTargets& targets;
+  const Buffer& uniformBuffer;  // FrameUniforms
+  const gpu::FrameUniforms& uniforms;
+  const RenderSettings& settings;
+  glm::vec3 eye;
+};
+
+inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+inline constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_UNORM;
+
+struct ColorTarget {
+  VkImageView view;
+  bool clear;  // clear to zero, else load
+};
+
+// Begins dynamic rendering over the whole frame, with viewport and scissor set.
+// depthLayout is DEPTH_ATTACHMENT_OPTIMAL for a writing pass, DEPTH_READ_ONLY_OPTIMAL otherwise.
+void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
+                    std::initializer_list<ColorTarget> colors, VkImageView depth, VkImageLayout depthLayout,
+                    bool clearDepth);
+
+// Binds set 0 of a mesh pass: frame uniforms (0), lights (1), materials (2).
+class DescriptorWriter;
+DescriptorWriter meshPassDescriptors(const FrameContext& frame);
+
+inline uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) {
+  return (value + divisor - 1) / divisor;
+}
+
+}  // namespace lll

@@ -1,0 +1,277 @@
+#include "render/gpu_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gpu/context.h"
+#include "gpu/vk_check.h"
+#include "scene/lights.h"
+#include "shared/gpu_types.h"
+
+namespace lll {
+
+namespace {
+
+constexpr uint32_t kTexturesPerMaterial = 5;
+
+uint32_t mipLevelsFor(uint32_t width, uint32_t height) {
+  return uint32_t(std::floor(std::log2(double(std::max(width, height))))) + 1;
+}
+
+// Uploads RGBA8 pixels and fills the mip chain by successive linear blits.
+Image makeTexture(Context& context, const Texture& texture) {
+  const VkFormat format = texture.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+  const uint32_t levels = mipLevelsFor(texture.width, texture.height);
+  Image image(context, texture.width, texture.height, format,
+              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+              texture.name, levels);
+  Buffer staging(context, texture.rgba.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+  staging.upload(texture.rgba.data(), texture.rgba.size());
+  context.submitAndWait([&](VkCommandBuffer cmd) {
+    image.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {texture.width, texture.height, 1};
+    vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &copy);
+    int32_t w = int32_t(texture.width), h = int32_t(texture.height);
+    for (uint32_t level = 1; level < levels; ++level) {
+      VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+      barrier.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+      barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+      barrier.dstStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+      barrier.dstAccessMask = VK_ACCESS_2_TRANSFER_READ_BIT;
+      barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+      barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+      barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      barrier.image = image.handle();
+      barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 1, 0, 1};
+      VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+      dependency.imageMemoryBarrierCount = 1;
+      dependency.pImageMemoryBarriers = &barrier;
+      vkCmdPipelineBarrier2(cmd, &dependency);
+      VkImageBlit blit{};
+      blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1};
+      blit.srcOffsets[1] = {w, h, 1};
+      w = std::max(1, w / 2);
+      h = std::max(1, h / 2);
+      blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+      blit.dstOffsets[1] = {w, h, 1};
+      vkCmdBlitImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.handle(),
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
+    }
+    // Levels below the last are in TRANSFER_SRC, the last in TRANSFER_DST: move each to shader reads.
+    for (uint32_t level = 0; level < levels; ++level) {
+      VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+      barrier.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+      barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_TRANSFER_READ_BIT;
+      barrier.dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+      barrier.dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+      barrier.oldLayout =
+          level + 1 < levels ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+      barrier.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+      barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      barrier.image = image.handle();
+      barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, 1};
+      VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+      dependency.imageMemoryBarrierCount = 1;
+      dependency.pImageMemoryBarriers = &barrier;
+      vkCmdPipelineBarrier2(cmd, &dependency);
+    }
+  });
+  return image;
+}
+
+Texture solidTexture(const char* name, uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
+  Texture t;
+  t.name = name;
+  t.width = t.height = 1;
+  t.rgba = {r, g, b, a};
+  return t;
+}
+
+}  // namespace
+
+GpuScene::GpuScene(Context& context, const Scene& scene) : context_(context), scene_(scene) {
+  uploadGeometry();
+  uploadMaterials();
+  uploadLights(scene.lights);
+  uploadTextures();
+  createMaterialSets();
+}
+
+GpuScene::~GpuScene() {
+  VkDevice device = context_.device();
+  vkDestroyDescriptorPool(device, descriptorPool_, nullptr);
+  vkDestroyDescriptorSetLayout(device, materialSetLayout_, nullptr);
+  vkDestroySampler(device, sampler_, nullptr);
+}
+
+void GpuScene::uploadGeometry() {
+  const VkBufferUsageFlags geometry = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  vertices_ = Buffer(context_, scene_.vertices.size() * sizeof(Vertex),
+                     geometry | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::Device, "vertices");
+  vertices_.upload(std::span<const Vertex>(scene_.vertices));
+  indices_ = Buffer(context_, scene_.indices.size() * sizeof(uint32_t),
+                    geometry | VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::Device, "indices");
+  indices_.upload(std::span<const uint32_t>(scene_.indices));
+  for (uint32_t i = 0; i < scene_.instances.size(); ++i) {
+    const Instance& instance = scene_.instances[i];
+    for (const Primitive& p : scene_.meshes[instance.mesh].primitives) {
+      if (p.indexCount == 0) continue;
+      Bounds local;
+      for (uint32_t k = 0; k < p.indexCount; ++k)
+        local.expand(scene_.vertices[p.vertexOffset + scene_.indices[p.firstIndex + k]].position);
+      const glm::vec3 center = glm::vec3(instance.transform * glm::vec4(local.center(), 1.0f));
+      draws_.push_back({i, p.firstIndex, p.indexCount, p.vertexOffset, p.material, center});
+    }
+  }
+}
+
+void GpuScene::uploadMaterials() {
+  std::vector<gpu::GpuMaterial> materials;
+  for (const Material& m : scene_.materials) {
+    gpu::GpuMaterial g{};
+    g.baseColorFactor = m.baseColorFactor;
+    g.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
+    g.params = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
+    g.flags = glm::uvec4(uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, 0u, 0u);
+    g.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
+    materials.push_back(g);
+  }
+  materials_ = Buffer(context_, materials.size() * sizeof(gpu::GpuMaterial),
+                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device, "materials");
+  materials_.upload(std::span<const gpu::GpuMaterial>(materials));
+}
+
+void GpuScene::uploadLights(const std::vector<Light>& lights) {
+  std::vector<gpu::GpuLight> gpuLights;
+  gpuLights.reserve(lights.size());
+  for (const Light& light : lights) gpuLights.push_back(toGpuLight(light));
+  const VkDeviceSize bytes = gpuLights.size() * sizeof(gpu::GpuLight);
+  if (!lights_ || lights_.size() < bytes)
+    lights_ = Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device, "lights");
+  lights_.upload(std::span<const gpu::GpuLight>(gpuLights));
+  lightCount_ = uint32_t(lights.size());
+}
+
+void GpuScene::uploadTextures() {
+  for (const Texture& texture : scene_.textures) textures_.push_back(makeTexture(context_, texture));
+  textures_.push_back(makeTexture(context_, solidTexture("white", 255, 255, 255, 255)));
+  textures_.push_back(makeTexture(context_, solidTexture("flat-normal", 128, 128, 255, 255)));
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = VK_FILTER_LINEAR;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  info.maxLod = VK_LOD_CLAMP_NONE;
+  VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &sampler_));
+}
+
+void GpuScene::createMaterialSets() {
+  VkDescriptorSetLayoutBinding bindings[kTexturesPerMaterial];
+  for (uint32_t i = 0; i < kTexturesPerMaterial; ++i)
+    bindings[i] = {i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+  VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  layoutInfo.bindingCount = kTexturesPerMaterial;
+  layoutInfo.pBindings = bindings;
+  VK_CHECK(vkCreateDescriptorSetLayout(context_.device(), &layoutInfo, nullptr, &materialSetLayout_));
+
+  const uint32_t setCount = std::max<uint32_t>(1, uint32_t(scene_.materials.size()));
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, setCount * kTexturesPerMaterial};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = setCount;
+  poolInfo.poolSizeCount = 1;
+  poolInfo.pPoolSizes = &size;
+  VK_CHECK(vkCreateDescriptorPool(context_.device(), &poolInfo, nullptr, &descriptorPool_));
+
+  const uint32_t white = uint32_t(scene_.textures.size());
+  const uint32_t flatNormal = white + 1;
+  std::vector<VkDescriptorSetLayout> layouts(scene_.materials.size(), materialSetLayout_);
+  materialSets_.resize(scene_.materials.size());
+  if (materialSets_.empty()) return;
+  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocInfo.descriptorPool = descriptorPool_;
+  allocInfo.descriptorSetCount = uint32_t(layouts.size());
+  allocInfo.pSetLayouts = layouts.data();
+  VK_CHECK(vkAllocateDescriptorSets(context_.device(), &allocInfo, materialSets_.data()));
+  for (size_t m = 0; m < scene_.materials.size(); ++m) {
+    const Material& material = scene_.materials[m];
+    const int slots[kTexturesPerMaterial] = {material.baseColorTexture, material.metallicRoughnessTexture,
+                                             material.normalTexture, material.emissiveTexture,
+                                             material.occlusionTexture};
+    VkDescriptorImageInfo images[kTexturesPerMaterial];
+    VkWriteDescriptorSet writes[kTexturesPerMaterial];
+    for (uint32_t i = 0; i < kTexturesPerMaterial; ++i) {
+      const bool valid = slots[i] >= 0 && size_t(slots[i]) < scene_.textures.size();
+      const uint32_t texture = valid ? uint32_t(slots[i]) : (i == 2 ? flatNormal : white);
+      images[i] = {sampler_, textures_[texture].view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+      writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+      writes[i].dstSet = materialSets_[m];
+      writes[i].dstBinding = i;
+      writes[i].descriptorCount = 1;
+      writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+      writes[i].pImageInfo = &images[i];
+    }
+    vkUpdateDescriptorSets(context_.device(), kTexturesPerMaterial, writes, 0, nullptr);
+  }
+}
+
+bool GpuScene::matches(const DrawItem& item, DrawFilter filter) const {
+  const AlphaMode mode = scene_.materials[item.material].alphaMode;
+  switch (filter) {
+    case DrawFilter::OpaqueOnly:
+      return mode == AlphaMode::Opaque;
+    case DrawFilter::MaskOnly:
+      return mode == AlphaMode::Mask;
+    case DrawFilter::Opaque:
+      return mode != AlphaMode::Blend;
+    case DrawFilter::Blend:
+      return mode == AlphaMode::Blend;
+    case DrawFilter::All:
+      return true;
+  }
+  return false;
+}
+
+bool GpuScene::hasBlendDraws() const {
+  return std::any_of(draws_.begin(), draws_.end(),
+                     [&](const DrawItem& d) { return matches(d, DrawFilter::Blend); });
+}
+
+void GpuScene::draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter, const glm::vec3& eye,
+                    bool materialCulling) const {
+  std::vector<const DrawItem*> items;
+  for (const DrawItem& d : draws_)
+    if (matches(d, filter)) items.push_back(&d);
+  if (items.empty()) return;
+  if (filter == DrawFilter::Blend) {
+    std::stable_sort(items.begin(), items.end(), [&](const DrawItem* a, const DrawItem* b) {
+      return glm::dot(a->center - eye, a->center - eye) > glm::dot(b->center - eye, b->center - eye);
+    });
+  }
+  const VkDeviceSize offset = 0;
+  VkBuffer vertexBuffer = vertices_.handle();
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+  vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+  uint32_t boundMaterial = ~0u;
+  for (const DrawItem* d : items) {
+    if (d->material != boundMaterial) {
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &materialSets_[d->material],
+                              0, nullptr);
+      if (materialCulling)
+        vkCmdSetCullMode(
+            cmd, scene_.materials[d->material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+      boundMaterial = d->material;
+    }
+    gpu::DrawPush push{};
+    push.model = scene_.instances[d->instance].transform;
+    push.ids = glm::uvec4(d->material, d->instance, 0, 0);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(push), &push);
+    vkCmdDrawIndexed(cmd, d->indexCount, 1, d->firstIndex, int32_t(d->vertexOffset), 0);
+  }
+}
+
+}  // namespace lll

@@ -1,0 +1,228 @@
+#include "render/renderer.h"
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
+
+#include <algorithm>
+#include <cstring>
+
+#include "gpu/context.h"
+#include "scene/errors.h"
+#include "scene/lights.h"
+
+namespace lll {
+
+namespace {
+
+// A frame needing more than this many re-renders has a bug, not a small pool.
+constexpr uint32_t kMaxRerenders = 8;
+
+const std::initializer_list<Binding> kMeshBindings = {
+    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+};
+
+}  // namespace
+
+void validateResolution(uint32_t width, uint32_t height) {
+  if (width == 0 || height == 0 || width > gpu::kMaxImageSide || height > gpu::kMaxImageSide)
+    throw InputError(fmt::format("resolution {}x{}: width and height must be between 1 and {}", width, height,
+                                 gpu::kMaxImageSide));
+}
+
+Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& settings)
+    : context_(context),
+      scene_(scene),
+      settings_(settings),
+      camera_(resolveCamera(scene, settings.camera)),
+      timer_(context) {
+  validateResolution(settings.width, settings.height);
+  if (scene.lights.size() > gpu::kMaxLights)
+    throw InputError(
+        fmt::format("{} lights: at most {} are supported (the light array is one storage buffer)",
+                    scene.lights.size(), gpu::kMaxLights));
+  gpuScene_ = std::make_unique<GpuScene>(context, scene);
+  createTargets();
+  uniformBuffer_ =
+      Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+  updateUniforms();
+
+  depthLayout_ = PipelineLayout(context, kMeshBindings, sizeof(gpu::DrawPush),
+                                VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                                {gpuScene_->materialSetLayout()});
+  GraphicsPipelineDesc depth;
+  depth.vertexShader = "common/mesh.vert";
+  depth.depthFormat = kDepthFormat;
+  depthOpaque_ = Pipeline(context, depthLayout_, depth);
+  depth.fragmentShader = "common/depth_mask.frag";
+  depthMask_ = Pipeline(context, depthLayout_, depth);
+
+  tonemapLayout_ =
+      PipelineLayout(context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+                               {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+                               {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
+  tonemap_ = Pipeline(context, tonemapLayout_, "post/tonemap.comp");
+  technique_ = findTechnique(settings.technique).create(context, *gpuScene_, settings_, targets_);
+}
+
+Renderer::~Renderer() {
+  vkDeviceWaitIdle(context_.device());
+}
+
+void Renderer::createTargets() {
+  const uint32_t w = settings_.width, h = settings_.height;
+  targets_.width = w;
+  targets_.height = h;
+  targets_.depth = Image(context_, w, h, kDepthFormat,
+                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "depth");
+  targets_.hdr = Image(context_, w, h, kHdrFormat,
+                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+                           VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                       "hdr");
+  targets_.ldr =
+      Image(context_, w, h, kLdrFormat, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "ldr");
+  hdrReadback_ =
+      Buffer(context_, VkDeviceSize(w) * h * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
+  ldrReadback_ =
+      Buffer(context_, VkDeviceSize(w) * h * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
+}
+
+void Renderer::updateUniforms() {
+  const Bounds bounds = scene_.worldBounds();
+  const float aspect = float(settings_.width) / float(settings_.height);
+  glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);
+  glm::vec3 up = camera_.up;
+  if (std::abs(glm::dot(glm::normalize(up), forward)) > 0.999f) up = glm::vec3(0.0f, 0.0f, -1.0f);
+  // Far plane just beyond the farthest corner of the scene; near as close as reverse-Z allows.
+  float far = 1.0f;
+  if (bounds.valid()) {
+    for (int i = 0; i < 8; ++i) {
+      const glm::vec3 corner(i & 1 ? bounds.max.x : bounds.min.x, i & 2 ? bounds.max.y : bounds.min.y,
+                             i & 4 ? bounds.max.z : bounds.min.z);
+      far = std::max(far, glm::length(corner - camera_.eye) * 1.01f);
+    }
+  }
+  const float near = std::clamp(far * 1e-4f, 1e-3f, 0.05f);
+  gpu::FrameUniforms& u = uniforms_;
+  u.view = glm::lookAt(camera_.eye, camera_.target, up);
+  u.proj = glm::perspectiveRH_ZO(camera_.yfov, aspect, far, near);  // near/far swapped: reverse-Z
+  u.proj[1][1] *= -1.0f;                                            // Vulkan's y points down
+  u.viewProj = u.proj * u.view;
+  u.invViewProj = glm::inverse(u.viewProj);
+  u.cameraPosition = glm::vec4(camera_.eye, 1.0f);
+  u.viewport = glm::vec4(settings_.width, settings_.height, 1.0f / settings_.width, 1.0f / settings_.height);
+  const float tanHalf = std::tan(camera_.yfov * 0.5f);
+  u.depthParams = glm::vec4(near, far, tanHalf * aspect, tanHalf);
+  const uint32_t tile = settings_.tileSize;
+  u.counts = glm::uvec4(gpuScene_->lightCount(), tile, divideRoundingUp(settings_.width, tile),
+                        divideRoundingUp(settings_.height, tile));
+  u.ambient = glm::vec4(glm::vec3(settings_.ambient), settings_.exposure);
+  uniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
+}
+
+FrameResult Renderer::renderFrame(bool capture) {
+  FrameResult result;
+  updateUniforms();
+  for (;;) {
+    context_.submitAndWait([&](VkCommandBuffer cmd) { recordFrame(cmd, capture); });
+    if (!technique_->afterFrame()) break;
+    if (++result.rerenders > kMaxRerenders)
+      throw std::runtime_error(fmt::format("technique {} asked for more than {} re-renders of one frame",
+                                           settings_.technique, kMaxRerenders));
+  }
+  result.passes = timer_.read();
+  return result;
+}
+
+void Renderer::recordFrame(VkCommandBuffer cmd, bool capture) {
+  timer_.reset(cmd);
+  FrameContext frame{context_,       cmd,       timer_,    *gpuScene_, targets_,
+                     uniformBuffer_, uniforms_, settings_, camera_.eye};
+  depthPrepass(frame);
+  targets_.hdr.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
+                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
+  technique_->render(frame);
+  tonemap(frame);
+  if (capture) captureImages(cmd);
+}
+
+void Renderer::depthPrepass(FrameContext& frame) {
+  VkCommandBuffer cmd = frame.cmd;
+  ScopedPass pass(timer_, cmd, "depth-prepass");
+  targets_.depth.transition(
+      cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
+      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+  beginRendering(cmd, targets_.width, targets_.height, {}, targets_.depth.view(),
+                 VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
+  depthOpaque_.bind(cmd);
+  meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depthLayout_.handle());
+  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::OpaqueOnly, camera_.eye);
+  depthMask_.bind(cmd);
+  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::MaskOnly, camera_.eye);
+  vkCmdEndRendering(cmd);
+  targets_.depth.transition(
+      cmd, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+      VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT |
+          VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+void Renderer::tonemap(FrameContext& frame) {
+  VkCommandBuffer cmd = frame.cmd;
+  ScopedPass pass(timer_, cmd, "tonemap");
+  targets_.hdr.transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT);
+  targets_.ldr.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                          VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  tonemap_.bind(cmd);
+  DescriptorWriter()
+      .uniform(0, uniformBuffer_.handle())
+      .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapLayout_.handle());
+  vkCmdDispatch(cmd, divideRoundingUp(targets_.width, gpu::kTileGroupSize),
+                divideRoundingUp(targets_.height, gpu::kTileGroupSize), 1);
+}
+
+void Renderer::captureImages(VkCommandBuffer cmd) {
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+  VkBufferImageCopy copy{};
+  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.imageExtent = {targets_.width, targets_.height, 1};
+  vkCmdCopyImageToBuffer(cmd, targets_.hdr.handle(), VK_IMAGE_LAYOUT_GENERAL, hdrReadback_.handle(), 1,
+                         &copy);
+  vkCmdCopyImageToBuffer(cmd, targets_.ldr.handle(), VK_IMAGE_LAYOUT_GENERAL, ldrReadback_.handle(), 1,
+                         &copy);
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+}
+
+HdrImage Renderer::hdrImage() const {
+  HdrImage image{targets_.width, targets_.height, {}};
+  const size_t count = size_t(targets_.width) * targets_.height * 4;
+  image.rgba.resize(count);
+  const auto* halves = static_cast<const uint16_t*>(hdrReadback_.mapped());
+  for (size_t i = 0; i < count; ++i) image.rgba[i] = glm::unpackHalf1x16(halves[i]);
+  return image;
+}
+
+LdrImage Renderer::ldrImage() const {
+  LdrImage image{targets_.width, targets_.height, {}};
+  image.rgba.resize(size_t(targets_.width) * targets_.height * 4);
+  std::memcpy(image.rgba.data(), ldrReadback_.mapped(), image.rgba.size());
+  return image;
+}
+
+}  // namespace lll

@@ -1,0 +1,84 @@
+#pragma once
+// The frame: upload the scene once, then per frame a short list of named, GPU-timed passes:
+//   depth-prepass -> the technique's passes -> tonemap (-> readback when captured).
+#include <memory>
+#include <vector>
+
+#include "gpu/pass_timer.h"
+#include "lighting/technique.h"
+#include "render/frame.h"
+#include "render/gpu_scene.h"
+#include "render/settings.h"
+#include "scene/camera.h"
+
+namespace lll {
+
+class Context;
+
+struct HdrImage {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<float> rgba;  // linear radiance, row 0 at the top
+  glm::vec4 at(uint32_t x, uint32_t y) const {
+    const float* p = &rgba[(size_t(y) * width + x) * 4];
+    return {p[0], p[1], p[2], p[3]};
+  }
+};
+
+struct LdrImage {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<uint8_t> rgba;  // sRGB-encoded, row 0 at the top
+};
+
+struct FrameResult {
+  std::vector<PassTime> passes;  // GPU time of each pass, then "frame"
+  uint32_t rerenders = 0;        // times the frame was recorded again (e.g. link pool growth)
+};
+
+// Checks a requested resolution; throws InputError for zero, negative-as-huge or oversized values.
+void validateResolution(uint32_t width, uint32_t height);
+
+class Renderer {
+ public:
+  Renderer(Context& context, const Scene& scene, const RenderSettings& settings);
+  ~Renderer();
+
+  // Renders one frame; with `capture` the HDR and display images are read back afterwards.
+  FrameResult renderFrame(bool capture);
+  HdrImage hdrImage() const;
+  LdrImage ldrImage() const;
+
+  const Camera& camera() const { return camera_; }
+  const gpu::FrameUniforms& uniforms() const { return uniforms_; }
+  Technique& technique() { return *technique_; }
+  GpuScene& gpuScene() { return *gpuScene_; }
+
+ private:
+  void createTargets();
+  void updateUniforms();
+  void recordFrame(VkCommandBuffer cmd, bool capture);
+  void depthPrepass(FrameContext& frame);
+  void tonemap(FrameContext& frame);
+  void captureImages(VkCommandBuffer cmd);
+
+  Context& context_;
+  const Scene& scene_;
+  RenderSettings settings_;
+  Camera camera_;
+  gpu::FrameUniforms uniforms_{};
+  std::unique_ptr<GpuScene> gpuScene_;
+  FrameTargets targets_;
+  Buffer uniformBuffer_;
+  Buffer hdrReadback_;
+  Buffer ldrReadback_;
+  PassTimer timer_;
+  PipelineLayout depthLayout_;
+  Pipeline depthOpaque_;
+  Pipeline depthMask_;
+  PipelineLayout tonemapLayout_;
+  Pipeline tonemap_;
+  std::unique_ptr<Technique> technique_;
+};
+
+}  // namespace lll

@@ -1,0 +1,25 @@
+#pragma once
+// Everything a user can set about a rendered frame. The CLI fills it; techniques read the fields
+// that concern them.
+#include <cstdint>
+#include <string>
+
+namespace lll {
+
+struct RenderSettings {
+  uint32_t width = 1280;
+  uint32_t height = 720;
+  std::string technique = "forward";
+  std::string camera;  // a camera name, "eye,target" as six numbers, or empty for the scene's first
+  uint32_t frames = 1;
+  float exposure = 1.0f;
+  float ambient = 0.02f;  // constant ambient radiance, so unlit corners are not pitch black
+  // Light Linked List options (technique "lll").
+  std::string lllFill = "compute";  // shells | ray | compute
+  std::string lllLink = "auto";     // compact | wide | auto
+  uint32_t tileSize = 8;
+  uint32_t linksPerTile = 32;      // initial link pool: tiles * this, grown on overflow
+  std::string debugView = "none";  // none | heatmap | bounds | tiles
+};
+
+}  // namespace lll

@@ -1,0 +1,27 @@
+#pragma once
+// Light helpers shared by every scene source: seeded random lights, the finite range given to a
+// glTF light that has none, and the conversion to the GPU layout.
+#include <cstdint>
+#include <vector>
+
+#include "scene/scene.h"
+#include "shared/gpu_types.h"
+
+namespace lll {
+
+// Irradiance (W/m^2 for a 1 cd, white light) under which a light without a glTF range is cut off.
+// KHR_lights_punctual lets an unbounded light reach infinity; a tiled renderer needs a finite
+// volume. At this threshold the clipped tail is invisible after tonemapping at exposure 1.
+inline constexpr float kUnboundedLightCutoff = 1e-3f;
+
+// Range for a glTF light with no "range": where intensity * max(colour) / d^2 falls to the cutoff.
+float rangeForUnboundedLight(float intensity, const glm::vec3& color);
+
+// Adds `count` point lights at seeded random positions inside `bounds`, with saturated random
+// hues and ranges scaled to the scene (a few percent to ~15% of its diagonal), bright enough to
+// read at exposure 1. The same seed gives the same lights on every machine.
+void scatterRandomLights(std::vector<Light>& lights, const Bounds& bounds, uint32_t count, uint32_t seed);
+
+gpu::GpuLight toGpuLight(const Light& light);
+
+}  // namespace lll

@@ -1,0 +1,123 @@
+#pragma once
+// The scene as the renderer sees it: one vertex and index array, meshes made of primitives,
+// instances placing meshes in the world (the glTF node hierarchy already flattened), materials,
+// textures, punctual lights and named cameras. Loaders (glTF, built-in scenes) fill it; the GPU
+// layer uploads it; techniques only read it.
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lll {
+
+struct Vertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 uv;
+};
+static_assert(sizeof(Vertex) == 32);
+
+enum class AlphaMode : uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
+
+// Decoded 8-bit RGBA pixels; colour textures are sRGB-encoded, data textures linear.
+struct Texture {
+  std::string name;  // where it came from, for messages
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<uint8_t> rgba;  // width * height * 4
+  bool srgb = false;
+};
+
+struct Material {
+  std::string name;
+  glm::vec4 baseColorFactor{1.0f};
+  glm::vec3 emissiveFactor{0.0f};
+  float emissiveStrength = 1.0f;  // KHR_materials_emissive_strength
+  float metallic = 1.0f;
+  float roughness = 1.0f;
+  float normalScale = 1.0f;
+  float occlusionStrength = 1.0f;
+  float alphaCutoff = 0.5f;
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  bool doubleSided = false;
+  // Indices into Scene::textures, -1 when absent.
+  int baseColorTexture = -1;
+  int metallicRoughnessTexture = -1;
+  int normalTexture = -1;
+  int emissiveTexture = -1;
+  int occlusionTexture = -1;
+};
+
+// A contiguous run of triangles with one material. vertexOffset is added to every index.
+struct Primitive {
+  uint32_t firstIndex = 0;
+  uint32_t indexCount = 0;
+  uint32_t vertexOffset = 0;
+  uint32_t material = 0;
+};
+
+struct Mesh {
+  std::string name;
+  std::vector<Primitive> primitives;
+};
+
+struct Instance {
+  uint32_t mesh = 0;
+  glm::mat4 transform{1.0f};  // object to world
+};
+
+enum class LightType : uint32_t { Point = 0, Spot = 1 };
+
+// KHR_lights_punctual semantics: intensity in candela, colour linear, range finite (loaders turn
+// an unbounded glTF light into a finite range, see lights.h), cone angles in radians.
+struct Light {
+  LightType type = LightType::Point;
+  glm::vec3 position{0.0f};
+  glm::vec3 direction{0.0f, 0.0f, -1.0f};  // where a spot light points, unit length
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;
+  float range = 1.0f;
+  float innerConeAngle = 0.0f;
+  float outerConeAngle = 0.7853982f;  // pi / 4, the glTF default
+};
+
+struct Camera {
+  std::string name;
+  glm::vec3 eye{0.0f};
+  glm::vec3 target{0.0f, 0.0f, -1.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float yfov = 1.0471976f;  // 60 degrees
+};
+
+struct Bounds {
+  glm::vec3 min{1e30f};
+  glm::vec3 max{-1e30f};
+  void expand(const glm::vec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  bool valid() const { return min.x <= max.x; }
+  glm::vec3 center() const { return 0.5f * (min + max); }
+  glm::vec3 extent() const { return max - min; }
+};
+
+struct Scene {
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<uint32_t> indices;
+  std::vector<Mesh> meshes;
+  std::vector<Instance> instances;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<Light> lights;
+  std::vector<Camera> cameras;  // the first one is the default
+  // Where a particle emitter sits, when the scene has one (the default scene's smoke source).
+  std::optional<glm::vec3> smokeSource;
+
+  // World-space bounds of all instanced geometry.
+  Bounds worldBounds() const;
+  uint64_t triangleCount() const;
+};
+
+}  // namespace lll

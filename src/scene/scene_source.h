@@ -1,0 +1,20 @@
+#pragma once
+// Turns the SCENE argument into a Scene: a built-in name or a .gltf/.glb path; then adds the
+// seeded random lights asked for with --lights.
+#include <cstdint>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace lll {
+
+struct SceneRequest {
+  std::string scene;         // built-in name or path; empty for the default scene
+  uint32_t extraLights = 0;  // --lights: scattered when the scene has none, added otherwise
+  uint32_t seed = 1;
+};
+
+// Throws InputError for an unknown name, a missing or broken file, or too many lights.
+Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings = nullptr);
+
+}  // namespace lll
