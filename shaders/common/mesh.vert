@@ -1,6 +1,6 @@
 #version 460
-// Shared by every pass that draws the scene, so depth is bit-identical between the prepass and
-// the shading passes that test EQUAL against it.
+// Shared by every pass that draws the scene: the same SPIR-V computing the same position gives the
+// same depth in the prepass and in the shading passes that test EQUAL against it.
 #include "common/frame.glsl"
 
 layout(location = 0) in vec3 inPosition;
@@ -10,8 +10,6 @@ layout(location = 2) in vec2 inUv;
 layout(location = 0) out vec3 outWorldPosition;
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec2 outUv;
-
-invariant gl_Position;
 
 void main() {
   vec4 world = draw.model * vec4(inPosition, 1.0);

@@ -118,8 +118,8 @@ DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
     info.whyUnusable = "needs Vulkan 1.3";
   else if (graphicsComputeQueue(device) < 0)
     info.whyUnusable = "no graphics+compute queue";
-  else if (!f13.dynamicRendering || !f13.synchronization2)
-    info.whyUnusable = "no dynamicRendering/synchronization2";
+  else if (!f13.dynamicRendering || !f13.synchronization2 || !f13.maintenance4)
+    info.whyUnusable = "no dynamicRendering/synchronization2/maintenance4";
   else if (!features.features.fragmentStoresAndAtomics)
     info.whyUnusable = "no fragmentStoresAndAtomics";
   else if (!hasExtension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
@@ -300,6 +300,7 @@ void Context::createDevice() {
   VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
   f13.dynamicRendering = VK_TRUE;
   f13.synchronization2 = VK_TRUE;
+  f13.maintenance4 = VK_TRUE;  // glslc's SPIR-V 1.6 declares workgroup sizes with LocalSizeId
   VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
   features.features.fragmentStoresAndAtomics = VK_TRUE;
