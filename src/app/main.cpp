@@ -19,7 +19,8 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--lights", job.scene.extraLights,
                  "random point lights: scattered in the scene bounds, added to the file's own lights")
       ->check(CLI::Range(0u, 1u << 20));
-  cmd.add_option("--seed", job.scene.seed, "seed for random lights");
+  cmd.add_option("--seed", job.scene.seed, "seed for random lights and particles")
+      ->each([&s](const std::string& v) { s.seed = uint32_t(std::stoul(v)); });
   cmd.add_option("--camera", s.camera, "camera name, or eye and target as \"ex,ey,ez,tx,ty,tz\"");
   cmd.add_option("--frames", s.frames, "frames to render (timings are medians over them)")
       ->check(CLI::Range(1u, 100000u));
@@ -37,6 +38,17 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(CLI::IsMember({"compact", "wide", "auto"}));
   cmd.add_option("--debug-view", s.debugView, "none | heatmap | bounds | tiles (lll)")
       ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));
+  cmd.add_option(
+         "--deferred-translucent", s.deferredTranslucent,
+         "deferred: glass and smoke left unlit (as in the seeds' Figure 1.1) or lit by a forward pass")
+      ->check(CLI::IsMember({"unlit", "forward"}));
+  cmd.add_option("--aa", s.antiAliasing, "none | edge (deferred: edge-detect anti-aliasing)")
+      ->check(CLI::IsMember({"none", "edge"}));
+  cmd.add_option("--particles", s.particles, "particle preset name or JSON file (smoke, sparks, dust)");
+  cmd.add_option("--particle-lighting", s.particleLighting, "pixel | vertex")
+      ->check(CLI::IsMember({"pixel", "vertex"}));
+  cmd.add_option("--particle-count", s.particleCount, "particle capacity (0: the preset's)")
+      ->check(CLI::Range(0u, 1000000u));
 }
 
 }  // namespace

@@ -20,6 +20,14 @@ struct RenderSettings {
   uint32_t tileSize = 8;
   uint32_t linksPerTile = 32;      // initial link pool: tiles * this, grown on overflow
   std::string debugView = "none";  // none | heatmap | bounds | tiles
+  // Deferred shading options (technique "deferred").
+  std::string deferredTranslucent = "forward";  // unlit | forward
+  std::string antiAliasing = "none";            // none | edge
+  // Particles: a preset name or JSON path; empty for none.
+  std::string particles;
+  std::string particleLighting = "pixel";  // pixel | vertex
+  uint32_t particleCount = 0;              // 0: the preset's own count
+  uint32_t seed = 1;                       // simulation seed (the CLI's --seed)
 };
 
 }  // namespace lll
