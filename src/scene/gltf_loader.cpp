@@ -1,0 +1,976 @@
+// glTF 2.0 loading. tinygltf parses the JSON and reads the buffers, but it trusts most indices,
+// offsets and sizes in the file; this file checks every one before use, so a corrupt or hostile
+// file ends in an InputError that names it, never in a crash or an out-of-bounds read.
+#include "scene/gltf_loader.h"
+
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_STB_IMAGE_WRITE  // stb_image_write belongs to the image output code
+#define STB_IMAGE_IMPLEMENTATION
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <set>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "scene/errors.h"
+#include "scene/lights.h"
+
+namespace lll {
+namespace {
+
+// tinygltf passes buffer and chunk sizes around as 32-bit ints.
+constexpr uint64_t kMaxFileBytes = std::numeric_limits<int32_t>::max();
+// tinygltf copies "extras" and "extensions" into its own tree recursively: bounding the nesting
+// keeps a hostile file from overflowing the stack. Real glTF files nest well under 20 deep.
+constexpr int kMaxJsonNesting = 128;
+// An accessor without a bufferView is all zeros (plus sparse values), so no data in the file bounds
+// its count; this does, instead of allocating whatever the count asks for.
+constexpr size_t kMaxElementsWithoutData = size_t{1} << 22;
+// Beyond what any GPU we target samples; stops a forged image header from asking for gigabytes.
+constexpr int kMaxTextureSide = 16384;
+
+// Extensions we implement, and those a file may require that only refine the look when ignored
+// (texture transforms shift UVs, IOR nudges dielectric reflectance). Both get a warning when used.
+const std::set<std::string> kHandledExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+const std::set<std::string> kIgnorableRequiredExtensions = {"KHR_texture_transform", "KHR_materials_ior"};
+
+std::string inQuotes(const std::string& name) {
+  return "'" + name + "'";
+}
+
+// Reads a whole file for us and for tinygltf (its .bin and image references), with the size bound
+// and error text we want. Returns false with `error` set when the file cannot be used.
+bool readFileBytes(const std::filesystem::path& path, std::vector<unsigned char>& bytes, std::string& error) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) {
+    error = "file not found";
+    return false;
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    error = "not a regular file";
+    return false;
+  }
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) {
+    error = ec.message();
+    return false;
+  }
+  if (size == 0) {
+    error = "file is empty";
+    return false;
+  }
+  if (size > kMaxFileBytes) {
+    error = "file is larger than 2 GiB";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  bytes.resize(size_t(size));
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
+    error = "read error (permissions?)";
+    return false;
+  }
+  return true;
+}
+
+// tinygltf looks for referenced files in the glTF's folder, then in the working directory. We
+// accept only the glTF's folder, so whether a .bin is found does not depend on where we run.
+struct FileAccess {
+  std::string baseDir;
+};
+
+bool fileExistsBesideGltf(const std::string& path, void* user) {
+  const auto* access = static_cast<const FileAccess*>(user);
+  std::error_code ec;
+  return path.compare(0, access->baseDir.size(), access->baseDir) == 0 &&
+         std::filesystem::is_regular_file(path, ec);
+}
+
+std::string keepPath(const std::string& path, void*) {
+  return path;
+}
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  std::string error;
+  if (readFileBytes(path, *out, error)) return true;
+  *err += path + ": " + error + "\n";
+  return false;
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  *err += "writing is not supported\n";
+  return false;
+}
+
+// tinygltf's image callback. We only keep the encoded bytes and decode later, for the images a
+// material uses; bufferView images are not even read here, because tinygltf hands over a pointer
+// it has not checked against the buffer.
+bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  if (image->bufferView < 0 && bytes != nullptr && size > 0) image->image.assign(bytes, bytes + size);
+  return true;
+}
+
+bool looksLikeJsonObject(const std::vector<unsigned char>& bytes) {
+  size_t i = bytes.size() >= 3 && std::memcmp(bytes.data(), "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;  // UTF-8 BOM
+  while (i < bytes.size() && std::isspace(bytes[i])) ++i;
+  return i < bytes.size() && bytes[i] == '{';
+}
+
+// False when the JSON nests deeper than kMaxJsonNesting. Counts only brackets outside strings.
+bool jsonNestingWithinLimit(const unsigned char* text, size_t size) {
+  int depth = 0;
+  bool inString = false;
+  bool escaped = false;
+  for (size_t i = 0; i < size; ++i) {
+    const char c = char(text[i]);
+    if (inString) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        inString = false;
+      }
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonNesting) return false;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return true;
+}
+
+// tinygltf's error text on one line, in printable ASCII (parse errors quote the raw bytes they met).
+std::string oneLine(std::string text) {
+  while (!text.empty() && std::string_view("\n\r .").find(text.back()) != std::string_view::npos)
+    text.pop_back();
+  for (char& c : text) {
+    if (c == '\n') {
+      c = ';';
+    } else if (c < ' ' || c > '~') {
+      c = '?';
+    }
+  }
+  return text;
+}
+
+std::string typeName(int type) {
+  if (type == TINYGLTF_TYPE_SCALAR) return "SCALAR";
+  if (type >= TINYGLTF_TYPE_VEC2 && type <= TINYGLTF_TYPE_VEC4) return "VEC" + std::to_string(type);
+  return "a matrix type";
+}
+
+// Which component types glTF allows for what we read.
+enum class Components { Float, FloatOrNormalizedUnsigned, Index };
+
+bool componentsAllowed(Components allowed, int componentType, bool normalized) {
+  switch (allowed) {
+    case Components::Float:
+      return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    case Components::FloatOrNormalizedUnsigned:
+      return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+             (normalized && (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                             componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
+    case Components::Index:
+      return !normalized && (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                             componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+                             componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+  }
+  return false;
+}
+
+const char* describe(Components allowed) {
+  switch (allowed) {
+    case Components::Float:
+      return "FLOAT (5126)";
+    case Components::FloatOrNormalizedUnsigned:
+      return "FLOAT (5126), or normalized UNSIGNED_BYTE (5121) or UNSIGNED_SHORT (5123)";
+    case Components::Index:
+      return "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT, not normalized";
+  }
+  return "";
+}
+
+template <typename T>
+double loadComponent(const uint8_t* p, bool normalized) {
+  T value;
+  std::memcpy(&value, p, sizeof value);
+  if constexpr (std::is_floating_point_v<T>) {
+    return value;
+  } else {
+    return normalized ? double(value) / double(std::numeric_limits<T>::max()) : double(value);
+  }
+}
+
+// Only called for the unsigned and float component types that componentsAllowed() accepts.
+double loadComponent(const uint8_t* p, int componentType, bool normalized) {
+  switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return loadComponent<uint8_t>(p, normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return loadComponent<uint16_t>(p, normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      return loadComponent<uint32_t>(p, normalized);
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return loadComponent<float>(p, normalized);
+    default:
+      return 0.0;
+  }
+}
+
+glm::vec3 unitOr(const glm::dvec3& v, const glm::vec3& fallback) {
+  const double length = glm::length(v);
+  return std::isfinite(length) && length > 1e-12 ? glm::vec3(v / length) : fallback;
+}
+
+std::string describeList(const std::set<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
+class GltfImporter {
+ public:
+  explicit GltfImporter(const std::filesystem::path& file) : path_(file), file_(file.string()) {}
+
+  Scene run() {
+    scene_.name = path_.stem().string();
+    parse();
+    checkVersionAndExtensions();
+    checkBufferViews();
+    images_.resize(model_.images.size());
+    for (size_t i = 0; i < model_.materials.size(); ++i) {
+      scene_.materials.push_back(convertMaterial(model_.materials[i], int(i)));
+    }
+    for (size_t i = 0; i < model_.meshes.size(); ++i) scene_.meshes.push_back(convertMesh(int(i)));
+    placeNodes();
+    warnAboutIgnoredData();
+    return std::move(scene_);
+  }
+
+  std::vector<std::string> takeWarnings() { return std::move(warnings_); }
+
+ private:
+  struct DecodedImage {
+    bool attempted = false;
+    std::string failure;  // why it could not be used; empty once decoded
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<uint8_t> rgba;
+  };
+
+  // Where an accessor's elements start in memory, and how far apart they are.
+  struct ElementSpan {
+    const uint8_t* data = nullptr;
+    size_t stride = 0;
+  };
+
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(file_ + ": " + what); }
+  void warn(const std::string& what) { warnings_.push_back(file_ + ": " + what); }
+
+  void parse();
+  void checkVersionAndExtensions();
+  void checkBufferViews();
+
+  ElementSpan checkedElements(int bufferView, size_t byteOffset, size_t count, size_t elementSize,
+                              bool useViewStride, const std::string& name) const;
+  template <typename T>
+  std::vector<T> readAccessor(int index, const std::string& what, int type, Components allowed) const;
+  template <typename T>
+  void applySparse(const tinygltf::Accessor& accessor, const std::string& name, std::vector<T>& values) const;
+
+  Material convertMaterial(const tinygltf::Material& in, int index);
+  template <typename Info>
+  int textureFor(const Info& info, bool srgb, const std::string& material, const char* slot);
+  const DecodedImage& decodeImage(int index);
+  std::string imageName(int index) const;
+
+  Mesh convertMesh(int index);
+  void convertPrimitive(const tinygltf::Primitive& primitive, const std::string& where, Mesh& mesh);
+  std::vector<uint32_t> toTriangleList(int mode, const std::vector<uint32_t>& indices,
+                                       const std::string& where);
+  uint32_t materialFor(int material, const std::string& where);
+
+  void placeNodes();
+  glm::dmat4 localTransform(const tinygltf::Node& node, int index) const;
+  void addLight(const tinygltf::Node& node, int nodeIndex, const glm::dmat4& world);
+  void addCamera(int cameraIndex, int nodeIndex, const glm::dmat4& world);
+  void warnAboutIgnoredData();
+
+  std::filesystem::path path_;
+  std::string file_;
+  tinygltf::Model model_;
+  Scene scene_;
+  std::vector<std::string> warnings_;
+  std::vector<DecodedImage> images_;                  // per glTF image, decoded on first use
+  std::map<std::pair<int, bool>, int> textureIndex_;  // (glTF image, srgb) -> Scene::textures
+  std::optional<uint32_t> defaultMaterial_;
+  std::set<std::string> ignoredAttributes_;
+  bool hasMorphTargets_ = false;
+  bool usesOtherTexCoords_ = false;
+};
+
+void GltfImporter::parse() {
+  std::vector<unsigned char> bytes;
+  std::string readError;
+  if (!readFileBytes(path_, bytes, readError)) fail("cannot read the glTF file: " + readError);
+
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (!binary && !looksLikeJsonObject(bytes)) {
+    fail(
+        "is not a glTF file: it is neither glTF JSON (a .gltf starts with '{') nor binary glTF (a .glb "
+        "starts with 'glTF')");
+  }
+  size_t jsonBegin = 0;
+  size_t jsonSize = bytes.size();
+  if (binary && bytes.size() >= 20) {
+    // GLB header: magic, version, length, then the JSON chunk's length and type.
+    const uint32_t chunkLength = uint32_t(bytes[12]) | uint32_t(bytes[13]) << 8 | uint32_t(bytes[14]) << 16 |
+                                 uint32_t(bytes[15]) << 24;
+    jsonBegin = 20;
+    jsonSize = std::min<size_t>(chunkLength, bytes.size() - 20);
+  }
+  if (!jsonNestingWithinLimit(bytes.data() + jsonBegin, jsonSize)) {
+    fail("its JSON is nested more than " + std::to_string(kMaxJsonNesting) +
+         " levels deep; no valid glTF needs that, so the file is corrupt or not glTF");
+  }
+
+  FileAccess access{std::filesystem::absolute(path_).parent_path().string()};
+  tinygltf::TinyGLTF gltf;
+  gltf.SetFsCallbacks({&fileExistsBesideGltf, &keepPath, &readWholeFile, &refuseWrite, &access});
+  gltf.SetImageLoader(&keepEncodedImage, nullptr);
+  std::string error;
+  std::string warning;  // tinygltf only warns about images, which we report ourselves
+  bool loaded = false;
+  try {
+    loaded = binary ? gltf.LoadBinaryFromMemory(&model_, &error, &warning, bytes.data(),
+                                                unsigned(bytes.size()), access.baseDir)
+                    : gltf.LoadASCIIFromString(&model_, &error, &warning,
+                                               reinterpret_cast<const char*>(bytes.data()),
+                                               unsigned(bytes.size()), access.baseDir);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (!loaded) {
+    if (binary) fail("not a valid binary glTF (.glb): " + oneLine(error) + ". The file may be truncated.");
+    fail("not a valid glTF 2.0 file: " + oneLine(error) +
+         ". A .gltf must be glTF 2.0 JSON with its .bin (complete, byteLength bytes) and images beside it; "
+         "a .glb must start with the 'glTF' header.");
+  }
+}
+
+void GltfImporter::checkVersionAndExtensions() {
+  if (model_.asset.version.rfind("2.", 0) != 0) {
+    fail("is glTF version '" + model_.asset.version +
+         "'; only glTF 2.0 is supported (convert it, e.g. by importing and re-exporting in Blender)");
+  }
+  for (const std::string& extension : model_.extensionsRequired) {
+    if (!kHandledExtensions.contains(extension) && !kIgnorableRequiredExtensions.contains(extension)) {
+      fail("requires the glTF extension " + extension +
+           ", which this renderer does not support. Re-export the scene without it (for example "
+           "without mesh compression or quantization).");
+    }
+  }
+  std::set<std::string> ignored;
+  for (const std::string& extension : model_.extensionsUsed) {
+    if (!kHandledExtensions.contains(extension)) ignored.insert(extension);
+  }
+  if (!ignored.empty()) {
+    warn("uses glTF extension(s) " + describeList(ignored) +
+         " that the renderer ignores; the scene may look different than in other viewers");
+  }
+}
+
+void GltfImporter::checkBufferViews() {
+  for (size_t i = 0; i < model_.bufferViews.size(); ++i) {
+    const tinygltf::BufferView& view = model_.bufferViews[i];
+    const std::string name = "bufferView " + std::to_string(i);
+    if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size()) {
+      fail(name + " refers to buffer " + std::to_string(view.buffer) + ", but the file has " +
+           std::to_string(model_.buffers.size()) + " buffers");
+    }
+    const size_t bufferSize = model_.buffers[size_t(view.buffer)].data.size();
+    if (view.byteOffset > bufferSize || view.byteLength > bufferSize - view.byteOffset) {
+      fail(name + " covers bytes " + std::to_string(view.byteOffset) + " + " +
+           std::to_string(view.byteLength) + " of buffer " + std::to_string(view.buffer) +
+           ", which has only " + std::to_string(bufferSize) + " bytes. The file is corrupt; re-export it.");
+    }
+  }
+}
+
+GltfImporter::ElementSpan GltfImporter::checkedElements(int bufferView, size_t byteOffset, size_t count,
+                                                        size_t elementSize, bool useViewStride,
+                                                        const std::string& name) const {
+  if (bufferView < 0 || size_t(bufferView) >= model_.bufferViews.size()) {
+    fail(name + " refers to bufferView " + std::to_string(bufferView) + ", but the file has " +
+         std::to_string(model_.bufferViews.size()) + " bufferViews");
+  }
+  const tinygltf::BufferView& view = model_.bufferViews[size_t(bufferView)];
+  const size_t stride = useViewStride && view.byteStride != 0 ? view.byteStride : elementSize;
+  if (stride < elementSize) {
+    fail(name + " has elements of " + std::to_string(elementSize) + " bytes, but bufferView " +
+         std::to_string(bufferView) + " has the smaller byteStride " + std::to_string(stride));
+  }
+  // Phrased with divisions so that a forged count cannot overflow the arithmetic. count >= 1.
+  if (byteOffset > view.byteLength || view.byteLength - byteOffset < elementSize ||
+      count - 1 > (view.byteLength - byteOffset - elementSize) / stride) {
+    fail(name + " reads " + std::to_string(count) + " elements of " + std::to_string(elementSize) +
+         " bytes (stride " + std::to_string(stride) + ") from byte " + std::to_string(byteOffset) +
+         " of bufferView " + std::to_string(bufferView) + ", which is only " +
+         std::to_string(view.byteLength) + " bytes long. The file is corrupt or truncated; re-export it.");
+  }
+  const uint8_t* base = model_.buffers[size_t(view.buffer)].data.data();
+  return {base + view.byteOffset + byteOffset, stride};
+}
+
+template <typename T>
+std::vector<T> GltfImporter::readAccessor(int index, const std::string& what, int type,
+                                          Components allowed) const {
+  if (index < 0 || size_t(index) >= model_.accessors.size()) {
+    fail(what + " refers to accessor " + std::to_string(index) + ", but the file has " +
+         std::to_string(model_.accessors.size()) + " accessors");
+  }
+  const tinygltf::Accessor& accessor = model_.accessors[size_t(index)];
+  const std::string name = "accessor " + std::to_string(index) + " (" + what + ")";
+  if (accessor.type != type) {
+    fail(name + " has type " + typeName(accessor.type) + ", but glTF requires " + typeName(type));
+  }
+  if (!componentsAllowed(allowed, accessor.componentType, accessor.normalized)) {
+    const bool isFloat = accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    fail(name + " has componentType " + std::to_string(accessor.componentType) +
+         (isFloat               ? ""
+          : accessor.normalized ? " (normalized)"
+                                : " (not normalized)") +
+         "; glTF allows only " + describe(allowed) + " here");
+  }
+  if (accessor.count == 0) fail(name + " has count 0; glTF requires at least 1");
+
+  const size_t components = size_t(tinygltf::GetNumComponentsInType(uint32_t(accessor.type)));
+  const size_t componentSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType)));
+  std::vector<T> values;
+  if (accessor.bufferView < 0) {
+    if (accessor.count > kMaxElementsWithoutData) {
+      fail(name + " has no bufferView but a count of " + std::to_string(accessor.count) +
+           ", above the limit of " + std::to_string(kMaxElementsWithoutData) +
+           " for data that is all zeros or sparse");
+    }
+    values.assign(accessor.count * components, T{0});
+  } else {
+    const ElementSpan span = checkedElements(accessor.bufferView, accessor.byteOffset, accessor.count,
+                                             components * componentSize, true, name);
+    values.resize(accessor.count * components);
+    for (size_t i = 0; i < accessor.count; ++i) {
+      for (size_t c = 0; c < components; ++c) {
+        values[i * components + c] = static_cast<T>(loadComponent(
+            span.data + i * span.stride + c * componentSize, accessor.componentType, accessor.normalized));
+      }
+    }
+  }
+  if (accessor.sparse.isSparse) applySparse(accessor, name, values);
+  return values;
+}
+
+template <typename T>
+void GltfImporter::applySparse(const tinygltf::Accessor& accessor, const std::string& name,
+                               std::vector<T>& values) const {
+  const auto& sparse = accessor.sparse;
+  if (sparse.count < 1 || size_t(sparse.count) > accessor.count) {
+    fail(name + " has a sparse count of " + std::to_string(sparse.count) + "; it must be between 1 and " +
+         std::to_string(accessor.count));
+  }
+  if (!componentsAllowed(Components::Index, sparse.indices.componentType, false)) {
+    fail(name + " has sparse indices of componentType " + std::to_string(sparse.indices.componentType) +
+         "; glTF allows " + describe(Components::Index));
+  }
+  if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
+    fail(name + " has a negative sparse byteOffset");
+  const size_t count = size_t(sparse.count);
+  const size_t components = values.size() / accessor.count;
+  const size_t componentSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType)));
+  const size_t indexSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(sparse.indices.componentType)));
+  const ElementSpan indices = checkedElements(sparse.indices.bufferView, size_t(sparse.indices.byteOffset),
+                                              count, indexSize, false, name + " sparse indices");
+  const ElementSpan replacements =
+      checkedElements(sparse.values.bufferView, size_t(sparse.values.byteOffset), count,
+                      components * componentSize, false, name + " sparse values");
+  for (size_t k = 0; k < count; ++k) {
+    const auto target =
+        size_t(loadComponent(indices.data + k * indices.stride, sparse.indices.componentType, false));
+    if (target >= accessor.count) {
+      fail(name + " has sparse index " + std::to_string(target) + ", but the accessor has only " +
+           std::to_string(accessor.count) + " elements");
+    }
+    for (size_t c = 0; c < components; ++c) {
+      values[target * components + c] =
+          static_cast<T>(loadComponent(replacements.data + k * replacements.stride + c * componentSize,
+                                       accessor.componentType, accessor.normalized));
+    }
+  }
+}
+
+Material GltfImporter::convertMaterial(const tinygltf::Material& in, int index) {
+  Material out;
+  out.name = in.name.empty() ? "material " + std::to_string(index) : in.name;
+  const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
+  if (pbr.baseColorFactor.size() == 4) out.baseColorFactor = glm::make_vec4(pbr.baseColorFactor.data());
+  if (in.emissiveFactor.size() == 3) out.emissiveFactor = glm::make_vec3(in.emissiveFactor.data());
+  out.metallic = float(pbr.metallicFactor);
+  out.roughness = float(pbr.roughnessFactor);
+  out.normalScale = float(in.normalTexture.scale);
+  out.occlusionStrength = float(in.occlusionTexture.strength);
+  out.alphaCutoff = float(in.alphaCutoff);
+  out.doubleSided = in.doubleSided;
+  if (in.alphaMode == "OPAQUE") {
+    out.alphaMode = AlphaMode::Opaque;
+  } else if (in.alphaMode == "MASK") {
+    out.alphaMode = AlphaMode::Mask;
+  } else if (in.alphaMode == "BLEND") {
+    out.alphaMode = AlphaMode::Blend;
+  } else {
+    fail("material " + inQuotes(out.name) + " has alphaMode '" + in.alphaMode +
+         "'; glTF allows OPAQUE, MASK or BLEND");
+  }
+  if (auto strength = in.extensions.find("KHR_materials_emissive_strength");
+      strength != in.extensions.end()) {
+    const tinygltf::Value& value = strength->second.Get("emissiveStrength");
+    if (value.IsNumber()) out.emissiveStrength = float(value.GetNumberAsDouble());
+  }
+  out.baseColorTexture = textureFor(pbr.baseColorTexture, true, out.name, "base colour");
+  out.metallicRoughnessTexture =
+      textureFor(pbr.metallicRoughnessTexture, false, out.name, "metallic-roughness");
+  out.normalTexture = textureFor(in.normalTexture, false, out.name, "normal");
+  out.occlusionTexture = textureFor(in.occlusionTexture, false, out.name, "occlusion");
+  out.emissiveTexture = textureFor(in.emissiveTexture, true, out.name, "emissive");
+  return out;
+}
+
+template <typename Info>
+int GltfImporter::textureFor(const Info& info, bool srgb, const std::string& material, const char* slot) {
+  if (info.index < 0) return -1;
+  if (size_t(info.index) >= model_.textures.size()) {
+    fail("material " + inQuotes(material) + " uses texture " + std::to_string(info.index) + " as its " +
+         slot + " texture, but the file has " + std::to_string(model_.textures.size()) + " textures");
+  }
+  if (info.texCoord != 0) usesOtherTexCoords_ = true;
+  const int image = model_.textures[size_t(info.index)].source;
+  if (image < 0) {
+    warn("material " + inQuotes(material) + ": its " + slot + " texture " + std::to_string(info.index) +
+         " has no PNG or JPEG source (an image extension we do not support?); a neutral texture is used");
+    return -1;
+  }
+  if (size_t(image) >= model_.images.size()) {
+    fail("texture " + std::to_string(info.index) + " refers to image " + std::to_string(image) +
+         ", but the file has " + std::to_string(model_.images.size()) + " images");
+  }
+  if (auto known = textureIndex_.find({image, srgb}); known != textureIndex_.end()) return known->second;
+
+  const DecodedImage& decoded = decodeImage(image);
+  if (!decoded.failure.empty()) {
+    warn("material " + inQuotes(material) + ": " + slot + " image " + inQuotes(imageName(image)) +
+         " could not be loaded (" + decoded.failure + "); a neutral texture is used instead");
+    return -1;
+  }
+  Texture texture;
+  texture.name = imageName(image);
+  texture.width = decoded.width;
+  texture.height = decoded.height;
+  texture.rgba = decoded.rgba;
+  texture.srgb = srgb;
+  scene_.textures.push_back(std::move(texture));
+  const int index = int(scene_.textures.size() - 1);
+  textureIndex_[{image, srgb}] = index;
+  return index;
+}
+
+const GltfImporter::DecodedImage& GltfImporter::decodeImage(int index) {
+  DecodedImage& decoded = images_[size_t(index)];
+  if (decoded.attempted) return decoded;
+  decoded.attempted = true;
+
+  const tinygltf::Image& image = model_.images[size_t(index)];
+  const unsigned char* bytes = image.image.data();
+  size_t size = image.image.size();
+  if (image.bufferView >= 0) {  // in range: tinygltf checked it; checkBufferViews() checked the view
+    const tinygltf::BufferView& view = model_.bufferViews[size_t(image.bufferView)];
+    bytes = model_.buffers[size_t(view.buffer)].data.data() + view.byteOffset;
+    size = view.byteLength;
+  }
+  if (size == 0) {
+    decoded.failure = image.uri.empty() ? "it has no data" : "the file is missing or unreadable";
+    return decoded;
+  }
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels)) {
+    decoded.failure = std::string("not a decodable PNG or JPEG: ") + stbi_failure_reason();
+    return decoded;
+  }
+  if (width > kMaxTextureSide || height > kMaxTextureSide) {
+    decoded.failure = std::to_string(width) + "x" + std::to_string(height) + " is larger than the " +
+                      std::to_string(kMaxTextureSide) + " pixels per side we accept";
+    return decoded;
+  }
+  stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
+  if (pixels == nullptr) {
+    decoded.failure = std::string("decoding failed: ") + stbi_failure_reason();
+    return decoded;
+  }
+  decoded.width = uint32_t(width);
+  decoded.height = uint32_t(height);
+  decoded.rgba.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
+  stbi_image_free(pixels);
+  return decoded;
+}
+
+std::string GltfImporter::imageName(int index) const {
+  const tinygltf::Image& image = model_.images[size_t(index)];
+  if (!image.uri.empty()) return image.uri;
+  if (!image.name.empty()) return "embedded image " + image.name;
+  return "embedded image " + std::to_string(index);
+}
+
+Mesh GltfImporter::convertMesh(int index) {
+  const tinygltf::Mesh& in = model_.meshes[size_t(index)];
+  Mesh out;
+  out.name = in.name.empty() ? "mesh " + std::to_string(index) : in.name;
+  for (size_t i = 0; i < in.primitives.size(); ++i) {
+    convertPrimitive(in.primitives[i], "mesh " + inQuotes(out.name) + " primitive " + std::to_string(i), out);
+  }
+  return out;
+}
+
+void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const std::string& where,
+                                    Mesh& mesh) {
+  static const char* const kModeNames[] = {"points", "lines", "a line loop", "a line strip"};
+  if (primitive.mode >= TINYGLTF_MODE_POINTS && primitive.mode <= TINYGLTF_MODE_LINE_STRIP) {
+    warn(where + " draws " + kModeNames[primitive.mode] + "; only triangles are rendered, so it is skipped");
+    return;
+  }
+  if (primitive.mode < TINYGLTF_MODE_TRIANGLES || primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN) {
+    fail(where + " has mode " + std::to_string(primitive.mode) +
+         ", which is not a glTF primitive mode (0 to 6)");
+  }
+  const auto position = primitive.attributes.find("POSITION");
+  if (position == primitive.attributes.end()) {
+    fail(where + " has no POSITION attribute; every glTF mesh primitive needs one. Re-export the mesh.");
+  }
+  const std::vector<float> positions =
+      readAccessor<float>(position->second, where + " POSITION", TINYGLTF_TYPE_VEC3, Components::Float);
+  const size_t vertexCount = positions.size() / 3;
+  if (!std::all_of(positions.begin(), positions.end(), [](float x) { return std::isfinite(x); })) {
+    fail(where + " has a POSITION that is infinite or NaN");
+  }
+  std::vector<float> normals;
+  std::vector<float> uvs;
+  for (const auto& [attribute, accessor] : primitive.attributes) {
+    if (attribute == "NORMAL") {
+      normals = readAccessor<float>(accessor, where + " NORMAL", TINYGLTF_TYPE_VEC3, Components::Float);
+    } else if (attribute == "TEXCOORD_0") {
+      uvs = readAccessor<float>(accessor, where + " TEXCOORD_0", TINYGLTF_TYPE_VEC2,
+                                Components::FloatOrNormalizedUnsigned);
+    } else if (attribute != "POSITION") {
+      ignoredAttributes_.insert(attribute);
+    }
+  }
+  if ((!normals.empty() && normals.size() / 3 != vertexCount) ||
+      (!uvs.empty() && uvs.size() / 2 != vertexCount)) {
+    fail(where + " has NORMAL or TEXCOORD_0 with a different count than POSITION (" +
+         std::to_string(vertexCount) + "); all attributes of a primitive must have the same count");
+  }
+  if (!primitive.targets.empty()) hasMorphTargets_ = true;
+
+  std::vector<uint32_t> indices;
+  if (primitive.indices >= 0) {
+    indices = readAccessor<uint32_t>(primitive.indices, where + " indices", TINYGLTF_TYPE_SCALAR,
+                                     Components::Index);
+    for (size_t i = 0; i < indices.size(); ++i) {
+      if (indices[i] >= vertexCount) {
+        fail(where + " has index " + std::to_string(indices[i]) + " at position " + std::to_string(i) +
+             ", but only " + std::to_string(vertexCount) + " vertices. The file is corrupt; re-export it.");
+      }
+    }
+  } else {
+    indices.resize(vertexCount);
+    std::iota(indices.begin(), indices.end(), 0u);
+  }
+  const std::vector<uint32_t> triangles = toTriangleList(primitive.mode, indices, where);
+  if (triangles.empty()) {
+    warn(where + " has no complete triangle, so it is skipped");
+    return;
+  }
+
+  // glTF: a primitive without normals is shaded flat, so every triangle gets its own vertices.
+  const size_t addedVertices = normals.empty() ? triangles.size() : vertexCount;
+  if (scene_.vertices.size() + addedVertices > std::numeric_limits<uint32_t>::max() ||
+      scene_.indices.size() + triangles.size() > std::numeric_limits<uint32_t>::max()) {
+    fail("has more than 2^32 vertices or indices in total, beyond what 32-bit indices can address");
+  }
+  Primitive out;
+  out.firstIndex = uint32_t(scene_.indices.size());
+  out.indexCount = uint32_t(triangles.size());
+  out.vertexOffset = uint32_t(scene_.vertices.size());
+  out.material = materialFor(primitive.material, where);
+  auto vertex = [&](uint32_t i) {
+    Vertex v{};
+    v.position = glm::make_vec3(&positions[size_t(i) * 3]);
+    if (!normals.empty()) v.normal = glm::make_vec3(&normals[size_t(i) * 3]);
+    if (!uvs.empty()) v.uv = glm::make_vec2(&uvs[size_t(i) * 2]);
+    return v;
+  };
+  if (!normals.empty()) {
+    for (uint32_t i = 0; i < vertexCount; ++i) scene_.vertices.push_back(vertex(i));
+    scene_.indices.insert(scene_.indices.end(), triangles.begin(), triangles.end());
+  } else {
+    for (size_t t = 0; t < triangles.size(); t += 3) {
+      Vertex corners[3] = {vertex(triangles[t]), vertex(triangles[t + 1]), vertex(triangles[t + 2])};
+      const glm::vec3 normal = unitOr(glm::cross(glm::dvec3(corners[1].position - corners[0].position),
+                                                 glm::dvec3(corners[2].position - corners[0].position)),
+                                      glm::vec3(0.0f, 0.0f, 1.0f));
+      for (Vertex& corner : corners) {
+        corner.normal = normal;
+        scene_.indices.push_back(uint32_t(scene_.vertices.size()) - out.vertexOffset);
+        scene_.vertices.push_back(corner);
+      }
+    }
+  }
+  mesh.primitives.push_back(out);
+}
+
+std::vector<uint32_t> GltfImporter::toTriangleList(int mode, const std::vector<uint32_t>& indices,
+                                                   const std::string& where) {
+  std::vector<uint32_t> triangles;
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    const size_t extra = indices.size() % 3;
+    if (extra != 0)
+      warn(where + " has " + std::to_string(extra) + " indices after its last triangle; ignored");
+    triangles.assign(indices.begin(), indices.end() - std::ptrdiff_t(extra));
+    return triangles;
+  }
+  if (indices.size() < 3) return triangles;
+  triangles.reserve((indices.size() - 2) * 3);
+  for (size_t i = 0; i + 2 < indices.size(); ++i) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      // Every other strip triangle swaps its first two corners to keep the winding consistent.
+      const size_t odd = i % 2;
+      triangles.insert(triangles.end(), {indices[i + odd], indices[i + 1 - odd], indices[i + 2]});
+    } else {
+      triangles.insert(triangles.end(), {indices[i + 1], indices[i + 2], indices[0]});
+    }
+  }
+  return triangles;
+}
+
+uint32_t GltfImporter::materialFor(int material, const std::string& where) {
+  if (material >= 0) {
+    if (size_t(material) >= model_.materials.size()) {
+      fail(where + " uses material " + std::to_string(material) + ", but the file has " +
+           std::to_string(model_.materials.size()) + " materials");
+    }
+    return uint32_t(material);
+  }
+  if (!defaultMaterial_) {
+    Material fallback;  // the glTF default material: white, metallic 1, roughness 1
+    fallback.name = "gltf-default-material";
+    scene_.materials.push_back(fallback);
+    defaultMaterial_ = uint32_t(scene_.materials.size() - 1);
+  }
+  return *defaultMaterial_;
+}
+
+void GltfImporter::placeNodes() {
+  std::vector<int> roots;
+  if (model_.defaultScene >= 0) {
+    if (size_t(model_.defaultScene) >= model_.scenes.size()) {
+      fail("its default scene is " + std::to_string(model_.defaultScene) + ", but the file has " +
+           std::to_string(model_.scenes.size()) + " scenes");
+    }
+    roots = model_.scenes[size_t(model_.defaultScene)].nodes;
+  } else if (!model_.scenes.empty()) {
+    roots = model_.scenes[0].nodes;
+  } else {
+    std::vector<bool> isChild(model_.nodes.size(), false);
+    for (const tinygltf::Node& node : model_.nodes) {
+      for (int child : node.children) {
+        if (child >= 0 && size_t(child) < isChild.size()) isChild[size_t(child)] = true;
+      }
+    }
+    for (size_t i = 0; i < model_.nodes.size(); ++i) {
+      if (!isChild[i]) roots.push_back(int(i));
+    }
+  }
+
+  // Depth-first with an explicit stack: a deep chain of nodes must not overflow the call stack.
+  std::vector<bool> visited(model_.nodes.size(), false);
+  std::vector<std::pair<int, glm::dmat4>> stack;
+  for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.emplace_back(*root, glm::dmat4(1.0));
+  while (!stack.empty()) {
+    const auto [index, parentWorld] = stack.back();
+    stack.pop_back();
+    if (index < 0 || size_t(index) >= model_.nodes.size()) {
+      fail("refers to node " + std::to_string(index) + ", but the file has " +
+           std::to_string(model_.nodes.size()) + " nodes");
+    }
+    if (visited[size_t(index)]) {
+      fail("node " + std::to_string(index) +
+           " is reached twice (a cycle, or a node with two parents); glTF nodes must form trees");
+    }
+    visited[size_t(index)] = true;
+    const tinygltf::Node& node = model_.nodes[size_t(index)];
+    const glm::dmat4 world = parentWorld * localTransform(node, index);
+    for (int column = 0; column < 4; ++column) {
+      if (glm::any(glm::isnan(world[column])) || glm::any(glm::isinf(world[column]))) {
+        fail("node " + std::to_string(index) + " has a world transform that is infinite or NaN");
+      }
+    }
+    if (node.mesh >= 0) {
+      if (size_t(node.mesh) >= model_.meshes.size()) {
+        fail("node " + std::to_string(index) + " uses mesh " + std::to_string(node.mesh) +
+             ", but the file has " + std::to_string(model_.meshes.size()) + " meshes");
+      }
+      scene_.instances.push_back({uint32_t(node.mesh), glm::mat4(world)});
+    }
+    if (node.camera >= 0) addCamera(node.camera, index, world);
+    addLight(node, index, world);
+    for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
+      stack.emplace_back(*child, world);
+    }
+  }
+}
+
+glm::dmat4 GltfImporter::localTransform(const tinygltf::Node& node, int index) const {
+  const std::string name = "node " + std::to_string(index);
+  if (!node.matrix.empty()) {
+    if (node.matrix.size() != 16)
+      fail(name + " has a matrix of " + std::to_string(node.matrix.size()) + " numbers, not 16");
+    return glm::make_mat4(node.matrix.data());  // glTF matrices are column-major, like glm's
+  }
+  auto checkSize = [&](const std::vector<double>& values, size_t expected, const char* what) {
+    if (!values.empty() && values.size() != expected) {
+      fail(name + " has a " + what + " of " + std::to_string(values.size()) + " numbers, not " +
+           std::to_string(expected));
+    }
+  };
+  checkSize(node.translation, 3, "translation");
+  checkSize(node.rotation, 4, "rotation");
+  checkSize(node.scale, 3, "scale");
+  glm::dmat4 transform(1.0);
+  if (!node.translation.empty())
+    transform = glm::translate(transform, glm::make_vec3(node.translation.data()));
+  if (!node.rotation.empty()) {
+    const glm::dquat rotation(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+    const double length = glm::length(rotation);
+    if (std::isfinite(length) && length > 1e-12) transform *= glm::mat4_cast(rotation / length);
+  }
+  if (!node.scale.empty()) transform = glm::scale(transform, glm::make_vec3(node.scale.data()));
+  return transform;
+}
+
+void GltfImporter::addLight(const tinygltf::Node& node, int nodeIndex, const glm::dmat4& world) {
+  const auto extension = node.extensions.find("KHR_lights_punctual");
+  if (extension == node.extensions.end()) return;
+  const tinygltf::Value& lightIndex = extension->second.Get("light");
+  const int index = lightIndex.IsNumber() ? lightIndex.GetNumberAsInt() : -1;
+  if (index < 0 || size_t(index) >= model_.lights.size()) {
+    fail("node " + std::to_string(nodeIndex) + " refers to KHR_lights_punctual light " +
+         std::to_string(index) + ", but the file defines " + std::to_string(model_.lights.size()) +
+         " lights");
+  }
+  const tinygltf::Light& in = model_.lights[size_t(index)];
+  const std::string name = "light " + (in.name.empty() ? std::to_string(index) : inQuotes(in.name));
+  if (in.type != "point" && in.type != "spot") {
+    warn(name + " is of type '" + in.type + "'; only point and spot lights are supported, so it is skipped");
+    return;
+  }
+  if (!in.color.empty() && in.color.size() != 3)
+    fail(name + " has a color of " + std::to_string(in.color.size()) + " numbers, not 3");
+  if (!std::isfinite(in.intensity) || in.intensity < 0.0)
+    fail(name + " has an intensity that is negative or not finite");
+  if (!std::isfinite(in.range) || in.range < 0.0) fail(name + " has a range that is negative or not finite");
+
+  Light out;
+  out.type = in.type == "spot" ? LightType::Spot : LightType::Point;
+  out.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  out.direction = unitOr(glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, 0.0f, -1.0f));
+  if (!in.color.empty()) out.color = glm::make_vec3(in.color.data());
+  out.intensity = float(in.intensity);
+  // tinygltf stores an absent range as 0, which the extension forbids as a value.
+  out.range = in.range > 0.0 ? float(in.range) : rangeForUnboundedLight(out.intensity, out.color);
+  if (out.type == LightType::Spot) {
+    constexpr double kHalfPi = 1.5707963267948966;
+    const double outer = std::clamp(in.spot.outerConeAngle, 1e-4, kHalfPi);
+    const double inner = std::clamp(in.spot.innerConeAngle, 0.0, outer);
+    if (outer != in.spot.outerConeAngle || inner != in.spot.innerConeAngle) {
+      warn(name + " has cone angles outside 0 <= inner <= outer <= pi/2; clamped");
+    }
+    out.innerConeAngle = float(inner);
+    out.outerConeAngle = float(outer);
+  }
+  scene_.lights.push_back(out);
+}
+
+void GltfImporter::addCamera(int cameraIndex, int nodeIndex, const glm::dmat4& world) {
+  if (size_t(cameraIndex) >= model_.cameras.size()) {
+    fail("node " + std::to_string(nodeIndex) + " uses camera " + std::to_string(cameraIndex) +
+         ", but the file has " + std::to_string(model_.cameras.size()) + " cameras");
+  }
+  const tinygltf::Camera& in = model_.cameras[size_t(cameraIndex)];
+  Camera out;
+  out.name = in.name.empty() ? "gltf-camera-" + std::to_string(cameraIndex) : in.name;
+  if (in.type != "perspective") {
+    warn("camera " + inQuotes(out.name) + " is " + in.type +
+         "; only perspective cameras are supported, so it is skipped");
+    return;
+  }
+  const double yfov = in.perspective.yfov;
+  if (!(yfov > 0.0 && yfov < 3.14159))
+    fail("camera " + inQuotes(out.name) + " has yfov " + std::to_string(yfov) +
+         "; it must be between 0 and pi");
+  const glm::dmat3 rotation(world);
+  out.eye = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  out.target = out.eye + unitOr(rotation * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, 0.0f, -1.0f));
+  out.up = unitOr(rotation * glm::dvec3(0.0, 1.0, 0.0), glm::vec3(0.0f, 1.0f, 0.0f));
+  out.yfov = float(yfov);
+  scene_.cameras.push_back(out);
+}
+
+void GltfImporter::warnAboutIgnoredData() {
+  if (!ignoredAttributes_.empty()) {
+    warn("vertex attribute(s) " + describeList(ignoredAttributes_) +
+         " are ignored; only POSITION, NORMAL and TEXCOORD_0 are used");
+  }
+  if (usesOtherTexCoords_)
+    warn("some textures use a texCoord other than 0; TEXCOORD_0 is used for all of them");
+  if (hasMorphTargets_) warn("morph targets are ignored; meshes are drawn in their base shape");
+  if (!model_.skins.empty()) warn("skins are ignored; skinned meshes are drawn in their bind pose");
+  if (!model_.animations.empty()) warn("animations are ignored; the scene is drawn in its rest pose");
+}
+
+}  // namespace
+
+Scene loadGltf(const std::filesystem::path& file, LoadReport* report) {
+  GltfImporter importer(file);
+  Scene scene = importer.run();
+  if (report != nullptr) {
+    for (std::string& warning : importer.takeWarnings()) report->warnings.push_back(std::move(warning));
+  }
+  return scene;
+}
+
+}  // namespace lll
