@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "app/commands.h"
+#include "bench/bench.h"
 #include "scene/errors.h"
 
 namespace {
@@ -51,13 +52,32 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(CLI::Range(0u, 1000000u));
 }
 
+void addBenchOptions(CLI::App& cmd, lll::bench::BenchOptions& options) {
+  cmd.add_option("--suite", options.suites, "suite to run, repeatable (default: every suite)")
+      ->check(CLI::IsMember(lll::bench::suiteNames()));
+  cmd.add_flag("--quick", options.quick,
+               "tiny sizes and few frames: a suite runs in under a minute on lavapipe");
+  cmd.add_flag("--full-forward", options.fullForward,
+               "on a CPU device, also run forward over more than 4096 lights (hours)");
+  cmd.add_option("--out", options.outDir, "directory for results.json, results.csv, summary.md and charts")
+      ->capture_default_str();
+  cmd.add_option("--frames", options.timedFrames, "timed frames per scenario (default 30; 2 with --quick)")
+      ->check(CLI::Range(1u, 100000u));
+  cmd.add_option("--warmup", options.warmupFrames, "untimed frames first (default 5; 1 with --quick)")
+      ->check(CLI::Range(0u, 100000u));
+  cmd.add_option("--device", options.device.device, "auto | gpu | cpu | INDEX (see `lll devices`)");
+  cmd.add_flag("--validate", options.device.validation,
+               "Khronos validation layers on; any message fails the run");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"lll: real-time rendering with many dynamic lights (Light Linked List)"};
   app.require_subcommand(1);
   lll::RenderJob job;
-  if (std::getenv("LLL_VALIDATE")) job.device.validation = true;
+  lll::bench::BenchOptions bench;
+  if (std::getenv("LLL_VALIDATE")) job.device.validation = bench.device.validation = true;
 
   CLI::App* render = app.add_subcommand("render", "render a scene off-screen to PNG (and HDR, stats)");
   addRenderOptions(*render, job);
@@ -68,6 +88,9 @@ int main(int argc, char** argv) {
   CLI::App* scenes = app.add_subcommand("scenes", "list the built-in scenes");
   CLI::App* techniques = app.add_subcommand("techniques", "list the lighting techniques");
   CLI::App* devices = app.add_subcommand("devices", "list the Vulkan devices");
+  CLI::App* benchCmd = app.add_subcommand(
+      "bench", "time suites of scenarios x techniques; write results.json/.csv, summary.md, charts");
+  addBenchOptions(*benchCmd, bench);
 
   try {
     app.parse(argc, argv);
@@ -80,6 +103,7 @@ int main(int argc, char** argv) {
     if (*scenes) return lll::printScenes();
     if (*techniques) return lll::printTechniques();
     if (*devices) return lll::printDevices();
+    if (*benchCmd) return lll::bench::runBenchCommand(bench);
   } catch (const lll::InputError& e) {
     fmt::print(stderr, "lll: error: {}\n", e.what());
     return 2;

@@ -1,0 +1,206 @@
+#include "bench/bench.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "bench/progress.h"
+#include "lighting/technique.h"
+#include "render/renderer.h"
+#include "scene/errors.h"
+
+namespace lll::bench {
+
+namespace {
+
+// A scenario that cannot run in this build or on this device: recorded as skipped.
+class NotAvailable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct FrameCounts {
+  uint32_t warmup = 0;
+  uint32_t timed = 0;
+};
+
+// Loads scenes as scenarios ask for them and keeps the last: suites put scenarios that share a
+// scene next to each other, so each scene is built once without holding them all in memory.
+class SceneCache {
+ public:
+  const Scene& get(const SceneRequest& request) {
+    if (!scene_ || request.scene != key_.scene || request.extraLights != key_.extraLights ||
+        request.seed != key_.seed) {
+      scene_.reset();
+      scene_ = loadScene(request);
+      key_ = request;
+    }
+    return *scene_;
+  }
+
+ private:
+  SceneRequest key_;
+  std::optional<Scene> scene_;
+};
+
+void requireRegistered(const std::string& technique) {
+  std::vector<std::string> names;
+  for (const TechniqueInfo& t : techniques()) names.push_back(t.name);
+  if (std::find(names.begin(), names.end(), technique) == names.end())
+    throw NotAvailable(
+        fmt::format("technique {} is not built yet (built: {})", technique, fmt::join(names, ", ")));
+}
+
+// Until the particle system lands the renderer ignores RenderSettings::particles; a smoke
+// scenario whose frame has no particle pass would time the scene without smoke.
+void requireParticlePass(const Scenario& s, const FrameResult& frame) {
+  if (s.settings.particles.empty()) return;
+  for (const PassTime& pass : frame.passes)
+    if (pass.name.find("particle") != std::string::npos) return;
+  throw NotAvailable(fmt::format("particles not built yet: {} drew no particle pass", s.settings.technique));
+}
+
+// The GPU memory of the lighting data: the depth target every technique reads (4 B/px), plus what
+// the technique reports under keys ending in "_bytes" (link pool, heads, G-buffers, ...).
+NamedValues lightingMemory(const RenderSettings& settings, const NamedValues& techniqueStats) {
+  NamedValues memory = {{"depth_bytes", 4.0 * settings.width * settings.height}};
+  for (const auto& [key, value] : techniqueStats)
+    if (key.ends_with("_bytes")) memory.emplace_back(key, value);
+  return memory;
+}
+
+ScenarioResult measure(Context& context, const Scene& scene, const Scenario& s, FrameCounts counts) {
+  ScenarioResult r;
+  r.scenario = s;
+  r.lightCount = scene.lights.size();
+  Renderer renderer(context, scene, s.settings);
+  std::vector<FrameResult> timed;
+  for (uint32_t i = 0; i < counts.warmup + counts.timed; ++i) {
+    FrameResult frame = renderer.renderFrame(false);
+    if (i == 0) requireParticlePass(s, frame);
+    if (i >= counts.warmup) timed.push_back(std::move(frame));
+  }
+  r.passes = summarizePasses(timed);
+  for (const FrameResult& frame : timed) r.rerenders += frame.rerenders;
+  r.techniqueStats = renderer.technique().stats();
+  r.memory = lightingMemory(s.settings, r.techniqueStats);
+  return r;
+}
+
+ScenarioResult runScenario(Context& context, SceneCache& scenes, const Scenario& s, FrameCounts counts) {
+  ScenarioResult r;
+  r.scenario = s;
+  try {
+    if (!s.skip.empty()) throw NotAvailable(s.skip);
+    requireRegistered(s.settings.technique);
+    r = measure(context, scenes.get(s.scene), s, counts);
+  } catch (const NotAvailable& e) {
+    r.status = Status::Skipped;
+    r.message = e.what();
+  } catch (const InputError& e) {
+    r.status = Status::Skipped;
+    r.message = e.what();
+  } catch (const std::exception& e) {
+    r.status = Status::Failed;
+    r.message = e.what();
+  }
+  r.date = isoDate();
+  return r;
+}
+
+// The suites asked for, each once, in the order given; every suite when none is named.
+std::vector<std::string> chosenSuites(const BenchOptions& options) {
+  if (options.suites.empty()) return suiteNames();
+  std::vector<std::string> suites;
+  for (const std::string& suite : options.suites) {
+    if (std::find(suiteNames().begin(), suiteNames().end(), suite) == suiteNames().end())
+      throw InputError(
+          fmt::format("--suite {}: unknown suite (known: {})", suite, fmt::join(suiteNames(), ", ")));
+    if (std::find(suites.begin(), suites.end(), suite) == suites.end()) suites.push_back(suite);
+  }
+  return suites;
+}
+
+BenchReport reportHeader(const Context& context, const BenchOptions& options) {
+  BenchReport report;
+  report.device = context.info();
+  report.commit = gitCommit();
+  report.date = isoDate();
+  report.quick = options.quick;
+  report.timestamps = context.timestampPeriodNs() > 0.0;
+  report.warmupFrames = options.warmupFrames.value_or(options.quick ? kQuickWarmupFrames : kWarmupFrames);
+  report.timedFrames = options.timedFrames.value_or(options.quick ? kQuickTimedFrames : kTimedFrames);
+  report.suites = chosenSuites(options);
+  return report;
+}
+
+}  // namespace
+
+const char* statusName(Status status) {
+  switch (status) {
+    case Status::Ok:
+      return "ok";
+    case Status::Skipped:
+      return "skipped";
+    case Status::Failed:
+      return "failed";
+  }
+  return "unknown";
+}
+
+double ScenarioResult::memoryBytes() const {
+  double sum = 0.0;
+  for (const auto& [key, bytes] : memory) sum += bytes;
+  return sum;
+}
+
+const PassSummary* ScenarioResult::pass(const std::string& name) const {
+  for (const PassSummary& p : passes)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+BenchReport runBench(Context& context, const BenchOptions& options) {
+  BenchReport report = reportHeader(context, options);
+  if (report.timedFrames == 0) throw InputError("--frames 0: at least one timed frame is needed");
+  const SuiteOptions suiteOptions{options.quick, options.fullForward, context.isCpuDevice(),
+                                  std::max(1u, options.shrink)};
+  std::vector<Scenario> scenarios;
+  for (const std::string& suite : report.suites) {
+    const std::vector<Scenario> built = buildSuite(suite, suiteOptions);
+    scenarios.insert(scenarios.end(), built.begin(), built.end());
+  }
+  const FrameCounts counts{report.warmupFrames, report.timedFrames};
+  SceneCache scenes;
+  ProgressBar progress(scenarios.size());
+  for (size_t i = 0; i < scenarios.size(); ++i) {
+    const Scenario& s = scenarios[i];
+    const std::string label = fmt::format("{} {} {}", s.suite, techniqueLabel(s.settings), s.name);
+    progress.start(i, label);
+    report.results.push_back(runScenario(context, scenes, s, counts));
+    const ScenarioResult& r = report.results.back();
+    if (r.status != Status::Ok)
+      progress.note(fmt::format("lll: bench: {} {}: {}", label, statusName(r.status), r.message));
+  }
+  progress.finish();
+  report.validationMessages = context.validationMessages().size();
+  return report;
+}
+
+int runBenchCommand(const BenchOptions& options) {
+  chosenSuites(options);  // reject a bad suite name before starting Vulkan
+  Context context(options.device);
+  const BenchReport report = runBench(context, options);
+  writeReport(report, options.outDir);
+  const auto failed = std::count_if(report.results.begin(), report.results.end(),
+                                    [](const ScenarioResult& r) { return r.status == Status::Failed; });
+  fmt::print(stderr, "lll: bench: {} scenarios ({} failed) written to {}\n", report.results.size(), failed,
+             options.outDir.string());
+  if (report.validationMessages > 0)
+    fmt::print(stderr, "lll: error: {} validation message(s); see above\n", report.validationMessages);
+  return failed > 0 || report.validationMessages > 0 ? 1 : 0;
+}
+
+}  // namespace lll::bench

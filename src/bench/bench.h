@@ -1,0 +1,81 @@
+#pragma once
+// `lll bench`: runs suites of scenarios (scene x size x technique x options), times every pass
+// with GPU timestamps over warm-up plus timed frames, and writes results.json, results.csv,
+// summary.md and charts into one directory.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bench/scenario.h"
+#include "gpu/context.h"
+#include "render/stats.h"
+
+namespace lll::bench {
+
+struct BenchOptions {
+  std::vector<std::string> suites;  // empty: every suite
+  bool quick = false;
+  bool fullForward = false;
+  std::optional<uint32_t> warmupFrames;  // default kWarmupFrames (kQuickWarmupFrames with quick)
+  std::optional<uint32_t> timedFrames;   // default kTimedFrames (kQuickTimedFrames with quick)
+  uint32_t shrink = 1;                   // divides every scenario's width and height (tests)
+  std::filesystem::path outDir = "bench-out";
+  ContextOptions device;
+};
+
+// Warm-up lets the LLL grow its link pool and the driver settle; the median of the timed frames
+// is what the tables show.
+inline constexpr uint32_t kWarmupFrames = 5;
+inline constexpr uint32_t kTimedFrames = 30;
+inline constexpr uint32_t kQuickWarmupFrames = 1;
+inline constexpr uint32_t kQuickTimedFrames = 2;
+
+enum class Status { Ok, Skipped, Failed };
+const char* statusName(Status status);
+
+using NamedValues = std::vector<std::pair<std::string, double>>;
+
+struct ScenarioResult {
+  Scenario scenario;
+  Status status = Status::Ok;
+  std::string message;  // why it was skipped or failed
+  uint64_t lightCount = 0;
+  std::vector<PassSummary> passes;  // each pass, then "frame"
+  NamedValues memory;               // bytes of the lighting data: depth + the technique's "*_bytes"
+  NamedValues techniqueStats;       // everything Technique::stats() reported
+  uint32_t rerenders = 0;           // over the timed frames
+  std::string date;                 // when it finished, ISO 8601 UTC
+
+  double memoryBytes() const;
+  // The named pass, or nullptr when the scenario has none of that name.
+  const PassSummary* pass(const std::string& name) const;
+};
+
+struct BenchReport {
+  DeviceInfo device;
+  std::string commit;
+  std::string date;  // when the run started
+  bool quick = false;
+  bool timestamps = false;  // false: the device has no GPU timestamps and every time is zero
+  uint32_t warmupFrames = 0;
+  uint32_t timedFrames = 0;
+  std::vector<std::string> suites;
+  std::vector<ScenarioResult> results;
+  size_t validationMessages = 0;
+};
+
+// Runs the suites on `context`, showing progress on stderr. Scenarios that cannot run here (an
+// unregistered technique, too many lights, particles not built) are recorded as skipped; those
+// that throw anything else are recorded as failed. Throws InputError for an unknown suite.
+BenchReport runBench(Context& context, const BenchOptions& options);
+
+// Writes results.json, results.csv, summary.md and, when gnuplot is installed, the PNG charts.
+void writeReport(const BenchReport& report, const std::filesystem::path& dir);
+
+// The CLI command: creates the context, runs, writes. Returns 0, or 1 when a scenario failed or
+// validation spoke under --validate.
+int runBenchCommand(const BenchOptions& options);
+
+}  // namespace lll::bench

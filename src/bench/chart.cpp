@@ -1,0 +1,212 @@
+// PNG charts through gnuplot (Debian's gnuplot-nox, pngcairo terminal): each chart is a data file
+// plus a section of charts.gp in the output directory, so a reader can restyle and redraw them.
+#include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "bench/report.h"
+#include "scene/errors.h"
+
+extern char** environ;
+
+namespace lll::bench {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Results = std::vector<const ScenarioResult*>;
+
+constexpr const char* kTerminal = "set terminal pngcairo noenhanced size 1280,800 font 'sans,11'";
+
+// A double-quoted gnuplot string (only there does \n mean a newline).
+std::string gnuplotString(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) out += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  return out + "\"";
+}
+
+Results measured(const BenchReport& report, const std::string& suite) {
+  Results results;
+  for (const ScenarioResult& r : report.results)
+    if (r.scenario.suite == suite && r.status == Status::Ok && r.pass("frame")) results.push_back(&r);
+  return results;
+}
+
+std::vector<std::string> uniqueLabels(const Results& results) {
+  std::vector<std::string> labels;
+  for (const ScenarioResult* r : results) {
+    const std::string label = techniqueLabel(r->scenario.settings);
+    if (std::find(labels.begin(), labels.end(), label) == labels.end()) labels.push_back(label);
+  }
+  return labels;
+}
+
+std::string subtitle(const BenchReport& report) {
+  return fmt::format("{}, {}, commit {}", report.device.name, report.device.driver, report.commit);
+}
+
+void writeFile(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  if (!out) throw InputError(fmt::format("--out: cannot write {}", path.string()));
+  out << text;
+}
+
+// Frame time against light count, one line per technique, log-log, min-max as error bars.
+std::optional<std::string> scalingChart(const BenchReport& report, const fs::path& dir) {
+  const Results results = measured(report, "scaling");
+  if (results.empty()) return std::nullopt;
+  std::string data, plots;
+  int index = 0;
+  for (const std::string& label : uniqueLabels(results)) {
+    data += fmt::format("# {}: lights median_ms min_ms max_ms\n", label);
+    for (const ScenarioResult* r : results) {
+      if (techniqueLabel(r->scenario.settings) != label) continue;
+      const PassSummary& f = *r->pass("frame");
+      data += fmt::format("{} {} {} {}\n", r->lightCount, f.medianMs, f.minMs, f.maxMs);
+    }
+    data += "\n\n";
+    plots += fmt::format("{}'scaling.dat' index {} using 1:2:3:4 with yerrorlines lw 2 pt 7 title {}",
+                         index ? ", " : "plot ", index, gnuplotString(label));
+    ++index;
+  }
+  writeFile(dir / "scaling.dat", data);
+  const RenderSettings& s = results.front()->scenario.settings;
+  return fmt::format(
+      "set output 'scaling.png'\n"
+      "set title {}\nset xlabel 'lights in the scene (its own plus the random ones added)'\n"
+      "set ylabel 'GPU frame time, ms (median; bars: min to max)'\n"
+      "set logscale xy\nset grid xtics ytics mxtics mytics\nset key top left box opaque\n{}\n",
+      gnuplotString(fmt::format("Frame time against light count: {}, {}x{}\n{}",
+                                results.front()->scenario.scene.scene, s.width, s.height, subtitle(report))),
+      plots);
+}
+
+// Per-pass GPU time stacked into one bar per technique; one panel per scene and resolution, each
+// with its own scale (4K with 256 lights would flatten 1080p with 16).
+std::optional<std::string> threelChart(const BenchReport& report, const fs::path& dir) {
+  const Results results = measured(report, "threel");
+  if (results.empty()) return std::nullopt;
+  std::vector<std::string> passes, groups;
+  for (const ScenarioResult* r : results) {
+    for (const PassSummary& p : r->passes)
+      if (p.name != "frame" && std::find(passes.begin(), passes.end(), p.name) == passes.end())
+        passes.push_back(p.name);
+    if (std::find(groups.begin(), groups.end(), r->scenario.name) == groups.end())
+      groups.push_back(r->scenario.name);
+  }
+  std::string data;
+  for (const std::string& group : groups) {
+    data += fmt::format("# {}: technique {}\n", group, fmt::join(passes, " "));
+    for (const ScenarioResult* r : results) {
+      if (r->scenario.name != group) continue;
+      data += gnuplotString(techniqueLabel(r->scenario.settings));
+      for (const std::string& name : passes)
+        data += fmt::format(" {}", r->pass(name) ? r->pass(name)->medianMs : 0.0);
+      data += "\n";
+    }
+    data += "\n\n";
+  }
+  writeFile(dir / "threel.dat", data);
+  const size_t columns = std::min<size_t>(groups.size(), 2), rows = (groups.size() + 1) / 2;
+  std::string gp = fmt::format(
+      "set output 'threel.png'\nset multiplot layout {},{} title {}\n"
+      "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.85 border -1\n"
+      "set boxwidth 0.6\nset grid ytics\nset ylabel 'GPU time, ms (median)'\nset yrange [0:*]\n"
+      "set key top left box opaque\n",
+      rows, columns,
+      gnuplotString(fmt::format("ThreeL benchmark: per-pass GPU time, all lights reach every pixel\n{}",
+                                subtitle(report))));
+  for (size_t g = 0; g < groups.size(); ++g) {
+    gp += fmt::format("set title {}\nplot ", gnuplotString(groups[g]));
+    for (size_t p = 0; p < passes.size(); ++p)
+      gp += fmt::format("{}'threel.dat' index {} using {}{} title {}", p ? ", " : "", g, p + 2,
+                        p ? "" : ":xtic(1)", gnuplotString(passes[p]));
+    gp += "\n";
+  }
+  return gp + "unset multiplot\n";
+}
+
+// Frame time and light-list memory against tile size, on two y axes.
+std::optional<std::string> tilesChart(const BenchReport& report, const fs::path& dir) {
+  const Results results = measured(report, "tiles");
+  if (results.empty()) return std::nullopt;
+  std::string data = "# tile median_ms min_ms max_ms memory_mib\n";
+  for (const ScenarioResult* r : results) {
+    const PassSummary& f = *r->pass("frame");
+    data += fmt::format("{} {} {} {} {}\n", r->scenario.settings.tileSize, f.medianMs, f.minMs, f.maxMs,
+                        r->memoryBytes() / (1024.0 * 1024.0));
+  }
+  writeFile(dir / "tiles.dat", data);
+  const ScenarioResult& first = *results.front();
+  return fmt::format(
+      "set output 'tiles.png'\nset title {}\nset xlabel 'tile size, pixels'\nset logscale x 2\n"
+      "set xtics (1, 2, 4, 8, 16)\nset ylabel 'GPU frame time, ms (median; bars: min to max)'\n"
+      "set y2label 'GPU memory of the lighting data, MiB'\nset ytics nomirror\nset y2tics\n"
+      "set yrange [0:*]\nset y2range [0:*]\nset grid xtics ytics\nset key top center box opaque\n"
+      "plot 'tiles.dat' using 1:2:3:4 with yerrorlines lw 2 pt 7 title 'frame time', "
+      "'' using 1:5 axes x1y2 with linespoints lw 2 pt 5 dt 2 title 'memory'\n",
+      gnuplotString(fmt::format("Tile size: {} with {} lights, {}x{}, {}\n{}", first.scenario.scene.scene,
+                                first.lightCount, first.scenario.settings.width,
+                                first.scenario.settings.height, techniqueLabel(first.scenario.settings),
+                                subtitle(report))));
+}
+
+bool onPath(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  std::istringstream dirs(path ? path : "");
+  for (std::string dir; std::getline(dirs, dir, ':');)
+    if (!dir.empty() && ::access((fs::path(dir) / program).c_str(), X_OK) == 0) return true;
+  return false;
+}
+
+// Runs gnuplot on the script with `dir` as its working directory; true when it exits with 0.
+bool runGnuplot(const fs::path& dir) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
+  char program[] = "gnuplot", script[] = "charts.gp";
+  char* argv[] = {program, script, nullptr};
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, program, &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  int status = 0;
+  return spawned == 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+}  // namespace
+
+std::vector<fs::path> writeCharts(const BenchReport& report, const fs::path& dir) {
+  std::string script = std::string(kTerminal) + "\n";
+  std::vector<fs::path> charts;
+  using ChartFn = std::optional<std::string> (*)(const BenchReport&, const fs::path&);
+  for (const auto& [name, chart] : {std::pair<const char*, ChartFn>{"scaling.png", scalingChart},
+                                    {"threel.png", threelChart},
+                                    {"tiles.png", tilesChart}}) {
+    if (const auto section = chart(report, dir)) {
+      script += "reset\n" + *section;
+      charts.push_back(dir / name);
+    }
+  }
+  if (charts.empty()) return {};
+  writeFile(dir / "charts.gp", script);
+  if (!onPath("gnuplot")) {
+    fmt::print(stderr, "lll: warning: gnuplot not found: no PNG charts (charts.gp and its data are in {})\n",
+               dir.string());
+    return {};
+  }
+  if (!runGnuplot(dir)) {
+    fmt::print(stderr, "lll: warning: gnuplot failed on {}: some charts may be missing\n",
+               (dir / "charts.gp").string());
+    return {};
+  }
+  return charts;
+}
+
+}  // namespace lll::bench

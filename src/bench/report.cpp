@@ -1,0 +1,120 @@
+#include "bench/report.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "scene/errors.h"
+
+namespace lll::bench {
+
+namespace {
+
+std::ofstream openForWriting(const std::filesystem::path& path) {
+  std::ofstream out(path);
+  if (!out) throw InputError(fmt::format("--out: cannot write {}", path.string()));
+  return out;
+}
+
+nlohmann::json namedValues(const NamedValues& values) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [key, value] : values) j[key] = value;
+  return j;
+}
+
+nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
+  const Scenario& s = r.scenario;
+  nlohmann::json j = {
+      {"suite", s.suite},
+      {"scenario", s.name},
+      {"scene", s.scene.scene},
+      {"extra_lights", s.scene.extraLights},
+      {"seed", s.scene.seed},
+      {"lights", r.lightCount},
+      {"width", s.settings.width},
+      {"height", s.settings.height},
+      {"camera", s.settings.camera},
+      {"technique", s.settings.technique},
+      {"label", techniqueLabel(s.settings)},
+      {"fill", s.settings.technique == "lll" ? s.settings.lllFill : ""},
+      {"tile", s.settings.tileSize},
+      {"particles", s.settings.particles},
+      {"particle_count", s.settings.particleCount},
+      {"status", statusName(r.status)},
+      {"message", r.message},
+      {"device", report.device.name},
+      {"driver", report.device.driver},
+      {"commit", report.commit},
+      {"date", r.date},
+  };
+  nlohmann::json passes = nlohmann::json::array();
+  for (const PassSummary& p : r.passes)
+    passes.push_back({{"name", p.name}, {"median_ms", p.medianMs}, {"min_ms", p.minMs}, {"max_ms", p.maxMs}});
+  j["passes"] = passes;
+  j["memory_bytes"] = r.memoryBytes();
+  j["memory"] = namedValues(r.memory);
+  j["technique_stats"] = namedValues(r.techniqueStats);
+  j["rerenders"] = r.rerenders;
+  return j;
+}
+
+// RFC 4180: quote a field holding a comma, quote or newline (device names have commas).
+std::string csvField(const std::string& value) {
+  if (value.find_first_of(",\"\n") == std::string::npos) return value;
+  std::string quoted = "\"";
+  for (const char c : value) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
+void writeResultsJson(const BenchReport& report, const std::filesystem::path& path) {
+  nlohmann::json j = {
+      {"device", report.device.name},
+      {"device_type", report.device.type},
+      {"driver", report.device.driver},
+      {"vulkan", report.device.apiVersion},
+      {"commit", report.commit},
+      {"date", report.date},
+      {"quick", report.quick},
+      {"timestamps", report.timestamps},
+      {"warmup_frames", report.warmupFrames},
+      {"timed_frames", report.timedFrames},
+      {"suites", report.suites},
+      {"validation_messages", report.validationMessages},
+  };
+  nlohmann::json results = nlohmann::json::array();
+  for (const ScenarioResult& r : report.results) results.push_back(resultJson(report, r));
+  j["results"] = results;
+  openForWriting(path) << j.dump(2) << "\n";
+}
+
+void writeResultsCsv(const BenchReport& report, const std::filesystem::path& path) {
+  std::ofstream out = openForWriting(path);
+  out << "suite,scenario,scene,lights,width,height,technique,fill,tile,pass,median_ms,min_ms,max_ms,"
+         "memory_bytes,device,driver,commit,date\n";
+  for (const ScenarioResult& r : report.results) {
+    const Scenario& s = r.scenario;
+    const std::string fill = s.settings.technique == "lll" ? s.settings.lllFill : "";
+    for (const PassSummary& p : r.passes)
+      out << fmt::format("{},{},{},{},{},{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.0f},{},{},{},{}\n", s.suite,
+                         csvField(s.name), csvField(s.scene.scene), r.lightCount, s.settings.width,
+                         s.settings.height, s.settings.technique, fill, s.settings.tileSize, csvField(p.name),
+                         p.medianMs, p.minMs, p.maxMs, r.memoryBytes(), csvField(report.device.name),
+                         csvField(report.device.driver), report.commit, r.date);
+  }
+}
+
+void writeReport(const BenchReport& report, const std::filesystem::path& dir) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error)
+    throw InputError(fmt::format("--out {}: cannot create the directory: {}", dir.string(), error.message()));
+  writeResultsJson(report, dir / "results.json");
+  writeResultsCsv(report, dir / "results.csv");
+  writeSummaryMarkdown(report, dir / "summary.md");
+  writeCharts(report, dir);
+}
+
+}  // namespace lll::bench

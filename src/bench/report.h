@@ -1,0 +1,19 @@
+#pragma once
+// The files `lll bench` writes; writeReport (bench.h) calls them all.
+#include <filesystem>
+
+#include "bench/bench.h"
+
+namespace lll::bench {
+
+// Everything: run metadata, and per scenario its settings, status, per-pass times and memory.
+void writeResultsJson(const BenchReport& report, const std::filesystem::path& path);
+// One row per scenario x technique x pass that ran, for spreadsheets and plotting tools.
+void writeResultsCsv(const BenchReport& report, const std::filesystem::path& path);
+// Markdown tables per suite, headed by device, driver, commit and date.
+void writeSummaryMarkdown(const BenchReport& report, const std::filesystem::path& path);
+// PNG charts drawn by gnuplot from data files and a script left in `dir`; returns the PNGs
+// written, or none (with a warning on stderr) when gnuplot is missing or fails.
+std::vector<std::filesystem::path> writeCharts(const BenchReport& report, const std::filesystem::path& dir);
+
+}  // namespace lll::bench

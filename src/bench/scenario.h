@@ -1,0 +1,41 @@
+#pragma once
+// What `lll bench` measures: a scenario is one scene at one size rendered by one technique with
+// one set of options. A suite is a list of scenarios that answers one question (how does the frame
+// time grow with the light count, what does the tile size cost, ...).
+#include <string>
+#include <vector>
+
+#include "render/settings.h"
+#include "scene/scene_source.h"
+
+namespace lll::bench {
+
+struct Scenario {
+  std::string suite;
+  std::string name;  // what varies inside the suite: "threel16 1920x1080", "1024 lights", "tile 4"
+  SceneRequest scene;
+  RenderSettings settings;  // size, technique and its options, particles
+  std::string skip;         // why the suite leaves it out (recorded, not run); empty to run it
+};
+
+// "lll/ray" for the light linked list (its fill matters as much as the technique), else the name.
+std::string techniqueLabel(const RenderSettings& settings);
+
+struct SuiteOptions {
+  bool quick = false;        // tiny sizes and counts, so a suite runs on lavapipe in under a minute
+  bool fullForward = false;  // forward with more than kForwardLightLimitOnCpu lights on a CPU device
+  bool cpuDevice = false;    // lavapipe: hours per frame for brute force over tens of thousands of lights
+  uint32_t shrink = 1;       // divides every width and height (tests)
+};
+
+// Brute-force forward over more lights than this is skipped on a CPU device unless --full-forward.
+inline constexpr uint32_t kForwardLightLimitOnCpu = 4096;
+
+// The suites `lll bench --suite` accepts, in the order they run.
+const std::vector<std::string>& suiteNames();
+
+// The scenarios of one suite, ordered so that scenarios sharing a scene follow each other (the
+// runner loads each scene once). Throws InputError for an unknown suite name.
+std::vector<Scenario> buildSuite(const std::string& suite, const SuiteOptions& options);
+
+}  // namespace lll::bench

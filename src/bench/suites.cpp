@@ -1,0 +1,155 @@
+// The benchmark suites of issue 5. Techniques come from techniques() at run time, so a suite
+// grows by itself as techniques are registered; the ThreeL suite names "lll" explicitly and
+// records it as skipped while it is not built.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+
+#include "bench/scenario.h"
+#include "lighting/technique.h"
+#include "scene/builtin_scenes.h"
+#include "scene/errors.h"
+
+namespace lll::bench {
+
+namespace {
+
+struct Size {
+  uint32_t width;
+  uint32_t height;
+};
+
+const std::vector<std::string> kLllFills = {"shells", "ray", "compute"};
+
+// A scenario of `suite` rendering `scene` at `size` (shrunk for tests) with default settings.
+Scenario makeScenario(const std::string& suite, const std::string& name, const SceneRequest& scene, Size size,
+                      const SuiteOptions& options) {
+  Scenario s;
+  s.suite = suite;
+  s.name = name;
+  s.scene = scene;
+  s.settings.width = std::max(1u, size.width / options.shrink);
+  s.settings.height = std::max(1u, size.height / options.shrink);
+  return s;
+}
+
+// One copy of `base` per technique in `names`; "lll" expands to one per fill when `everyFill`.
+std::vector<Scenario> perTechnique(const Scenario& base, const std::vector<std::string>& names,
+                                   bool everyFill) {
+  std::vector<Scenario> out;
+  for (const std::string& name : names) {
+    Scenario s = base;
+    s.settings.technique = name;
+    if (name != "lll" || !everyFill) {
+      out.push_back(s);
+      continue;
+    }
+    for (const std::string& fill : kLllFills) {
+      s.settings.lllFill = fill;
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> registeredTechniques() {
+  std::vector<std::string> names;
+  for (const TechniqueInfo& t : techniques()) names.push_back(t.name);
+  return names;
+}
+
+void append(std::vector<Scenario>& to, const std::vector<Scenario>& from) {
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+// ThreeL's test: every light reaches every pixel, at 1080p and 4K, tile 8, LLL fills vs forward.
+std::vector<Scenario> threelSuite(const SuiteOptions& options) {
+  const std::vector<Size> sizes = options.quick ? std::vector<Size>{{320, 180}, {640, 360}}
+                                                : std::vector<Size>{{1920, 1080}, {3840, 2160}};
+  std::vector<Scenario> out;
+  for (const char* scene : {"threel16", "threel256"}) {
+    for (const Size size : sizes) {
+      Scenario base = makeScenario("threel", fmt::format("{} {}x{}", scene, size.width, size.height),
+                                   SceneRequest{scene, 0, 1}, size, options);
+      base.settings.tileSize = 8;
+      append(out, perTechnique(base, {"lll", "forward"}, true));
+    }
+  }
+  return out;
+}
+
+// Frame time against light count on the default scene, for every registered technique.
+std::vector<Scenario> scalingSuite(const SuiteOptions& options) {
+  const std::vector<uint32_t> counts = options.quick
+                                           ? std::vector<uint32_t>{16, 64, 256}
+                                           : std::vector<uint32_t>{16, 64, 256, 1024, 4096, 16384, 65536};
+  const Size size = options.quick ? Size{160, 90} : Size{1920, 1080};
+  std::vector<Scenario> out;
+  for (const uint32_t lights : counts) {
+    const Scenario base = makeScenario("scaling", fmt::format("{} lights", lights),
+                                       SceneRequest{kDefaultSceneName, lights, 1}, size, options);
+    for (Scenario s : perTechnique(base, registeredTechniques(), true)) {
+      if (s.settings.technique == "forward" && lights > kForwardLightLimitOnCpu && options.cpuDevice &&
+          !options.fullForward)
+        s.skip = fmt::format("forward over {} lights on a CPU device takes hours; --full-forward runs it",
+                             kForwardLightLimitOnCpu);
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
+// What the tile size costs and saves: time and light-list memory of the LLL, tile 1 to 16.
+std::vector<Scenario> tilesSuite(const SuiteOptions& options) {
+  const uint32_t lights = options.quick ? 64 : 1024;
+  const Size size = options.quick ? Size{160, 90} : Size{1920, 1080};
+  std::vector<Scenario> out;
+  for (const uint32_t tile : {1u, 2u, 4u, 8u, 16u}) {
+    Scenario s = makeScenario("tiles", fmt::format("tile {}", tile),
+                              SceneRequest{kDefaultSceneName, lights, 1}, size, options);
+    s.settings.technique = "lll";
+    s.settings.tileSize = tile;
+    out.push_back(s);
+  }
+  return out;
+}
+
+// Lit smoke in the default scene with 256 extra lights. The runner records it as skipped while
+// no technique draws particles.
+std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
+  const std::vector<uint32_t> counts =
+      options.quick ? std::vector<uint32_t>{1024} : std::vector<uint32_t>{1024, 65536, 1000000};
+  const Size size = options.quick ? Size{160, 90} : Size{1920, 1080};
+  std::vector<Scenario> out;
+  for (const uint32_t particles : counts) {
+    Scenario base = makeScenario("smoke", fmt::format("{} particles", particles),
+                                 SceneRequest{kDefaultSceneName, 256, 1}, size, options);
+    base.settings.particles = "smoke";
+    base.settings.particleCount = particles;
+    append(out, perTechnique(base, registeredTechniques(), false));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string techniqueLabel(const RenderSettings& settings) {
+  return settings.technique == "lll" ? "lll/" + settings.lllFill : settings.technique;
+}
+
+const std::vector<std::string>& suiteNames() {
+  static const std::vector<std::string> names = {"threel", "scaling", "tiles", "smoke"};
+  return names;
+}
+
+std::vector<Scenario> buildSuite(const std::string& suite, const SuiteOptions& options) {
+  if (suite == "threel") return threelSuite(options);
+  if (suite == "scaling") return scalingSuite(options);
+  if (suite == "tiles") return tilesSuite(options);
+  if (suite == "smoke") return smokeSuite(options);
+  throw InputError(
+      fmt::format("--suite {}: unknown suite (known: {})", suite, fmt::join(suiteNames(), ", ")));
+}
+
+}  // namespace lll::bench
