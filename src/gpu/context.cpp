@@ -306,6 +306,7 @@ void Context::createDevice() {
   features.features.fragmentStoresAndAtomics = VK_TRUE;
   features.features.samplerAnisotropy = supported.samplerAnisotropy;
   features.features.independentBlend = supported.independentBlend;
+  features.features.depthClamp = supported.depthClamp;  // light volumes must not lose far faces
 
   const char* extensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};

@@ -139,17 +139,22 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
   raster.cullMode = desc.cullMode;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.0f;
+  raster.depthClampEnable = desc.depthClamp;
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = desc.depthTest;
   depth.depthWriteEnable = desc.depthWrite;
   depth.depthCompareOp = desc.depthCompare;
+  depth.stencilTestEnable = desc.stencilTest;
+  depth.front = desc.stencilFront;
+  depth.back = desc.stencilBack;
 
   std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
   for (auto& blend : blends) {
-    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                           VK_COLOR_COMPONENT_A_BIT;
+    if (desc.colorWrite)
+      blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                             VK_COLOR_COMPONENT_A_BIT;
     if (desc.blend == BlendMode::Additive) {
       blend.blendEnable = VK_TRUE;
       blend.srcColorBlendFactor = blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
@@ -175,6 +180,7 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
   rendering.colorAttachmentCount = uint32_t(desc.colorFormats.size());
   rendering.pColorAttachmentFormats = desc.colorFormats.data();
   rendering.depthAttachmentFormat = desc.depthFormat;
+  rendering.stencilAttachmentFormat = desc.stencilFormat;
 
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
   info.stageCount = uint32_t(stages.size());

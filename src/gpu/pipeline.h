@@ -53,6 +53,16 @@ struct GraphicsPipelineDesc {
   std::vector<VkFormat> colorFormats;
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
   std::vector<uint32_t> specialization;  // constant_id 0, 1, ... in order
+  // Light volumes: clamp depth instead of clipping at the near and far planes, so a volume's back
+  // faces beyond the far plane still cover the pixels they bound (needs the depthClamp feature).
+  bool depthClamp = false;
+  // Stencil volumes: the depth-stencil format's stencil aspect, the per-face stencil ops, and
+  // whether colour attachments are written at all (a stencil-marking pass leaves them untouched).
+  VkFormat stencilFormat = VK_FORMAT_UNDEFINED;
+  bool stencilTest = false;
+  VkStencilOpState stencilFront{};
+  VkStencilOpState stencilBack{};
+  bool colorWrite = true;
 };
 
 class Pipeline {
