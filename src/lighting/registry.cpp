@@ -7,10 +7,13 @@ namespace lll {
 
 std::unique_ptr<Technique> createForward(Context&, const GpuScene&, const RenderSettings&,
                                          const FrameTargets&);
+std::unique_ptr<Technique> createDeferred(Context&, const GpuScene&, const RenderSettings&,
+                                          const FrameTargets&);
 
 const std::vector<TechniqueInfo>& techniques() {
   static const std::vector<TechniqueInfo> table = {
       {"forward", "brute force: every pixel evaluates every light (the reference)", &createForward},
+      {"deferred", "Infinity's deferred lighting: G-buffer, then lights drawn as volumes", &createDeferred},
   };
   return table;
 }

@@ -1,0 +1,277 @@
+// Technique "deferred": Infinity's deferred lighting (seeds/infinity-deferred-instant-radiosity.txt).
+//   deferred-gbuffer      the scene once (depth EQUAL the prepass) into the G-buffer, with ambient
+//                         and emission written straight into the accumulation target
+//   deferred-lights       each visible light as a bounding volume, additively blended
+//   deferred-edge-aa      (--aa edge) blend pixels on depth or normal discontinuities
+//   deferred-translucent  glass and smoke, unlit or forward-lit (--deferred-translucent)
+// G-buffer, 12 B/px: gbuffer0 RGBA8 sRGB (base colour, metallic) + gbuffer1 RGBA16F (world normal,
+// roughness); with the D32 depth and the RGBA16F accumulation that every technique has, 24 B/px.
+// Infinity used four RGBA16F targets, 32 B/px plus its Z buffer: it stored depth again (D3D9-era
+// hardware could not sample Z), velocity and material ids, and a forward-lit colour that here is
+// the accumulation target itself.
+#include "gpu/context.h"
+#include "gpu/pipeline.h"
+#include "lighting/technique.h"
+#include "lighting/volume_lights.h"
+#include "scene/errors.h"
+
+namespace lll {
+
+namespace {
+
+constexpr VkFormat kGbuffer0Format = VK_FORMAT_R8G8B8A8_SRGB;
+constexpr VkFormat kGbuffer1Format = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr double kGbufferBytesPerPixel = 4 + 8;
+constexpr double kDepthAndAccumulationBytesPerPixel = 4 + 8;
+
+constexpr VkShaderStageFlags kGraphicsStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+const std::initializer_list<Binding> kMeshBindings = {
+    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
+    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+};
+
+const std::initializer_list<Binding> kLightBindings = {
+    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
+    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGraphicsStages},
+    {5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
+    {6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
+    {7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
+};
+
+const std::initializer_list<Binding> kEdgeAaBindings = {
+    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+    {6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+    {7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+    {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+};
+
+bool forwardLitTranslucents(const RenderSettings& settings) {
+  if (settings.deferredTranslucent != "unlit" && settings.deferredTranslucent != "forward")
+    throw InputError("--deferred-translucent " + settings.deferredTranslucent + ": use unlit or forward");
+  return settings.deferredTranslucent == "forward";
+}
+
+bool edgeAntiAliasing(const RenderSettings& settings) {
+  if (settings.antiAliasing != "none" && settings.antiAliasing != "edge")
+    throw InputError("--aa " + settings.antiAliasing + ": use none or edge");
+  return settings.antiAliasing == "edge";
+}
+
+class Deferred final : public Technique {
+ public:
+  Deferred(Context& context, const GpuScene& scene, const RenderSettings& settings,
+           const FrameTargets& targets)
+      : meshLayout_(context, kMeshBindings, sizeof(gpu::DrawPush), kGraphicsStages,
+                    {scene.materialSetLayout()}),
+        lightLayout_(context, kLightBindings),
+        volumes_(context, uint32_t(scene.scene().lights.size())),
+        edgeAa_(edgeAntiAliasing(settings)) {
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    gbuffer0_ = Image(context, targets.width, targets.height, kGbuffer0Format, usage, "gbuffer0");
+    gbuffer1_ = Image(context, targets.width, targets.height, kGbuffer1Format, usage, "gbuffer1");
+    if (edgeAa_) {
+      // The edge filter reads neighbours, so it cannot work in place: lights accumulate here.
+      accumulation_ = Image(context, targets.width, targets.height, kHdrFormat, usage, "accumulation");
+      edgeAaLayout_ = PipelineLayout(context, kEdgeAaBindings);
+      edgeAaPipeline_ = Pipeline(context, edgeAaLayout_, "lighting/deferred_edge_aa.comp");
+    }
+    createScenePipelines(context, forwardLitTranslucents(settings));
+    createLightPipelines(context);
+  }
+
+  void render(FrameContext& frame) override {
+    geometryPass(frame);
+    lightPass(frame);
+    if (edgeAa_) edgeAntiAliasingPass(frame);
+    translucentPass(frame);
+  }
+
+  std::vector<std::pair<std::string, double>> stats() const override {
+    const LightVolumeCounts& c = volumes_.counts();
+    return {{"gbuffer-bytes-per-pixel", kGbufferBytesPerPixel},
+            {"gbuffer-with-depth-and-accumulation-bytes-per-pixel",
+             kGbufferBytesPerPixel + kDepthAndAccumulationBytesPerPixel},
+            {"lights-drawn", c.visible},
+            {"lights-drawn-camera-inside", c.cameraInside},
+            {"lights-drawn-as-cones", c.cones}};
+  }
+
+ private:
+  void createScenePipelines(Context& context, bool litTranslucents) {
+    GraphicsPipelineDesc desc;
+    desc.vertexShader = "common/mesh.vert";
+    desc.fragmentShader = "lighting/deferred_gbuffer.frag";
+    desc.colorFormats = {kHdrFormat, kGbuffer0Format, kGbuffer1Format};
+    desc.depthFormat = kDepthFormat;
+    desc.depthWrite = false;
+    desc.depthCompare = VK_COMPARE_OP_EQUAL;  // one G-buffer write per pixel: the prepass decided
+    gbufferPipeline_ = Pipeline(context, meshLayout_, desc);
+    desc.fragmentShader = "lighting/translucent.frag";
+    desc.colorFormats = {kHdrFormat};
+    desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
+    desc.blend = BlendMode::Alpha;
+    desc.specialization = {litTranslucents ? 1u : 0u};
+    translucentPipeline_ = Pipeline(context, meshLayout_, desc);
+  }
+
+  // Infinity's states: depth test on, writes off, additive. Outside a volume its front faces are
+  // drawn where they are nearer than the scene (reverse-Z GREATER_OR_EQUAL, Infinity's LESS);
+  // with the camera inside, its back faces where they lie behind the scene (LESS_OR_EQUAL,
+  // Infinity's GREATER) with front faces culled. Either way a convex shell covers each pixel once.
+  void createLightPipelines(Context& context) {
+    GraphicsPipelineDesc desc;
+    desc.vertexShader = "lighting/light_volume.vert";
+    desc.fragmentShader = "lighting/deferred_light.frag";
+    desc.colorFormats = {kHdrFormat};
+    desc.depthFormat = kDepthFormat;
+    desc.depthWrite = false;
+    desc.depthClamp = true;
+    desc.blend = BlendMode::Additive;
+    desc.cullMode = VK_CULL_MODE_BACK_BIT;
+    desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
+    outsidePipeline_ = Pipeline(context, lightLayout_, desc);
+    desc.cullMode = VK_CULL_MODE_FRONT_BIT;
+    desc.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
+    insidePipeline_ = Pipeline(context, lightLayout_, desc);
+  }
+
+  VkImageView accumulationView(const FrameTargets& t) const {
+    return edgeAa_ ? accumulation_.view() : t.hdr.view();
+  }
+
+  void geometryPass(FrameContext& frame) {
+    const FrameTargets& t = frame.targets;
+    ScopedPass pass(frame.timer, frame.cmd, "deferred-gbuffer");
+    for (const Image* image : {&gbuffer0_, &gbuffer1_, &accumulation_}) {
+      if (*image)
+        image->transition(frame.cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
+                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    }
+    beginRendering(frame.cmd, t.width, t.height,
+                   {{accumulationView(t), true}, {gbuffer0_.view(), true}, {gbuffer1_.view(), true}},
+                   t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+    gbufferPipeline_.bind(frame.cmd);
+    meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                    meshLayout_.handle());
+    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque, frame.eye);
+    vkCmdEndRendering(frame.cmd);
+    for (const Image* image : {&gbuffer0_, &gbuffer1_}) {
+      image->transition(
+          frame.cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+          VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+          VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    }
+    // The light pass blends onto what this pass wrote into the accumulation target.
+    memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+  }
+
+  // The CPU culls the lights and groups them by shape (points, spots) and by camera side; each
+  // group is one instanced draw with one pipeline, so no state changes between its lights.
+  void lightPass(FrameContext& frame) {
+    const FrameTargets& t = frame.targets;
+    ScopedPass pass(frame.timer, frame.cmd, "deferred-lights");
+    const std::vector<PlacedLightVolume>& placed =
+        volumes_.prepare(frame.scene.scene().lights, frame.uniforms);
+    beginRendering(frame.cmd, t.width, t.height, {{accumulationView(t), false}}, t.depth.view(),
+                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+    outsidePipeline_.bind(frame.cmd);
+    DescriptorWriter writer;
+    writer.uniform(0, frame.uniformBuffer.handle())
+        .storage(1, frame.scene.lightBuffer().handle())
+        .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+        .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer0_.view(),
+               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+        .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer1_.view(),
+               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    volumes_.addBindings(writer).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                      lightLayout_.handle());
+    volumes_.bindGeometry(frame.cmd);
+    for (uint32_t first = 0; first < placed.size();) {
+      uint32_t end = first + 1;
+      while (end < placed.size() && placed[end].shape == placed[first].shape &&
+             placed[end].cameraInside == placed[first].cameraInside)
+        ++end;
+      (placed[first].cameraInside ? insidePipeline_ : outsidePipeline_).bind(frame.cmd);
+      volumes_.draw(frame.cmd, placed[first].shape, first, end - first);
+      first = end;
+    }
+    vkCmdEndRendering(frame.cmd);
+  }
+
+  void edgeAntiAliasingPass(FrameContext& frame) {
+    const FrameTargets& t = frame.targets;
+    ScopedPass pass(frame.timer, frame.cmd, "deferred-edge-aa");
+    accumulation_.transition(
+        frame.cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    t.hdr.transition(frame.cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE,
+                     0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    edgeAaPipeline_.bind(frame.cmd);
+    DescriptorWriter()
+        .uniform(0, frame.uniformBuffer.handle())
+        .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+        .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, accumulation_.view(),
+               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+        .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer1_.view(),
+               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+        .image(8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+        .push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, edgeAaLayout_.handle());
+    vkCmdDispatch(frame.cmd, divideRoundingUp(t.width, gpu::kTileGroupSize),
+                  divideRoundingUp(t.height, gpu::kTileGroupSize), 1);
+    t.hdr.transition(frame.cmd, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+  }
+
+  // Translucent surfaces are not in the G-buffer; they blend over the lit opaque frame.
+  void translucentPass(FrameContext& frame) {
+    if (!frame.scene.hasBlendDraws()) return;
+    const FrameTargets& t = frame.targets;
+    ScopedPass pass(frame.timer, frame.cmd, "deferred-translucent");
+    if (!edgeAa_)
+      memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), false}}, t.depth.view(),
+                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+    translucentPipeline_.bind(frame.cmd);
+    meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                    meshLayout_.handle());
+    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Blend, frame.eye);
+    vkCmdEndRendering(frame.cmd);
+  }
+
+  PipelineLayout meshLayout_;
+  PipelineLayout lightLayout_;
+  PipelineLayout edgeAaLayout_;
+  Pipeline gbufferPipeline_;
+  Pipeline outsidePipeline_;
+  Pipeline insidePipeline_;
+  Pipeline edgeAaPipeline_;
+  Pipeline translucentPipeline_;
+  Image gbuffer0_;
+  Image gbuffer1_;
+  Image accumulation_;
+  LightVolumeDraws volumes_;
+  bool edgeAa_;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> createDeferred(Context& context, const GpuScene& scene,
+                                          const RenderSettings& settings, const FrameTargets& targets) {
+  return std::make_unique<Deferred>(context, scene, settings, targets);
+}
+
+}  // namespace lll
