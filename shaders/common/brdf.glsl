@@ -41,7 +41,7 @@ vec3 brdfCosine(Surface s, vec3 l) {
   float nDotV = max(dot(s.normal, s.view), 1e-4);
   vec3 h = normalize(l + s.view);
   float nDotH = max(dot(s.normal, h), 0.0);
-  float vDotH = max(dot(s.view, h), 0.0);
+  float vDotH = clamp(dot(s.view, h), 0.0, 1.0);  // rounding can exceed 1 when l == v: pow(<0) is NaN
   float alphaRoughness = max(s.roughness * s.roughness, 1e-3);
   vec3 f0 = mix(vec3(0.04), s.baseColor, s.metallic);
   vec3 diffuseColor = mix(s.baseColor, vec3(0.0), s.metallic);
