@@ -4,6 +4,7 @@
 #ifndef LLL_MATERIAL_GLSL
 #define LLL_MATERIAL_GLSL
 #include "common/brdf.glsl"
+#include "common/draw_push.glsl"
 #include "common/frame.glsl"
 
 layout(set = 1, binding = 0) uniform sampler2D baseColorTexture;

@@ -1,6 +1,7 @@
 #version 460
 // Shared by every pass that draws the scene: the same SPIR-V computing the same position gives the
 // same depth in the prepass and in the shading passes that test EQUAL against it.
+#include "common/draw_push.glsl"
 #include "common/frame.glsl"
 
 layout(location = 0) in vec3 inPosition;

@@ -1,5 +1,6 @@
 #version 460
 // HDR to display: exposure, a filmic curve (Narkowicz's ACES fit), sRGB encoding.
+#include "common/debug_colors.glsl"
 #include "shared/gpu_types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -13,9 +14,27 @@ vec3 srgbEncode(vec3 c) {
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
 }
 
+// The heatmap's legend, bottom left: one 8-pixel cell per light count from 1 to the scale (red),
+// separated by dark ticks, so counts can be read off by counting cells.
+bool heatmapLegend(ivec2 p, out vec3 color) {
+  int scale = int(frame.display.y);
+  int x = p.x - 8, y = int(frame.viewport.y) - 1 - p.y - 8;
+  if (scale == 0 || x < 0 || y < 0 || y >= 12 || x >= scale * 8) return false;
+  color = x % 8 == 7 ? vec3(0.05) : heat(float(x / 8 + 1) / float(scale));
+  return true;
+}
+
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= int(frame.viewport.x) || p.y >= int(frame.viewport.y)) return;
-  vec3 hdr = imageLoad(hdrImage, p).rgb * frame.ambient.w;
-  imageStore(ldrImage, p, vec4(srgbEncode(filmic(max(hdr, vec3(0.0)))), 1.0));
+  vec3 hdr = imageLoad(hdrImage, p).rgb;
+  vec3 display;
+  if (frame.display.x == kDisplayDebug) {
+    display = clamp(hdr, 0.0, 1.0);
+    vec3 legend;
+    if (heatmapLegend(p, legend)) display = legend;
+  } else {
+    display = filmic(max(hdr * frame.ambient.w, vec3(0.0)));
+  }
+  imageStore(ldrImage, p, vec4(srgbEncode(display), 1.0));
 }

@@ -25,7 +25,7 @@ struct FrameUniforms {
   vec4 depthParams;     // near, far, tan(fovy/2) * aspect, tan(fovy/2)
   uvec4 counts;         // x light count, y tile size, z tiles x, w tiles y
   vec4 ambient;         // rgb constant ambient radiance, w exposure
-  uvec4 options;        // x debug view, y link format (0 compact, 1 wide), z link pool capacity, w unused
+  uvec4 display;  // x kDisplayFilmic or kDisplayDebug (skips the filmic curve), y heatmap scale, zw unused
 };
 LLL_CHECK_SIZE(FrameUniforms, 4 * 64 + 6 * 16);
 

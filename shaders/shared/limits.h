@@ -30,5 +30,9 @@ LLL_CONST(uint, kAlphaOpaque, 0u);
 LLL_CONST(uint, kAlphaMask, 1u);
 LLL_CONST(uint, kAlphaBlend, 2u);
 
+// FrameUniforms.display.x: how the tonemap pass treats the HDR image.
+LLL_CONST(uint, kDisplayFilmic, 0u);
+LLL_CONST(uint, kDisplayDebug, 1u);
+
 LLL_NAMESPACE_END
 #endif

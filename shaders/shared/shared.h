@@ -15,8 +15,15 @@
   using uvec4 = glm::uvec4; \
   using ivec4 = glm::ivec4; \
   using mat4 = glm::mat4;   \
-  using uint = uint32_t;
+  using uint = uint32_t;    \
+  using vec3 = glm::vec3;   \
+  using glm::clamp;         \
+  using glm::dot;           \
+  using glm::max;           \
+  using glm::min;
 #define LLL_NAMESPACE_END }
+// Functions shared by C++ and GLSL are written in the common subset of both languages.
+#define LLL_FUNCTION inline
 #define LLL_CONST(type, name, value) inline constexpr type name = value
 #define LLL_CHECK_SIZE(T, bytes) static_assert(sizeof(T) == (bytes), #T " must match its GLSL layout")
 #else
@@ -24,6 +31,7 @@
 #define LLL_NAMESPACE_END
 #define LLL_CONST(type, name, value) const type name = value
 #define LLL_CHECK_SIZE(T, bytes)
+#define LLL_FUNCTION
 #endif
 
 #endif

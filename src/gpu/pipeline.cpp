@@ -115,17 +115,19 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
     stages.push_back({VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0,
                       VK_SHADER_STAGE_FRAGMENT_BIT, fragment->handle(), "main", specialization.get()});
 
-  const VkVertexInputBindingDescription vertexBinding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  const VkVertexInputBindingDescription meshBinding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  const VkVertexInputBindingDescription positionBinding{0, sizeof(float) * 3, VK_VERTEX_INPUT_RATE_VERTEX};
   const VkVertexInputAttributeDescription attributes[] = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
       {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
   };
   VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  if (desc.meshVertexInput) {
+  if (desc.vertexInput != VertexInput::None) {
+    const bool mesh = desc.vertexInput == VertexInput::Mesh;
     vertexInput.vertexBindingDescriptionCount = 1;
-    vertexInput.pVertexBindingDescriptions = &vertexBinding;
-    vertexInput.vertexAttributeDescriptionCount = 3;
+    vertexInput.pVertexBindingDescriptions = mesh ? &meshBinding : &positionBinding;
+    vertexInput.vertexAttributeDescriptionCount = mesh ? 3 : 1;
     vertexInput.pVertexAttributeDescriptions = attributes;
   }
   VkPipelineInputAssemblyStateCreateInfo inputAssembly{

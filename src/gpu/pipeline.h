@@ -40,10 +40,16 @@ class PipelineLayout {
 
 enum class BlendMode { None, Additive, Alpha };
 
+enum class VertexInput {
+  Mesh,      // lll::Vertex (position, normal, uv) at binding 0
+  Position,  // a bare vec3 position at binding 0 (light volumes)
+  None,      // no vertex buffer: the shader makes its own positions
+};
+
 struct GraphicsPipelineDesc {
-  std::string vertexShader;     // path under shaders/, e.g. "common/mesh.vert"
-  std::string fragmentShader;   // empty for depth-only passes
-  bool meshVertexInput = true;  // lll::Vertex stream at binding 0; false: no vertex input
+  std::string vertexShader;    // path under shaders/, e.g. "common/mesh.vert"
+  std::string fragmentShader;  // empty for depth-only passes
+  VertexInput vertexInput = VertexInput::Mesh;
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;
   bool depthTest = true;

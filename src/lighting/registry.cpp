@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include "lighting/lll.h"
 #include "lighting/technique.h"
 #include "scene/errors.h"
 
@@ -9,11 +10,16 @@ std::unique_ptr<Technique> createForward(Context&, const GpuScene&, const Render
                                          const FrameTargets&);
 std::unique_ptr<Technique> createDeferred(Context&, const GpuScene&, const RenderSettings&,
                                           const FrameTargets&);
+std::unique_ptr<Technique> createPrepass(Context&, const GpuScene&, const RenderSettings&,
+                                         const FrameTargets&);
 
 const std::vector<TechniqueInfo>& techniques() {
   static const std::vector<TechniqueInfo> table = {
       {"forward", "brute force: every pixel evaluates every light (the reference)", &createForward},
       {"deferred", "Infinity's deferred lighting: G-buffer, then lights drawn as volumes", &createDeferred},
+      {"prepass", "Resistance 2's light pre-pass: normals, stencil-volume lights, material", &createPrepass},
+      {"lll", "light linked list: per-tile light lists built on the GPU (--lll-fill shells|ray|compute)",
+       &createLightLinkedList},
   };
   return table;
 }

@@ -35,6 +35,7 @@ struct FrameContext {
   const gpu::FrameUniforms& uniforms;
   const RenderSettings& settings;
   glm::vec3 eye;
+  bool capture;  // the frame is read back: techniques may add diagnostic passes (stats)
 };
 
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;

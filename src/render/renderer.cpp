@@ -17,6 +17,8 @@ namespace {
 
 // A frame needing more than this many re-renders has a bug, not a small pool.
 constexpr uint32_t kMaxRerenders = 8;
+// Lights per tile shown as red in the heatmap view (ThreeL's Sponza peaks around 35).
+constexpr uint32_t kHeatmapScale = 32;
 
 const std::initializer_list<Binding> kMeshBindings = {
     {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -119,6 +121,9 @@ void Renderer::updateUniforms() {
   u.counts = glm::uvec4(gpuScene_->lightCount(), tile, divideRoundingUp(settings_.width, tile),
                         divideRoundingUp(settings_.height, tile));
   u.ambient = glm::vec4(glm::vec3(settings_.ambient), settings_.exposure);
+  const bool debugColors = settings_.debugView == "heatmap" || settings_.debugView == "bounds";
+  u.display = glm::uvec4(debugColors ? gpu::kDisplayDebug : gpu::kDisplayFilmic,
+                         settings_.debugView == "heatmap" ? kHeatmapScale : 0u, 0u, 0u);
   uniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
 }
 
@@ -138,8 +143,8 @@ FrameResult Renderer::renderFrame(bool capture) {
 
 void Renderer::recordFrame(VkCommandBuffer cmd, bool capture) {
   timer_.reset(cmd);
-  FrameContext frame{context_,       cmd,       timer_,    *gpuScene_, targets_,
-                     uniformBuffer_, uniforms_, settings_, camera_.eye};
+  FrameContext frame{context_,       cmd,       timer_,    *gpuScene_,  targets_,
+                     uniformBuffer_, uniforms_, settings_, camera_.eye, capture};
   depthPrepass(frame);
   targets_.hdr.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                           VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,

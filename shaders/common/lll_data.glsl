@@ -1,0 +1,89 @@
+// The Light Linked List's buffers (set 0, bindings 3..10) and the two operations on them: pushing
+// a link at a tile's head (fills) and walking a tile's list (every shading pass).
+#ifndef LLL_DATA_GLSL
+#define LLL_DATA_GLSL
+#include "common/frame.glsl"
+#include "shared/lll_types.h"
+
+// Shading passes only read the lists; fills define LLL_FILL_PASS to write them.
+#ifdef LLL_FILL_PASS
+#define LLL_LIST_ACCESS
+#else
+#define LLL_LIST_ACCESS readonly
+#endif
+
+layout(set = 0, binding = 3) uniform LllBlock { LllUniforms lll; };
+layout(std430, set = 0, binding = 4) LLL_LIST_ACCESS buffer HeadBlock { uint tileHeads[]; };
+// Links as 32-bit words: 2 per compact link, 4 per wide link (layouts in shared/lll_types.h).
+layout(std430, set = 0, binding = 5) LLL_LIST_ACCESS buffer LinkBlock { uint linkWords[]; };
+layout(std430, set = 0, binding = 6) buffer CounterBlock { LllCounters counters; };
+layout(std430, set = 0, binding = 7) LLL_LIST_ACCESS buffer TileDepthBlock { float tileDepth[]; };
+
+uint tileIndexOf(uvec2 pixel) {
+  uint tile = frame.counts.y;
+  return (pixel.y / tile) * frame.counts.z + pixel.x / tile;
+}
+
+// fp16 of a depth rounded towards -infinity / +infinity, so a compact link's bounds only widen.
+uint halfRoundedDown(float value) {
+  uint h = packHalf2x16(vec2(value, 0.0)) & 0xFFFFu;
+  if (unpackHalf2x16(h).x > value) h = (h & 0x8000u) != 0u ? h + 1u : (h == 0u ? 0x8001u : h - 1u);
+  return h;
+}
+
+uint halfRoundedUp(float value) {
+  uint h = packHalf2x16(vec2(value, 0.0)) & 0xFFFFu;
+  if (unpackHalf2x16(h).x < value) h = (h & 0x8000u) != 0u ? (h == 0x8000u ? 1u : h - 1u) : h + 1u;
+  return h;
+}
+
+#ifdef LLL_FILL_PASS
+// Allocates a link and pushes it at the head of the tile's list (LIFO). Past the pool's end the
+// counter still counts, so the CPU learns the size the pool must grow to; nothing is written.
+void pushLink(uint tileIndex, uint lightIndex, float minDepth, float maxDepth) {
+  uint link = atomicAdd(counters.linksRequested, 1u);
+  if (link >= lll.params.x) return;
+  uint next = atomicExchange(tileHeads[tileIndex], link);
+  if (lll.params.y == kLinkCompact) {
+    uint depths = halfRoundedDown(max(minDepth, 0.0)) | (halfRoundedUp(maxDepth) << 16);
+    linkWords[2u * link] = depths;
+    linkWords[2u * link + 1u] = (lightIndex << 24) | (next & kCompactLinkEnd);
+  } else {
+    uint base = 4u * link;
+    linkWords[base] = floatBitsToUint(max(minDepth, 0.0));
+    linkWords[base + 1u] = floatBitsToUint(maxDepth);
+    linkWords[base + 2u] = lightIndex;
+    linkWords[base + 3u] = next;
+  }
+}
+#endif
+
+struct LightLink {
+  float minDepth;
+  float maxDepth;
+  uint light;
+  uint next;
+};
+
+bool isListEnd(uint link) { return link == kLinkEnd || (lll.params.y == kLinkCompact && link == kCompactLinkEnd); }
+
+LightLink readLink(uint link) {
+  LightLink l;
+  if (lll.params.y == kLinkCompact) {
+    vec2 depths = unpackHalf2x16(linkWords[2u * link]);
+    uint indexNext = linkWords[2u * link + 1u];
+    l.minDepth = depths.x;
+    l.maxDepth = depths.y;
+    l.light = indexNext >> 24;
+    l.next = indexNext & kCompactLinkEnd;
+  } else {
+    uint base = 4u * link;
+    l.minDepth = uintBitsToFloat(linkWords[base]);
+    l.maxDepth = uintBitsToFloat(linkWords[base + 1u]);
+    l.light = linkWords[base + 2u];
+    l.next = linkWords[base + 3u];
+  }
+  return l;
+}
+
+#endif

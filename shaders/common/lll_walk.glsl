@@ -1,0 +1,28 @@
+// Lighting a surface from its tile's light list: the one function every shading pass calls
+// (opaque, glass, particles). Needs common/material.glsl's Surface and the LLL bindings.
+#ifndef LLL_WALK_GLSL
+#define LLL_WALK_GLSL
+#include "common/brdf.glsl"
+#include "common/lll_data.glsl"
+
+// Sum of the lights in the tile's list whose depth bounds contain `linearDepth`. The loop stops at
+// the pool's capacity too, so a corrupt list can never hang the GPU.
+vec3 shadeFromLightList(Surface s, uint tileIndex, float linearDepth) {
+  vec3 color = vec3(0.0);
+  uint link = tileHeads[tileIndex];
+  for (uint guard = 0u; !isListEnd(link) && guard < lll.params.x; ++guard) {
+    LightLink l = readLink(link);
+    if (linearDepth >= l.minDepth && linearDepth <= l.maxDepth) color += evaluateLight(lights[l.light], s);
+    link = l.next;
+  }
+  return color;
+}
+
+uint listLength(uint tileIndex) {
+  uint count = 0u;
+  uint link = tileHeads[tileIndex];
+  for (; !isListEnd(link) && count < lll.params.x; ++count) link = readLink(link).next;
+  return count;
+}
+
+#endif

@@ -1,0 +1,447 @@
+#include "lighting/lll.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "gpu/context.h"
+#include "gpu/pipeline.h"
+#include "gpu/vk_check.h"
+#include "lighting/light_volumes.h"
+#include "scene/errors.h"
+#include "shared/lll_types.h"
+
+namespace lll {
+
+namespace {
+
+// Lights per raster-fill batch: bounds entries keep 16 bits of id, 0xFFFF marks "no light".
+constexpr uint32_t kShellBatch = 0xFFFF;
+// Bounds layers (as Bezrati's sample's 12): overlapping lights rarely overwrite each other's depth.
+constexpr uint32_t kBoundsLayers = 8;
+// Growth beyond the requested links on overflow, so a slowly growing scene re-renders rarely.
+constexpr double kPoolGrowth = 1.25;
+
+constexpr VkShaderStageFlags kAllStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
+
+const std::initializer_list<Binding> kBindings = {
+    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kAllStages},
+    {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+};
+
+LllFill parseFill(const std::string& name) {
+  if (name == "shells") return LllFill::Shells;
+  if (name == "ray") return LllFill::Ray;
+  if (name == "compute") return LllFill::Compute;
+  throw InputError(fmt::format("--lll-fill {}: expected shells, ray or compute", name));
+}
+
+uint32_t parseLinkFormat(const std::string& name, uint32_t lightCount) {
+  const bool fitsCompact = lightCount <= gpu::kCompactLinkMaxLights;
+  if (name == "wide" || (name == "auto" && !fitsCompact)) return gpu::kLinkWide;
+  if (name == "compact" || name == "auto") {
+    if (!fitsCompact)
+      throw InputError(fmt::format("--lll-link compact: {} lights, but compact links index at most {}",
+                                   lightCount, gpu::kCompactLinkMaxLights));
+    return gpu::kLinkCompact;
+  }
+  throw InputError(fmt::format("--lll-link {}: expected compact, wide or auto", name));
+}
+
+uint32_t parseDebugView(const std::string& name) {
+  if (name == "none") return gpu::kDebugNone;
+  if (name == "heatmap") return gpu::kDebugHeatmap;
+  if (name == "bounds") return gpu::kDebugBounds;
+  if (name == "tiles") return gpu::kDebugTiles;
+  throw InputError(fmt::format("--debug-view {}: expected none, heatmap, bounds or tiles", name));
+}
+
+// Indexed mesh of a light shell on the GPU.
+struct ShellMesh {
+  Buffer vertices;
+  Buffer indices;
+  uint32_t indexCount = 0;
+  ShellMesh() = default;
+  ShellMesh(Context& context, const VolumeMesh& mesh)
+      : vertices(context, mesh.positions.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                 MemoryUse::Device),
+        indices(context, mesh.indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::Device),
+        indexCount(uint32_t(mesh.indices.size())) {
+    vertices.upload(std::span<const glm::vec3>(mesh.positions));
+    indices.upload(std::span<const uint32_t>(mesh.indices));
+  }
+};
+
+class LightLinkedList final : public Technique {
+ public:
+  LightLinkedList(Context& context, const GpuScene& scene, const RenderSettings& settings,
+                  const FrameTargets& targets);
+  ~LightLinkedList() override;
+  void render(FrameContext& frame) override;
+  bool afterFrame() override;
+  std::vector<std::pair<std::string, double>> stats() const override;
+
+ private:
+  void createBuffers();
+  void createPipelines(const GpuScene& scene);
+  void createShells(const GpuScene& scene);
+  void allocatePool(uint64_t links);
+  DescriptorWriter descriptors(const FrameContext& frame) const;
+  void clear(FrameContext& frame);
+  void reduceTileDepth(FrameContext& frame);
+  void fillCompute(FrameContext& frame);
+  void fillRaster(FrameContext& frame);
+  void drawShellBatch(FrameContext& frame, uint32_t first, uint32_t end, bool backFaces);
+  void shade(FrameContext& frame);
+  void measureLists(FrameContext& frame);
+
+  Context& context_;
+  LllFill fill_;
+  uint32_t linkFormat_;
+  uint32_t linkBytes_;
+  uint32_t tilesX_ = 0;
+  uint32_t tilesY_ = 0;
+  uint32_t tiles_ = 0;
+  uint64_t poolCapacity_ = 0;
+  uint64_t maxPoolLinks_ = 0;
+  uint32_t overflows_ = 0;
+  float tileHalfDiagonalPixels_ = 0.0f;
+  gpu::LllCounters lastCounters_{};
+  bool countersValid_ = false;
+  bool measured_ = false;
+
+  gpu::LllUniforms uniforms_{};
+  Buffer uniformBuffer_;
+  Buffer heads_;
+  Buffer links_;
+  Buffer counters_;
+  Buffer tileDepth_;
+  Buffer bounds_;
+  Buffer shellOrder_;
+  uint32_t sphereLights_ = 0;  // shellOrder_ holds sphere-filled lights first, then cone-filled ones
+  uint32_t shellLights_ = 0;
+  ShellMesh sphere_;
+  ShellMesh cone_;
+  VkSampler depthSampler_ = VK_NULL_HANDLE;
+
+  PipelineLayout layout_;
+  PipelineLayout fillLayout_;
+  PipelineLayout shadeLayout_;
+  Pipeline tileDepthPipeline_;
+  Pipeline statsPipeline_;
+  Pipeline computeFill_;
+  Pipeline shellFront_[2];  // [sphere, cone]
+  Pipeline shellBack_[2];
+  Pipeline shadeOpaque_;
+  Pipeline shadeBlend_;
+};
+
+LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const RenderSettings& settings,
+                                 const FrameTargets& targets)
+    : context_(context),
+      fill_(parseFill(settings.lllFill)),
+      linkFormat_(parseLinkFormat(settings.lllLink, scene.lightCount())),
+      linkBytes_(linkFormat_ == gpu::kLinkCompact ? 8 : 16) {
+  const uint32_t tile = settings.tileSize;
+  if (tile == 0 || tile > gpu::kMaxTileSize || (tile & (tile - 1)) != 0)
+    throw InputError(fmt::format("--tile {}: expected 1, 2, 4, 8 or 16", tile));
+  tilesX_ = divideRoundingUp(targets.width, tile);
+  tilesY_ = divideRoundingUp(targets.height, tile);
+  tiles_ = tilesX_ * tilesY_;
+  uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), 0);
+  uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),
+                             float(targets.height) / float(tilesY_ * tile), 0.0f, 0.0f);
+  // Half a tile's diagonal in pixels, 10% more for the rays' divergence across the tile.
+  tileHalfDiagonalPixels_ = 1.1f * std::sqrt(2.0f) * 0.5f * float(tile);
+  // The pool is one storage buffer; compact links address at most 2^24 - 1 of them.
+  maxPoolLinks_ = context.properties().limits.maxStorageBufferRange / linkBytes_;
+  if (linkFormat_ == gpu::kLinkCompact)
+    maxPoolLinks_ = std::min<uint64_t>(maxPoolLinks_, gpu::kCompactLinkEnd);
+  createBuffers();
+  createPipelines(scene);
+  if (fill_ != LllFill::Compute) createShells(scene);
+  allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile));
+}
+
+LightLinkedList::~LightLinkedList() {
+  vkDestroySampler(context_.device(), depthSampler_, nullptr);
+}
+
+void LightLinkedList::createBuffers() {
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  uniformBuffer_ =
+      Buffer(context_, sizeof(gpu::LllUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+  heads_ = Buffer(context_, uint64_t(tiles_) * 4, storage, MemoryUse::Device);
+  tileDepth_ = Buffer(context_, uint64_t(tiles_) * 4, storage, MemoryUse::Device);
+  // Read by the CPU after each frame: link requests (overflow) and list statistics.
+  counters_ = Buffer(context_, sizeof(gpu::LllCounters), storage, MemoryUse::Readback);
+  if (fill_ == LllFill::Shells)
+    bounds_ = Buffer(context_, uint64_t(tiles_) * 4 * kBoundsLayers, storage, MemoryUse::Device);
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &depthSampler_));
+}
+
+void LightLinkedList::allocatePool(uint64_t links) {
+  if (links > maxPoolLinks_)
+    throw InputError(fmt::format(
+        "the light linked list needs {} links ({:.1f} MiB), more than this device's largest storage buffer "
+        "holds ({} links): use a larger --tile, a lower resolution or fewer lights",
+        links, double(links) * linkBytes_ / 1048576.0, maxPoolLinks_));
+  poolCapacity_ = links;
+  links_ = Buffer(context_, links * linkBytes_, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device);
+  uniforms_.params.x = uint32_t(links);
+}
+
+void LightLinkedList::createPipelines(const GpuScene& scene) {
+  layout_ = PipelineLayout(context_, kBindings);
+  fillLayout_ = PipelineLayout(context_, kBindings, sizeof(gpu::FillPush), VK_SHADER_STAGE_VERTEX_BIT);
+  shadeLayout_ =
+      PipelineLayout(context_, kBindings, sizeof(gpu::DrawPush),
+                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, {scene.materialSetLayout()});
+  tileDepthPipeline_ = Pipeline(context_, layout_, "lighting/lll/tile_depth.comp");
+  statsPipeline_ = Pipeline(context_, layout_, "lighting/lll/stats.comp");
+  if (fill_ == LllFill::Compute) computeFill_ = Pipeline(context_, layout_, "lighting/lll/fill_compute.comp");
+
+  GraphicsPipelineDesc fill;
+  fill.vertexShader = "lighting/lll/fill_shell.vert";
+  fill.fragmentShader =
+      fill_ == LllFill::Ray ? "lighting/lll/fill_ray.frag" : "lighting/lll/fill_shells.frag";
+  fill.vertexInput = VertexInput::Position;
+  fill.depthTest = false;  // the software depth test against the tile depth replaces it
+  fill.depthWrite = false;
+  for (uint32_t cone = 0; fill_ != LllFill::Compute && cone < 2; ++cone) {
+    fill.specialization = {cone, 1, kBoundsLayers};
+    fill.cullMode = VK_CULL_MODE_FRONT_BIT;  // keep back faces
+    shellBack_[cone] = Pipeline(context_, fillLayout_, fill);
+    if (fill_ != LllFill::Shells) continue;
+    fill.specialization = {cone, 0, kBoundsLayers};
+    fill.cullMode = VK_CULL_MODE_BACK_BIT;
+    shellFront_[cone] = Pipeline(context_, fillLayout_, fill);
+  }
+
+  GraphicsPipelineDesc shade;
+  shade.vertexShader = "common/mesh.vert";
+  shade.fragmentShader = "lighting/lll/shade.frag";
+  shade.colorFormats = {kHdrFormat};
+  shade.depthFormat = kDepthFormat;
+  shade.depthWrite = false;
+  shade.depthCompare = VK_COMPARE_OP_EQUAL;
+  shadeOpaque_ = Pipeline(context_, shadeLayout_, shade);
+  shade.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
+  shade.blend = BlendMode::Alpha;
+  shadeBlend_ = Pipeline(context_, shadeLayout_, shade);
+}
+
+void LightLinkedList::createShells(const GpuScene& scene) {
+  sphere_ = ShellMesh(context_, sphereShell());
+  cone_ = ShellMesh(context_, coneShell());
+  // Narrow spots get the cone shell; points and wide spots (cone larger than the sphere) the sphere.
+  std::vector<uint32_t> spheres, cones;
+  const auto& lights = scene.scene().lights;
+  for (uint32_t i = 0; i < lights.size(); ++i) {
+    const bool narrowSpot = lights[i].type == LightType::Spot && std::cos(lights[i].outerConeAngle) >= 0.5f;
+    (narrowSpot ? cones : spheres).push_back(i);
+  }
+  sphereLights_ = uint32_t(spheres.size());
+  shellLights_ = uint32_t(lights.size());
+  spheres.insert(spheres.end(), cones.begin(), cones.end());
+  shellOrder_ = Buffer(context_, spheres.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device);
+  shellOrder_.upload(std::span<const uint32_t>(spheres));
+}
+
+DescriptorWriter LightLinkedList::descriptors(const FrameContext& frame) const {
+  DescriptorWriter writer = meshPassDescriptors(frame);
+  writer.uniform(3, uniformBuffer_.handle())
+      .storage(4, heads_.handle())
+      .storage(5, links_.handle())
+      .storage(6, counters_.handle())
+      .storage(7, tileDepth_.handle());
+  if (bounds_) writer.storage(8, bounds_.handle());
+  if (shellOrder_) writer.storage(10, shellOrder_.handle());
+  return writer;
+}
+
+void LightLinkedList::render(FrameContext& frame) {
+  uniforms_.grid.z =
+      tileHalfDiagonalPixels_ * 2.0f * frame.uniforms.depthParams.w / float(frame.targets.height);
+  uniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
+  measured_ = frame.capture;
+  clear(frame);
+  reduceTileDepth(frame);
+  if (fill_ == LllFill::Compute)
+    fillCompute(frame);
+  else
+    fillRaster(frame);
+  shade(frame);
+  if (frame.capture) measureLists(frame);
+  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+}
+
+void LightLinkedList::clear(FrameContext& frame) {
+  ScopedPass pass(frame.timer, frame.cmd, "lll-clear");
+  vkCmdFillBuffer(frame.cmd, heads_.handle(), 0, VK_WHOLE_SIZE, gpu::kLinkEnd);
+  vkCmdFillBuffer(frame.cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+  if (bounds_) vkCmdFillBuffer(frame.cmd, bounds_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
+  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
+
+void LightLinkedList::reduceTileDepth(FrameContext& frame) {
+  ScopedPass pass(frame.timer, frame.cmd, "lll-tile-depth");
+  tileDepthPipeline_.bind(frame.cmd);
+  // Only this pass samples the depth buffer: binding it while shading reads it as an attachment
+  // makes lavapipe resolve the depth image for every draw.
+  descriptors(frame)
+      .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frame.targets.depth.view(),
+             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+      .push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+  vkCmdDispatch(frame.cmd, divideRoundingUp(tilesX_, gpu::kTileGroupSize),
+                divideRoundingUp(tilesY_, gpu::kTileGroupSize), 1);
+  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+}
+
+void LightLinkedList::fillCompute(FrameContext& frame) {
+  ScopedPass pass(frame.timer, frame.cmd, "lll-fill-compute");
+  computeFill_.bind(frame.cmd);
+  descriptors(frame).push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+  vkCmdDispatch(frame.cmd, divideRoundingUp(tilesX_, 8), divideRoundingUp(tilesY_, 8), 1);
+}
+
+void LightLinkedList::fillRaster(FrameContext& frame) {
+  ScopedPass pass(frame.timer, frame.cmd, fill_ == LllFill::Ray ? "lll-fill-ray" : "lll-fill-shells");
+  for (uint32_t first = 0; first < shellLights_; first += kShellBatch) {
+    const uint32_t end = std::min(shellLights_, first + kShellBatch);
+    if (fill_ == LllFill::Shells) {
+      if (first > 0) {  // a new batch reuses the ids: forget the previous batch's bounds
+        memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+                      VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        vkCmdFillBuffer(frame.cmd, bounds_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
+        memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+      }
+      drawShellBatch(frame, first, end, false);
+      // Every front face has stored its depth before any back face reads it.
+      memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    }
+    drawShellBatch(frame, first, end, true);
+  }
+}
+
+void LightLinkedList::drawShellBatch(FrameContext& frame, uint32_t first, uint32_t end, bool backFaces) {
+  VkCommandBuffer cmd = frame.cmd;
+  // No attachments: the tile grid is the render area, the lists are the output.
+  beginRendering(cmd, tilesX_, tilesY_, {}, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED, false);
+  const gpu::FillPush push{glm::uvec4(first, 0, 0, 0)};
+  struct Range {
+    const ShellMesh& mesh;
+    uint32_t begin, end;
+  };
+  const Range ranges[2] = {{sphere_, first, std::min(end, sphereLights_)},
+                           {cone_, std::max(first, sphereLights_), end}};
+  for (uint32_t shape = 0; shape < 2; ++shape) {
+    const Range& r = ranges[shape];
+    if (r.begin >= r.end) continue;
+    const Pipeline& pipeline = backFaces ? shellBack_[shape] : shellFront_[shape];
+    pipeline.bind(cmd);
+    descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fillLayout_.handle());
+    vkCmdPushConstants(cmd, fillLayout_.handle(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(push), &push);
+    const VkDeviceSize offset = 0;
+    VkBuffer vertices = r.mesh.vertices.handle();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+    vkCmdBindIndexBuffer(cmd, r.mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, r.mesh.indexCount, r.end - r.begin, 0, 0, r.begin);
+  }
+  vkCmdEndRendering(cmd);
+}
+
+void LightLinkedList::shade(FrameContext& frame) {
+  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+  const FrameTargets& t = frame.targets;
+  const struct {
+    const char* name;
+    const Pipeline& pipeline;
+    DrawFilter filter;
+  } passes[2] = {{"lll-shade-opaque", shadeOpaque_, DrawFilter::Opaque},
+                 {"lll-shade-blend", shadeBlend_, DrawFilter::Blend}};
+  for (const auto& p : passes) {
+    if (p.filter == DrawFilter::Blend && !frame.scene.hasBlendDraws()) continue;
+    ScopedPass pass(frame.timer, frame.cmd, p.name);
+    beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), p.filter == DrawFilter::Opaque}},
+                   t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+    p.pipeline.bind(frame.cmd);
+    descriptors(frame).push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadeLayout_.handle());
+    frame.scene.draw(frame.cmd, shadeLayout_.handle(), p.filter, frame.eye);
+    vkCmdEndRendering(frame.cmd);
+  }
+}
+
+void LightLinkedList::measureLists(FrameContext& frame) {
+  ScopedPass pass(frame.timer, frame.cmd, "lll-stats");
+  statsPipeline_.bind(frame.cmd);
+  descriptors(frame).push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+  vkCmdDispatch(frame.cmd, divideRoundingUp(tiles_, 64), 1, 1);
+}
+
+bool LightLinkedList::afterFrame() {
+  std::memcpy(&lastCounters_, counters_.mapped(), sizeof(lastCounters_));
+  countersValid_ = true;
+  if (lastCounters_.linksRequested <= poolCapacity_) return false;
+  // Overflow: nothing was silently dropped from the image we keep; grow and render the frame again.
+  ++overflows_;
+  allocatePool(std::min<uint64_t>(
+      maxPoolLinks_, std::max<uint64_t>(lastCounters_.linksRequested,
+                                        uint64_t(double(lastCounters_.linksRequested) * kPoolGrowth))));
+  return true;
+}
+
+std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
+  std::vector<std::pair<std::string, double>> s = {
+      {"links_used", double(lastCounters_.linksRequested)},
+      {"link_pool_capacity", double(poolCapacity_)},
+      {"link_pool_bytes", double(poolCapacity_ * linkBytes_)},
+      {"head_bytes", double(tiles_) * 4},
+      {"tile_depth_bytes", double(tiles_) * 4},
+      {"link_bytes_each", double(linkBytes_)},
+      {"overflows", double(overflows_)},
+      {"tiles", double(tiles_)},
+  };
+  if (bounds_) s.push_back({"bounds_bytes", double(bounds_.size())});
+  if (measured_ && countersValid_) {
+    s.push_back({"longest_list", double(lastCounters_.longestList)});
+    s.push_back({"mean_list", double(lastCounters_.totalListLength) /
+                                  double(std::max(1u, lastCounters_.tilesWithLights))});
+    s.push_back({"tiles_with_lights", double(lastCounters_.tilesWithLights)});
+  }
+  return s;
+}
+
+}  // namespace
+
+std::unique_ptr<Technique> createLightLinkedList(Context& context, const GpuScene& scene,
+                                                 const RenderSettings& settings,
+                                                 const FrameTargets& targets) {
+  return std::make_unique<LightLinkedList>(context, scene, settings, targets);
+}
+
+}  // namespace lll
