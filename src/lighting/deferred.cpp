@@ -49,6 +49,10 @@ const std::initializer_list<Binding> kEdgeAaBindings = {
     {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
 };
 
+// Light-volume draw groups: which side of the volume the camera is on picks the pipeline.
+constexpr uint32_t kOutside = 0;
+constexpr uint32_t kInside = 1;
+
 bool forwardLitTranslucents(const RenderSettings& settings) {
   if (settings.deferredTranslucent != "unlit" && settings.deferredTranslucent != "forward")
     throw InputError("--deferred-translucent " + settings.deferredTranslucent + ": use unlit or forward");
@@ -179,11 +183,10 @@ class Deferred final : public Technique {
   void lightPass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
     ScopedPass pass(frame.timer, frame.cmd, "deferred-lights");
-    const std::vector<PlacedLightVolume>& placed =
-        volumes_.prepare(frame.scene.scene().lights, frame.uniforms);
+    volumes_.prepare(frame.scene.scene().lights, frame.uniforms,
+                     [](const PlacedLightVolume& v) { return v.cameraInside ? kInside : kOutside; });
     beginRendering(frame.cmd, t.width, t.height, {{accumulationView(t), false}}, t.depth.view(),
                    VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-    outsidePipeline_.bind(frame.cmd);
     DescriptorWriter writer;
     writer.uniform(0, frame.uniformBuffer.handle())
         .storage(1, frame.scene.lightBuffer().handle())
@@ -195,14 +198,9 @@ class Deferred final : public Technique {
     volumes_.addBindings(writer).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                                       lightLayout_.handle());
     volumes_.bindGeometry(frame.cmd);
-    for (uint32_t first = 0; first < placed.size();) {
-      uint32_t end = first + 1;
-      while (end < placed.size() && placed[end].shape == placed[first].shape &&
-             placed[end].cameraInside == placed[first].cameraInside)
-        ++end;
-      (placed[first].cameraInside ? insidePipeline_ : outsidePipeline_).bind(frame.cmd);
-      volumes_.draw(frame.cmd, placed[first].shape, first, end - first);
-      first = end;
+    for (const VolumeRun& run : volumes_.runs()) {
+      (run.group == kInside ? insidePipeline_ : outsidePipeline_).bind(frame.cmd);
+      volumes_.draw(frame.cmd, run.shape, run.first, run.count);
     }
     vkCmdEndRendering(frame.cmd);
   }

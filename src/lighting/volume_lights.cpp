@@ -91,9 +91,6 @@ std::vector<PlacedLightVolume> placeLightVolumes(const std::vector<Light>& light
     PlacedLightVolume volume;
     if (placeLight(lights[i], i, frame, volume)) placed.push_back(volume);
   }
-  std::stable_sort(placed.begin(), placed.end(), [](const PlacedLightVolume& a, const PlacedLightVolume& b) {
-    return std::make_pair(a.shape, a.cameraInside) < std::make_pair(b.shape, b.cameraInside);
-  });
   return placed;
 }
 
@@ -125,9 +122,15 @@ LightVolumeDraws::LightVolumeDraws(Context& context, uint32_t maxLights) {
                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "light-volumes");
 }
 
-const std::vector<PlacedLightVolume>& LightVolumeDraws::prepare(const std::vector<Light>& lights,
-                                                                const gpu::FrameUniforms& frame) {
+const std::vector<PlacedLightVolume>& LightVolumeDraws::prepare(
+    const std::vector<Light>& lights, const gpu::FrameUniforms& frame,
+    uint32_t (*drawGroup)(const PlacedLightVolume&)) {
   placed_ = placeLightVolumes(lights, frame);
+  for (PlacedLightVolume& v : placed_) v.group = drawGroup(v);
+  std::stable_sort(placed_.begin(), placed_.end(),
+                   [](const PlacedLightVolume& a, const PlacedLightVolume& b) {
+                     return std::make_pair(a.group, a.shape) < std::make_pair(b.group, b.shape);
+                   });
   std::vector<gpu::LightVolume> gpuVolumes;
   gpuVolumes.reserve(placed_.size());
   counts_ = {};
@@ -139,6 +142,18 @@ const std::vector<PlacedLightVolume>& LightVolumeDraws::prepare(const std::vecto
   counts_.visible = uint32_t(placed_.size());
   volumes_.upload(std::span<const gpu::LightVolume>(gpuVolumes));
   return placed_;
+}
+
+std::vector<VolumeRun> LightVolumeDraws::runs() const {
+  std::vector<VolumeRun> runs;
+  for (uint32_t i = 0; i < placed_.size(); ++i) {
+    const PlacedLightVolume& v = placed_[i];
+    if (!runs.empty() && runs.back().group == v.group && runs.back().shape == v.shape)
+      ++runs.back().count;
+    else
+      runs.push_back({v.group, v.shape, i, 1});
+  }
+  return runs;
 }
 
 DescriptorWriter& LightVolumeDraws::addBindings(DescriptorWriter& writer) const {

@@ -30,6 +30,16 @@ struct PlacedLightVolume {
   bool cameraInside = false;
   // Area of the shell's screen-space bounding rectangle in pixels; the whole screen when inside.
   float screenPixels = 0.0f;
+  // How the technique draws it (its pipeline), chosen by the technique in prepare().
+  uint32_t group = 0;
+};
+
+// Consecutive volumes of prepare()'s list with the same group and shape: one instanced draw.
+struct VolumeRun {
+  uint32_t group;
+  VolumeShape shape;
+  uint32_t first;
+  uint32_t count;
 };
 
 // Counts of the last prepare(), for Technique::stats().
@@ -39,8 +49,7 @@ struct LightVolumeCounts {
   uint32_t cones = 0;
 };
 
-// Culls `lights` against the frustum in `frame` and places a shell around each visible light,
-// ordered by shape, then outside before inside, so each (shape, side) group is one contiguous run.
+// Culls `lights` against the frustum in `frame` and places a shell around each visible light.
 std::vector<PlacedLightVolume> placeLightVolumes(const std::vector<Light>& lights,
                                                  const gpu::FrameUniforms& frame);
 
@@ -50,11 +59,14 @@ class LightVolumeDraws {
  public:
   LightVolumeDraws(Context& context, uint32_t maxLights);
 
-  // Places this frame's lights (see placeLightVolumes) and uploads them; the returned volumes are
-  // indexed by draw() in the same order. Call while recording: the previous frame has completed.
+  // Places this frame's lights (see placeLightVolumes), gives each the group `drawGroup` picks,
+  // orders them by group then shape, and uploads them; draw() indexes the returned list. Call
+  // while recording: the previous frame has completed.
   const std::vector<PlacedLightVolume>& prepare(const std::vector<Light>& lights,
-                                                const gpu::FrameUniforms& frame);
+                                                const gpu::FrameUniforms& frame,
+                                                uint32_t (*drawGroup)(const PlacedLightVolume&));
   const LightVolumeCounts& counts() const { return counts_; }
+  std::vector<VolumeRun> runs() const;
 
   DescriptorWriter& addBindings(DescriptorWriter& writer) const;
   void bindGeometry(VkCommandBuffer cmd) const;
