@@ -5,7 +5,7 @@
 // sum(w * S) only as one number, so its colour is taken to be that of sum(S). That is the
 // approximation, exact for a single light or lights of one colour: the seed's limit that "very
 // limited range of materials can be factored in this way" without "extra storage" for them
-// (the exact sum would need a third RGB channel triple). Taking F once per pixel at n.v instead,
+// (the exact sum would need a third RGB sum). Taking F once per pixel at n.v instead,
 // the classic light pre-pass shortcut, drops the atrium to ~31 dB against forward.
 #extension GL_EXT_samplerless_texture_functions : require
 #include "common/material.glsl"
