@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include "lighting/lll_memory.h"
 #include "lighting/technique.h"
 #include "render/image_io.h"
 #include "render/renderer.h"
 #include "render/stats.h"
 #include "scene/builtin_scenes.h"
+#include "scene/errors.h"
 
 namespace lll {
 
@@ -62,6 +64,30 @@ int printDevices() {
   for (const DeviceInfo& d : lll::listDevices())
     fmt::print("{}: {} ({}, {}, Vulkan {}){}\n", d.index, d.name, d.type, d.driver, d.apiVersion,
                d.usable ? "" : "  unusable: " + d.whyUnusable);
+  return 0;
+}
+
+int printLllMemory(const LllMemoryQuery& query) {
+  if (query.width == 0 || query.height == 0 || query.tile == 0)
+    throw InputError(fmt::format("lll-memory: width, height and tile must be positive (got {} x {}, tile {})",
+                                 query.width, query.height, query.tile));
+  if (query.link != "compact" && query.link != "wide")
+    throw InputError(fmt::format("--link {}: expected compact or wide", query.link));
+  // The technique's two link layouts (shaders/shared/lll_types.h): compact 8 bytes, wide 16.
+  const uint32_t linkBytes = query.link == "wide" ? 16 : 8;
+  const LllMemory m = estimateLllMemory(query.width, query.height, query.tile, query.linksPerTile, linkBytes);
+  // MiB, two decimals: the chapter's "MB" (506.25 MB at 1920x1080 per pixel) are MiB.
+  auto line = [](const char* what, uint64_t bytes) {
+    fmt::print("{:<11} {} bytes ({:.2f} MiB)\n", what, bytes, double(bytes) / (1024.0 * 1024.0));
+  };
+  fmt::print("lll-memory: {} x {} pixels, {} x {} pixel tiles, {} links per tile, {} links of {} bytes\n",
+             query.width, query.height, query.tile, query.tile, query.linksPerTile, query.link, linkBytes);
+  fmt::print("{:<11} {} x {} = {}\n", "tiles", m.tilesX, m.tilesY, uint64_t(m.tilesX) * m.tilesY);
+  fmt::print("{:<11} {}\n", "links", m.links);
+  line("link pool", m.poolBytes);
+  line("heads", m.headBytes);
+  line("tile depth", m.depthBytes);
+  line("total", m.poolBytes + m.headBytes + m.depthBytes);
   return 0;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // What each `lll` subcommand does, as library functions; main.cpp only parses the command line.
+#include <cstdint>
 #include <string>
 
 #include "gpu/context.h"
@@ -23,5 +24,15 @@ int runRender(const RenderJob& job);
 int printScenes();
 int printTechniques();
 int printDevices();
+
+// `lll lll-memory`: what the light linked list needs at a resolution, tile size and average list length.
+struct LllMemoryQuery {
+  uint32_t width = 1920;
+  uint32_t height = 1080;
+  uint32_t tile = 8;
+  uint32_t linksPerTile = 32;
+  std::string link = "compact";  // compact (8-byte links) | wide (16-byte links)
+};
+int printLllMemory(const LllMemoryQuery& query);
 
 }  // namespace lll

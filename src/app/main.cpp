@@ -70,6 +70,24 @@ void addBenchOptions(CLI::App& cmd, lll::bench::BenchOptions& options) {
                "Khronos validation layers on; any message fails the run");
 }
 
+void addLllMemoryOptions(CLI::App& cmd, lll::LllMemoryQuery& query) {
+  cmd.add_option("--width", query.width, "image width in pixels")
+      ->check(CLI::Range(1u, 65536u))
+      ->capture_default_str();
+  cmd.add_option("--height", query.height, "image height in pixels")
+      ->check(CLI::Range(1u, 65536u))
+      ->capture_default_str();
+  cmd.add_option("--tile", query.tile, "tile size in pixels")
+      ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u}))
+      ->capture_default_str();
+  cmd.add_option("--links-per-tile", query.linksPerTile, "average light list length the pool is sized for")
+      ->check(CLI::Range(1u, 1u << 16))
+      ->capture_default_str();
+  cmd.add_option("--link", query.link, "link format: compact (8 B) | wide (16 B)")
+      ->check(CLI::IsMember({"compact", "wide"}))
+      ->capture_default_str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -77,6 +95,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   lll::RenderJob job;
   lll::bench::BenchOptions bench;
+  lll::LllMemoryQuery lllMemory;
   if (std::getenv("LLL_VALIDATE")) job.device.validation = bench.device.validation = true;
 
   CLI::App* render = app.add_subcommand("render", "render a scene off-screen to PNG (and HDR, stats)");
@@ -91,6 +110,9 @@ int main(int argc, char** argv) {
   CLI::App* benchCmd = app.add_subcommand(
       "bench", "time suites of scenarios x techniques; write results.json/.csv, summary.md, charts");
   addBenchOptions(*benchCmd, bench);
+  CLI::App* lllMemoryCmd = app.add_subcommand(
+      "lll-memory", "memory of the light linked list (link pool, heads, tile depths) for a resolution");
+  addLllMemoryOptions(*lllMemoryCmd, lllMemory);
 
   try {
     app.parse(argc, argv);
@@ -104,6 +126,7 @@ int main(int argc, char** argv) {
     if (*techniques) return lll::printTechniques();
     if (*devices) return lll::printDevices();
     if (*benchCmd) return lll::bench::runBenchCommand(bench);
+    if (*lllMemoryCmd) return lll::printLllMemory(lllMemory);
   } catch (const lll::InputError& e) {
     fmt::print(stderr, "lll: error: {}\n", e.what());
     return 2;
