@@ -2,6 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <vector>
+
 #include "lighting/lll_memory.h"
 #include "lighting/technique.h"
 #include "render/image_io.h"
@@ -22,11 +27,30 @@ int validationExitCode(const Context& context) {
   return 1;
 }
 
+// The image writers would reject a bad output path only after the render; checking the folder and
+// the extension first makes a typo fail at once instead of after minutes of work.
+void checkOutputPath(const char* option, const std::string& path,
+                     const std::vector<std::string>& extensions) {
+  if (path.empty()) return;
+  const std::filesystem::path file(path);
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (!extensions.empty() && std::find(extensions.begin(), extensions.end(), ext) == extensions.end())
+    throw InputError(
+        fmt::format("{} {}: expected a name ending in {}", option, path, fmt::join(extensions, " or ")));
+  const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
+  if (!std::filesystem::is_directory(folder))
+    throw InputError(fmt::format("{} {}: the folder {} does not exist", option, path, folder.string()));
+}
+
 }  // namespace
 
 int runRender(const RenderJob& job) {
   findTechnique(job.settings.technique);  // reject a bad name before any slow work
   validateResolution(job.settings.width, job.settings.height);
+  checkOutputPath("--out", job.outPng, {".png"});
+  checkOutputPath("--hdr", job.outHdr, {".exr", ".pfm"});
+  checkOutputPath("--stats", job.outStats, {});
   std::vector<std::string> warnings;
   const Scene scene = loadScene(job.scene, &warnings);
   for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
