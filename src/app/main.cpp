@@ -92,7 +92,9 @@ void addLllMemoryOptions(CLI::App& cmd, lll::LllMemoryQuery& query) {
 
 int main(int argc, char** argv) {
   CLI::App app{"lll: real-time rendering with many dynamic lights (Light Linked List)"};
-  app.require_subcommand(1);
+  // At most one, checked below: with require_subcommand(1) CLI11 answers a misspelt command such as
+  // `lll rendr` with "A subcommand is required", never naming the word it did not know.
+  app.require_subcommand(0, 1);
   lll::RenderJob job;
   lll::bench::BenchOptions bench;
   lll::LllMemoryQuery lllMemory;
@@ -119,6 +121,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
+  }
+  if (app.get_subcommands().empty()) {
+    fmt::print(stderr, "lll: error: a command is required\n{}", app.help());
+    return 2;
   }
   try {
     if (*render) return lll::runRender(job);
