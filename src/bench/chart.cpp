@@ -25,10 +25,15 @@ using Results = std::vector<const ScenarioResult*>;
 
 constexpr const char* kTerminal = "set terminal pngcairo noenhanced size 1280,800 font 'sans,11'";
 
-// A double-quoted gnuplot string (only there does \n mean a newline).
+// A double-quoted gnuplot string: newlines become \n escapes, which only such strings expand.
 std::string gnuplotString(const std::string& text) {
   std::string out = "\"";
-  for (const char c : text) out += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  for (const char c : text) {
+    if (c == '\n')
+      out += "\\n";
+    else
+      out += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  }
   return out + "\"";
 }
 
