@@ -1,0 +1,474 @@
+// The `lll` command line, run as a child process: every kind of bad input ends in exit code 2 and a
+// message that names the input, never in a crash, a hang or a half-written image; a good render
+// writes a valid PNG, PFM and stats JSON; the listing and lll-memory subcommands print what they
+// promise.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace lll {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct CliResult {
+  int exitCode = -1;  // 128 + signal when the child was killed, as a shell reports it
+  bool timedOut = false;
+  std::string output;  // stdout and stderr, interleaved
+};
+
+std::ostream& operator<<(std::ostream& os, const CliResult& r) {
+  return os << "exit " << r.exitCode << (r.timedOut ? " (timed out)" : "") << ", output:\n" << r.output;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Runs the lll binary with `args` and extra environment variables (set in the child only). A child
+// still running after `timeout` is killed, so a hang fails the test instead of blocking the suite.
+CliResult runLll(const std::vector<std::string>& args, const std::map<std::string, std::string>& env = {},
+                 std::chrono::seconds timeout = std::chrono::seconds(60)) {
+  // Output goes to a file rather than a pipe: a chatty child can never block on a full pipe.
+  const fs::path log =
+      fs::temp_directory_path() / ("lll-cli-" + std::to_string(std::random_device{}()) + ".log");
+  // Everything the child needs is built before fork(): the GPU tests leave driver threads behind,
+  // and after fork() only async-signal-safe calls are allowed.
+  std::vector<std::string> argStrings = {LLL_BINARY};
+  argStrings.insert(argStrings.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argStrings) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::vector<std::string> envStrings;
+  for (char** e = environ; *e; ++e) {
+    const std::string entry = *e;
+    if (!env.count(entry.substr(0, entry.find('=')))) envStrings.push_back(entry);
+  }
+  for (const auto& [name, value] : env) envStrings.push_back(name + "=" + value);
+  std::vector<char*> envp;
+  for (std::string& e : envStrings) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  const std::string logPath = log.string();
+
+  CliResult result;
+  const pid_t pid = fork();
+  if (pid < 0) {
+    ADD_FAILURE() << "fork failed: " << std::strerror(errno);
+    return result;
+  }
+  if (pid == 0) {
+    const int fd = open(logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0) _exit(126);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    close(fd);
+    execve(argv[0], argv.data(), envp.data());
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  int status = 0;
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      result.timedOut = true;
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  result.output = readFile(log);
+  fs::remove(log);
+  return result;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// The first line of `text` that starts with `prefix`, or "" when none does.
+std::string lineStartingWith(const std::string& text, const std::string& prefix) {
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind(prefix, 0) == 0) return line;
+  return "";
+}
+
+// A minimal valid glTF: one quad (4 positions, 6 16-bit indices) in <dir>/<name>.gltf + .bin.
+struct QuadGltf {
+  json doc;
+  std::vector<uint8_t> bin;
+
+  QuadGltf() {
+    const float positions[] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+    const uint16_t indices[] = {0, 2, 1, 0, 3, 2};
+    bin.resize(sizeof(positions) + sizeof(indices));
+    std::memcpy(bin.data(), positions, sizeof(positions));
+    std::memcpy(bin.data() + sizeof(positions), indices, sizeof(indices));
+    doc = {{"asset", {{"version", "2.0"}}},
+           {"buffers", {{{"uri", "quad.bin"}, {"byteLength", bin.size()}}}},
+           {"bufferViews",
+            {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", sizeof(positions)}},
+             {{"buffer", 0}, {"byteOffset", sizeof(positions)}, {"byteLength", sizeof(indices)}}}},
+           {"accessors",
+            {{{"bufferView", 0},
+              {"componentType", 5126},
+              {"count", 4},
+              {"type", "VEC3"},
+              {"min", {-1, 0, -1}},
+              {"max", {1, 0, 1}}},
+             {{"bufferView", 1}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}}},
+           {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
+           {"nodes", {{{"mesh", 0}}}},
+           {"scenes", {{{"nodes", {0}}}}},
+           {"scene", 0}};
+  }
+
+  // Writes quad.bin (the first `binBytes` bytes of it; all when npos) and <name>.gltf.
+  fs::path write(const fs::path& dir, const std::string& name, size_t binBytes = std::string::npos) const {
+    std::ofstream(dir / "quad.bin", std::ios::binary)
+        .write(reinterpret_cast<const char*>(bin.data()), std::streamsize(std::min(binBytes, bin.size())));
+    std::ofstream(dir / (name + ".gltf")) << doc.dump(1);
+    return dir / (name + ".gltf");
+  }
+};
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    dir_ = fs::temp_directory_path() / ("lll-cli-" + test + "-" + std::to_string(std::random_device{}()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+
+  std::string outPng() const { return (dir_ / "out.png").string(); }
+
+  // `lll render SCENE --width 32 --height 18 --out out.png EXTRA...`
+  CliResult render(const std::string& scene, const std::vector<std::string>& extra = {}) const {
+    std::vector<std::string> args = {"render", scene, "--width", "32", "--height", "18", "--out", outPng()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runLll(args);
+  }
+
+  // Exit code 2, every one of `named` in the message, and no image left behind.
+  void expectBadInput(const CliResult& r, const std::vector<std::string>& named) const {
+    EXPECT_EQ(r.exitCode, 2) << r;
+    EXPECT_FALSE(r.timedOut);
+    for (const std::string& n : named) EXPECT_TRUE(contains(r.output, n)) << "'" << n << "' not named: " << r;
+    EXPECT_FALSE(fs::exists(outPng())) << "an image was written despite the error";
+  }
+
+  fs::path dir_;
+};
+
+// ---- scene files ----
+
+TEST_F(CliTest, MissingFile) {
+  const std::string path = (dir_ / "nowhere.gltf").string();
+  expectBadInput(render(path), {path, "cannot read"});
+}
+
+TEST_F(CliTest, NotGltf) {
+  const fs::path path = dir_ / "notes.gltf";
+  std::ofstream(path) << "These are not the triangles you are looking for.\n";
+  expectBadInput(render(path.string()), {"notes.gltf", "not a glTF file"});
+}
+
+TEST_F(CliTest, InvalidJson) {
+  const fs::path path = dir_ / "broken.gltf";
+  std::ofstream(path) << R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [)";
+  expectBadInput(render(path.string()), {"broken.gltf", "not a valid glTF"});
+}
+
+TEST_F(CliTest, TruncatedBin) {
+  const QuadGltf quad;
+  expectBadInput(render(quad.write(dir_, "truncated", quad.bin.size() - 5).string()), {"truncated.gltf"});
+}
+
+TEST_F(CliTest, MissingBin) {
+  const fs::path path = QuadGltf().write(dir_, "nobin");
+  fs::remove(dir_ / "quad.bin");
+  expectBadInput(render(path.string()), {"nobin.gltf"});
+}
+
+TEST_F(CliTest, AccessorOutOfRange) {
+  QuadGltf quad;
+  quad.doc["accessors"][0]["count"] = 40;  // 40 positions in a 48-byte view
+  expectBadInput(render(quad.write(dir_, "accessor").string()), {"accessor.gltf", "accessor 0"});
+}
+
+TEST_F(CliTest, IndexOutOfRange) {
+  QuadGltf quad;
+  const uint16_t badIndex = 7;  // the quad has 4 vertices
+  std::memcpy(quad.bin.data() + 48 + 2, &badIndex, sizeof(badIndex));
+  expectBadInput(render(quad.write(dir_, "index").string()), {"index.gltf", "7"});
+}
+
+TEST_F(CliTest, UnsupportedRequiredExtension) {
+  QuadGltf quad;
+  quad.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+  quad.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  expectBadInput(render(quad.write(dir_, "draco").string()), {"draco.gltf", "KHR_draco_mesh_compression"});
+}
+
+TEST_F(CliTest, MissingTextureImageWarnsAndRenders) {
+  QuadGltf quad;
+  quad.doc["images"] = {{{"uri", "lost-texture.png"}}};
+  quad.doc["textures"] = {{{"source", 0}}};
+  quad.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  quad.doc["meshes"][0]["primitives"][0]["material"] = 0;
+  const CliResult r = render(quad.write(dir_, "textured").string());
+  EXPECT_EQ(r.exitCode, 0) << r;
+  EXPECT_TRUE(contains(r.output, "warning")) << r;
+  EXPECT_TRUE(contains(r.output, "lost-texture.png")) << r;
+  EXPECT_TRUE(contains(r.output, "neutral texture")) << r;
+  EXPECT_TRUE(fs::exists(outPng()));
+}
+
+TEST_F(CliTest, UnknownSceneListsBuiltins) {
+  expectBadInput(render("nosuchscene"), {"nosuchscene", "atrium", "plane"});
+}
+
+// ---- options ----
+
+TEST_F(CliTest, ZeroWidth) {
+  expectBadInput(runLll({"render", "plane", "--width", "0", "--height", "18", "--out", outPng()}),
+                 {"--width", "0"});
+}
+
+TEST_F(CliTest, NegativeWidth) {
+  expectBadInput(runLll({"render", "plane", "--width", "-5", "--height", "18", "--out", outPng()}),
+                 {"--width", "-5"});
+}
+
+TEST_F(CliTest, HugeWidth) {
+  expectBadInput(runLll({"render", "plane", "--width", "100000", "--height", "18", "--out", outPng()}),
+                 {"--width", "100000"});
+}
+
+TEST_F(CliTest, ZeroHeight) {
+  expectBadInput(runLll({"render", "plane", "--width", "32", "--height", "0", "--out", outPng()}),
+                 {"--height", "0"});
+}
+
+TEST_F(CliTest, LightsBeyondTheOptionsRange) {
+  expectBadInput(render("plane", {"--lights", "2000000"}), {"--lights", "2000000"});
+}
+
+TEST_F(CliTest, LightsBeyondTheLightBuffer) {
+  // Within the option's range, but the plane's own light makes it one more than the buffer holds.
+  expectBadInput(render("plane", {"--lights", "1048576"}), {"--lights 1048576", "1048577", "at most"});
+}
+
+TEST_F(CliTest, UnknownTechniqueListsTechniques) {
+  expectBadInput(render("plane", {"--technique", "nosuch"}), {"--technique nosuch", "forward", "lll"});
+}
+
+TEST_F(CliTest, UnknownCameraListsCameras) {
+  expectBadInput(render("plane", {"--camera", "nosuch"}), {"--camera nosuch", "top"});
+}
+
+TEST_F(CliTest, UnknownCommand) {
+  const CliResult r = runLll({"paint"});
+  EXPECT_EQ(r.exitCode, 2) << r;
+  EXPECT_TRUE(contains(r.output, "paint")) << r;
+}
+
+TEST_F(CliTest, NoCommand) {
+  const CliResult r = runLll({});
+  EXPECT_EQ(r.exitCode, 2) << r;
+  EXPECT_TRUE(contains(r.output, "command is required")) << r;
+  EXPECT_TRUE(contains(r.output, "render")) << r;
+}
+
+// ---- output paths: checked before the scene is even loaded ----
+
+TEST_F(CliTest, OutInMissingDirectoryFailsBeforeRendering) {
+  const std::string path = (dir_ / "no-such-dir" / "out.png").string();
+  // The scene is bad too: naming the path shows it was checked first, before any slow work.
+  const CliResult r = runLll({"render", "nosuchscene", "--width", "32", "--height", "18", "--out", path});
+  EXPECT_EQ(r.exitCode, 2) << r;
+  EXPECT_TRUE(contains(r.output, path)) << r;
+  EXPECT_FALSE(contains(r.output, "nosuchscene")) << r;
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST_F(CliTest, OutWithoutPngExtension) {
+  const std::string path = (dir_ / "out.jpg").string();
+  const CliResult r = runLll({"render", "plane", "--width", "32", "--height", "18", "--out", path});
+  EXPECT_EQ(r.exitCode, 2) << r;
+  EXPECT_TRUE(contains(r.output, path)) << r;
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST_F(CliTest, HdrWithJpgExtension) {
+  const std::string hdr = (dir_ / "out.jpg").string();
+  expectBadInput(render("nosuchscene", {"--hdr", hdr}), {"--hdr", hdr, ".pfm"});
+  EXPECT_FALSE(fs::exists(hdr));
+}
+
+TEST_F(CliTest, StatsInMissingDirectory) {
+  const std::string stats = (dir_ / "no-such-dir" / "stats.json").string();
+  expectBadInput(render("nosuchscene", {"--stats", stats}), {"--stats", stats});
+}
+
+// ---- the environment ----
+
+TEST_F(CliTest, NoVulkanDevice) {
+  const CliResult r =
+      runLll({"render", "plane", "--width", "32", "--height", "18", "--out", outPng()},
+             {{"VK_DRIVER_FILES", "/nonexistent.json"}, {"VK_ICD_FILENAMES", "/nonexistent.json"}});
+  expectBadInput(r, {"no Vulkan device"});
+}
+
+// ---- a good render ----
+
+uint32_t bigEndian32(const std::string& bytes, size_t offset) {
+  uint32_t v = 0;
+  for (size_t i = 0; i < 4; ++i) v = v << 8 | uint8_t(bytes[offset + i]);
+  return v;
+}
+
+TEST_F(CliTest, RenderWritesPngPfmAndStats) {
+  const fs::path png = dir_ / "plane.png", pfm = dir_ / "plane.pfm", stats = dir_ / "plane.json";
+  const CliResult r = runLll({"render", "plane", "--width", "64", "--height", "36", "--out", png.string(),
+                              "--hdr", pfm.string(), "--stats", stats.string(), "--validate"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+
+  const std::string pngBytes = readFile(png);
+  ASSERT_GE(pngBytes.size(), 24u);
+  EXPECT_EQ(pngBytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(pngBytes.substr(12, 4), "IHDR");
+  EXPECT_EQ(bigEndian32(pngBytes, 16), 64u);
+  EXPECT_EQ(bigEndian32(pngBytes, 20), 36u);
+
+  std::ifstream pfmIn(pfm, std::ios::binary);
+  std::string magic;
+  uint32_t width = 0, height = 0;
+  float scale = 0.0f;
+  pfmIn >> magic >> width >> height >> scale;
+  pfmIn.get();  // the one whitespace byte before the pixels
+  EXPECT_EQ(magic, "PF");
+  EXPECT_EQ(width, 64u);
+  EXPECT_EQ(height, 36u);
+  EXPECT_LT(scale, 0.0f);  // little-endian
+  std::vector<float> pixels(size_t(64) * 36 * 3);
+  pfmIn.read(reinterpret_cast<char*>(pixels.data()), std::streamsize(pixels.size() * sizeof(float)));
+  EXPECT_EQ(size_t(pfmIn.gcount()), pixels.size() * sizeof(float));
+  EXPECT_EQ(pfmIn.peek(), EOF) << "bytes after the pixels";
+  float brightest = 0.0f;
+  for (float v : pixels) {
+    ASSERT_TRUE(std::isfinite(v));
+    brightest = std::max(brightest, v);
+  }
+  EXPECT_GT(brightest, 0.01f);
+
+  const json j = json::parse(readFile(stats));
+  EXPECT_FALSE(j.at("device").get<std::string>().empty());
+  EXPECT_FALSE(j.at("driver").get<std::string>().empty());
+  EXPECT_EQ(j.at("width"), 64);
+  EXPECT_EQ(j.at("height"), 36);
+  EXPECT_EQ(j.at("lights"), 1);  // the plane's one point light
+  EXPECT_EQ(j.at("technique"), "forward");
+  EXPECT_EQ(j.at("validation_messages"), 0);
+  ASSERT_FALSE(j.at("passes").empty());
+  for (const json& pass : j.at("passes")) {
+    EXPECT_FALSE(pass.at("name").get<std::string>().empty());
+    EXPECT_GE(pass.at("median_ms").get<double>(), 0.0) << pass.dump();
+  }
+}
+
+// ---- help and listings ----
+
+TEST_F(CliTest, HelpListsSubcommands) {
+  const CliResult r = runLll({"--help"});
+  EXPECT_EQ(r.exitCode, 0) << r;
+  for (const char* command : {"render", "scenes", "techniques", "devices", "bench", "lll-memory"})
+    EXPECT_TRUE(contains(r.output, command)) << command << " missing: " << r;
+}
+
+TEST_F(CliTest, RenderHelpListsOptions) {
+  const CliResult r = runLll({"render", "--help"});
+  EXPECT_EQ(r.exitCode, 0) << r;
+  for (const char* option : {"--technique", "--width", "--lights", "--camera", "--out", "--hdr", "--stats"})
+    EXPECT_TRUE(contains(r.output, option)) << option << " missing: " << r;
+}
+
+TEST_F(CliTest, ScenesListsTheAtrium) {
+  const CliResult r = runLll({"scenes"});
+  EXPECT_EQ(r.exitCode, 0) << r;
+  EXPECT_TRUE(contains(r.output, "\natrium ") || r.output.rfind("atrium ", 0) == 0) << r;
+  EXPECT_TRUE(contains(r.output, "(default)")) << r;
+}
+
+TEST_F(CliTest, TechniquesListsForwardAndLll) {
+  const CliResult r = runLll({"techniques"});
+  EXPECT_EQ(r.exitCode, 0) << r;
+  EXPECT_TRUE(r.output.rfind("forward ", 0) == 0) << r;
+  EXPECT_TRUE(contains(r.output, "\nlll ")) << r;
+}
+
+// ---- lll-memory: the chapter's figures ----
+
+TEST_F(CliTest, LllMemoryPerPixelTiles) {
+  const CliResult r = runLll({"lll-memory", "--tile", "1"});
+  EXPECT_EQ(r.exitCode, 0) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "tiles"), "1920 x 1080 = 2073600")) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "links"), "66355200")) << r;  // 32 per tile
+  // 1920 x 1080 x 32 links x 8 bytes: the chapter's 506.25 MB (which are MiB).
+  const std::string pool = lineStartingWith(r.output, "link pool");
+  EXPECT_TRUE(contains(pool, "530841600 bytes")) << r;
+  EXPECT_TRUE(contains(pool, "506.25 MiB")) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "heads"), "8294400 bytes")) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "tile depth"), "8294400 bytes")) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "total"), "547430400 bytes")) << r;
+}
+
+TEST_F(CliTest, LllMemoryEighthTiles) {
+  const CliResult r = runLll({"lll-memory", "--tile", "8"});
+  EXPECT_EQ(r.exitCode, 0) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "tiles"), "240 x 135 = 32400")) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "link pool"), "7.91 MiB")) << r;
+}
+
+TEST_F(CliTest, LllMemoryWideLinksAndOtherSizes) {
+  const CliResult r = runLll({"lll-memory", "--width", "1000", "--height", "500", "--tile", "16",
+                              "--links-per-tile", "10", "--link", "wide"});
+  EXPECT_EQ(r.exitCode, 0) << r;
+  // ceil(1000 / 16) x ceil(500 / 16) = 63 x 32 tiles, x 10 links x 16 bytes.
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "tiles"), "63 x 32 = 2016")) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "link pool"), "322560 bytes")) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "link pool"), "0.31 MiB")) << r;
+}
+
+TEST_F(CliTest, LllMemoryRejectsOddTile) {
+  const CliResult r = runLll({"lll-memory", "--tile", "3"});
+  EXPECT_EQ(r.exitCode, 2) << r;
+  EXPECT_TRUE(contains(r.output, "--tile")) << r;
+}
+
+}  // namespace
+}  // namespace lll
