@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
+#include <glm/gtc/packing.hpp>
+#include <stdexcept>
 
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
@@ -92,6 +95,7 @@ class LightLinkedList final : public Technique {
   void render(FrameContext& frame) override;
   bool afterFrame() override;
   std::vector<std::pair<std::string, double>> stats() const override;
+  TileLightLists readLists();
 
  private:
   void createBuffers();
@@ -436,7 +440,49 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
   return s;
 }
 
+TileLightLists LightLinkedList::readLists() {
+  auto download = [&](const Buffer& source) {
+    Buffer staging(context_, source.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+      const VkBufferCopy region{0, 0, source.size()};
+      vkCmdCopyBuffer(cmd, source.handle(), staging.handle(), 1, &region);
+    });
+    std::vector<uint32_t> words(source.size() / 4);
+    std::memcpy(words.data(), staging.mapped(), words.size() * 4);
+    return words;
+  };
+  const std::vector<uint32_t> heads = download(heads_), words = download(links_),
+                              depth = download(tileDepth_);
+  TileLightLists lists;
+  lists.tilesX = tilesX_;
+  lists.tilesY = tilesY_;
+  lists.tiles.resize(tiles_);
+  for (uint32_t t = 0; t < tiles_; ++t) {
+    lists.tileDepth.push_back(std::bit_cast<float>(depth[t]));
+    uint32_t link = heads[t];
+    for (uint64_t guard = 0; link != gpu::kLinkEnd && guard < poolCapacity_; ++guard) {
+      if (linkFormat_ == gpu::kLinkCompact) {
+        if (link == gpu::kCompactLinkEnd) break;
+        const glm::vec2 d = glm::unpackHalf2x16(words[2 * link]);
+        lists.tiles[t].push_back({words[2 * link + 1] >> 24, d.x, d.y});
+        link = words[2 * link + 1] & gpu::kCompactLinkEnd;
+      } else {
+        const uint32_t* w = &words[4 * size_t(link)];
+        lists.tiles[t].push_back({w[2], std::bit_cast<float>(w[0]), std::bit_cast<float>(w[1])});
+        link = w[3];
+      }
+    }
+  }
+  return lists;
+}
+
 }  // namespace
+
+TileLightLists readTileLightLists(Technique& technique) {
+  auto* list = dynamic_cast<LightLinkedList*>(&technique);
+  if (!list) throw std::invalid_argument("readTileLightLists needs the lll technique");
+  return list->readLists();
+}
 
 std::unique_ptr<Technique> createLightLinkedList(Context& context, const GpuScene& scene,
                                                  const RenderSettings& settings,

@@ -3,13 +3,32 @@
 // screen tile, a linked list of the lights that touch it, then every surface walks its tile's list.
 // Frame: lll-clear -> lll-tile-depth -> lll-fill-{shells|ray|compute} -> lll-shade-opaque ->
 //        lll-shade-blend (-> lll-stats on captured frames).
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "lighting/technique.h"
 
 namespace lll {
 
 enum class LllFill { Shells, Ray, Compute };
+
+struct LightLinkRecord {
+  uint32_t light;
+  float minDepth;
+  float maxDepth;
+};
+
+// The lists of the last rendered frame, decoded on the CPU (for tests and tools).
+struct TileLightLists {
+  uint32_t tilesX = 0;
+  uint32_t tilesY = 0;
+  std::vector<float> tileDepth;                     // farthest linear depth of each tile
+  std::vector<std::vector<LightLinkRecord>> tiles;  // each tile's links, head first
+};
+
+// Reads the lists back from an "lll" technique; throws std::invalid_argument for another one.
+TileLightLists readTileLightLists(Technique& technique);
 
 std::unique_ptr<Technique> createLightLinkedList(Context& context, const GpuScene& scene,
                                                  const RenderSettings& settings, const FrameTargets& targets);

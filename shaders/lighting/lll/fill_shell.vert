@@ -30,7 +30,7 @@ void main() {
     float back = inflation / sinAngle;
     float len = range + inflation + back;
     vec3 side = normalize(abs(axis.y) < 0.99 ? cross(axis, vec3(0, 1, 0)) : cross(axis, vec3(1, 0, 0)));
-    vec3 up = cross(side, axis);
+    vec3 up = cross(axis, side);  // (side, up, axis) right-handed: the mesh keeps its winding
     float radius = len * sinAngle / cosAngle;
     world = center - axis * back + (side * inPosition.x + up * inPosition.y) * radius + axis * (inPosition.z * len);
   }
