@@ -1,12 +1,13 @@
 // The techniques "deferred" (Infinity) and "prepass" (Resistance 2 light pre-pass) against the
 // forward reference: whole scenes, the light-volume corner cases (camera inside a point light or a
 // spot cone, lights cut by the near plane, lights behind the camera), translucents and edge AA.
-#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
+#include <string>
 
 #include "scene/mesh_builder.h"
 #include "scene/scene_source.h"
@@ -19,7 +20,7 @@ namespace {
 constexpr uint32_t kWidth = 160;
 constexpr uint32_t kHeight = 90;
 // The bars: deferred evaluates the same BRDF from a G-buffer; the light pre-pass
-// approximates Fresnel (see src/lighting/prepass.cpp).
+// approximates Fresnel (see shaders/lighting/prepass_combine.frag).
 constexpr double kDeferredMinPsnr = 45.0;
 constexpr double kPrepassMinPsnr = 35.0;
 
@@ -325,42 +326,53 @@ Scene roomWithLightsBehindTheCamera(uint32_t* reaching) {
   return scene;
 }
 
-void expectDeferredMatches(const Scene& scene, const std::string& label, int minLitPixels) {
-  const RenderSettings settings = settingsFor("deferred");
-  const Comparison c = compareWithForward(scene, settings, "deferred " + label);
-  EXPECT_GE(c.psnr, kDeferredMinPsnr);
-  EXPECT_LE(c.maxDifference, 2);  // a missing or doubled light would differ by far more
+// Missing or doubled light differs by far more than these: deferred evaluates the same BRDF; the
+// light pre-pass takes the colour of the Fresnel-weighted highlights from the unweighted ones,
+// which moves pixels where differently coloured lights overlap (cave at 1,024 lights: 20).
+constexpr int kDeferredMaxDifference = 2;
+constexpr int kPrepassMaxDifference = 32;
+
+Comparison expectMatchesForward(const std::string& technique, const Scene& scene, const std::string& label,
+                                int minLitPixels) {
+  const bool deferred = technique == "deferred";
+  const RenderSettings settings = settingsFor(technique);
+  Comparison c = compareWithForward(scene, settings, technique + " " + label);
+  EXPECT_GE(c.psnr, deferred ? kDeferredMinPsnr : kPrepassMinPsnr);
+  EXPECT_LE(c.maxDifference, deferred ? kDeferredMaxDifference : kPrepassMaxDifference);
   EXPECT_GT(pixelsLitByLights(scene, c, settings), minLitPixels);
+  return c;
 }
 
 TEST(DeferredLightVolumes, CameraInsidePointLight) {
   const Scene scene = roomWithCameraInsidePointLight();
-  expectDeferredMatches(scene, "camera inside point light", int(kWidth * kHeight) / 2);
-  EXPECT_EQ(stat(test::render(scene, settingsFor("deferred")), "lights-drawn-camera-inside"), 1.0);
+  const Comparison c =
+      expectMatchesForward("deferred", scene, "camera inside point light", int(kWidth * kHeight) / 2);
+  EXPECT_EQ(stat(c.candidate, "lights-drawn-camera-inside"), 1.0);
 }
 
 TEST(DeferredLightVolumes, CameraInsideSpotCone) {
   const Scene scene = roomWithCameraInsideSpotCone();
-  expectDeferredMatches(scene, "camera inside spot cone", int(kWidth * kHeight) / 4);
-  const test::Rendered r = test::render(scene, settingsFor("deferred"));
-  EXPECT_EQ(stat(r, "lights-drawn-camera-inside"), 1.0);
-  EXPECT_EQ(stat(r, "lights-drawn-as-cones"), 1.0);
+  const Comparison c =
+      expectMatchesForward("deferred", scene, "camera inside spot cone", int(kWidth * kHeight) / 4);
+  EXPECT_EQ(stat(c.candidate, "lights-drawn-camera-inside"), 1.0);
+  EXPECT_EQ(stat(c.candidate, "lights-drawn-as-cones"), 1.0);
 }
 
 TEST(DeferredLightVolumes, LightsCrossingTheNearPlane) {
   const Scene scene = roomWithLightsCrossingTheNearPlane();
-  expectDeferredMatches(scene, "lights crossing the near plane", int(kWidth * kHeight) / 10);
+  const Comparison c =
+      expectMatchesForward("deferred", scene, "lights crossing the near plane", int(kWidth * kHeight) / 10);
   // All five come within the near-plane margin, so all are drawn from inside.
-  EXPECT_EQ(stat(test::render(scene, settingsFor("deferred")), "lights-drawn-camera-inside"), 5.0);
+  EXPECT_EQ(stat(c.candidate, "lights-drawn-camera-inside"), 5.0);
 }
 
 TEST(DeferredLightVolumes, LightsBehindTheCamera) {
   uint32_t reaching = 0;
   const Scene scene = roomWithLightsBehindTheCamera(&reaching);
-  expectDeferredMatches(scene, "lights behind the camera", int(kWidth * kHeight) / 4);
-  const test::Rendered r = test::render(scene, settingsFor("deferred"));
-  EXPECT_EQ(stat(r, "lights-drawn"), double(reaching));
-  EXPECT_EQ(stat(r, "lights-drawn-camera-inside"), double(reaching));
+  const Comparison c =
+      expectMatchesForward("deferred", scene, "lights behind the camera", int(kWidth * kHeight) / 4);
+  EXPECT_EQ(stat(c.candidate, "lights-drawn"), double(reaching));
+  EXPECT_EQ(stat(c.candidate, "lights-drawn-camera-inside"), double(reaching));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -403,6 +415,85 @@ TEST(DeferredEdgeAa, LeavesAFlatPlaneUntouched) {
   const test::Rendered smoothed = test::render(scene, settings);
   EXPECT_EQ(changedPixels(plain.ldr, smoothed.ldr), 0);
   EXPECT_GT(pixelsLitByLights(scene, Comparison{plain, plain, 0.0, 0}, settings), int(kWidth * kHeight) / 10);
+}
+
+// ---------------------------------------------------------------------------------------------
+// prepass
+
+TEST(PrepassMatchesForward, DefaultScene) {
+  const Comparison c = compareWithForward(loadedScene("", 0), settingsFor("prepass"), "prepass atrium");
+  EXPECT_GE(c.psnr, kPrepassMinPsnr);
+  EXPECT_LE(c.maxDifference, kPrepassMaxDifference);
+  EXPECT_EQ(stat(c.candidate, "gbuffer-bytes-per-pixel"), 8.0);
+  EXPECT_EQ(stat(c.candidate, "light-buffer-bytes-per-pixel"), 16.0);
+  EXPECT_GT(stat(c.candidate, "lights-stencil-marked"), 0.0);
+}
+
+class PrepassAssets : public ::testing::TestWithParam<AssetCase> {};
+
+TEST_P(PrepassAssets, MatchesForwardOpaque) {
+  const AssetCase& p = GetParam();
+  const Scene scene = withoutBlended(assetScene(p.scene, p.lights));
+  const Comparison c = compareWithForward(scene, overviewSettings(scene, "prepass"),
+                                          std::string("prepass ") + p.scene + " " + std::to_string(p.lights));
+  EXPECT_GE(c.psnr, kPrepassMinPsnr);
+  EXPECT_LE(c.maxDifference, kPrepassMaxDifference);
+  const double drawn = stat(c.candidate, "lights-drawn");
+  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked") + stat(c.candidate, "lights-small-unstenciled"),
+            drawn);
+}
+
+INSTANTIATE_TEST_SUITE_P(PrepassScenes, PrepassAssets,
+                         ::testing::Values(AssetCase{"camp", 64}, AssetCase{"camp", 1024},
+                                           AssetCase{"cave", 64}, AssetCase{"cave", 1024},
+                                           AssetCase{"garage", 64}, AssetCase{"garage", 1024},
+                                           AssetCase{"space", 64}, AssetCase{"space", 1024}),
+                         [](const auto& info) {
+                           return std::string(info.param.scene) + std::to_string(info.param.lights);
+                         });
+
+// Stencil volumes: z-fail where the camera may be inside (the same rooms as for deferred), z-pass
+// for large lights in front of it, no stencil for small ones.
+TEST(PrepassStencilVolumes, CameraInsidePointLight) {
+  const Comparison c = expectMatchesForward("prepass", roomWithCameraInsidePointLight(),
+                                            "camera inside point light", int(kWidth * kHeight) / 2);
+  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked-z-fail"), 1.0);
+}
+
+TEST(PrepassStencilVolumes, CameraInsideSpotCone) {
+  const Comparison c = expectMatchesForward("prepass", roomWithCameraInsideSpotCone(),
+                                            "camera inside spot cone", int(kWidth * kHeight) / 4);
+  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked-z-fail"), 1.0);
+}
+
+TEST(PrepassStencilVolumes, LightsCrossingTheNearPlane) {
+  const Comparison c = expectMatchesForward("prepass", roomWithLightsCrossingTheNearPlane(),
+                                            "lights crossing the near plane", int(kWidth * kHeight) / 10);
+  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked-z-fail"), 5.0);
+}
+
+TEST(PrepassStencilVolumes, LightsBehindTheCamera) {
+  uint32_t reaching = 0;
+  const Comparison c = expectMatchesForward("prepass", roomWithLightsBehindTheCamera(&reaching),
+                                            "lights behind the camera", int(kWidth * kHeight) / 4);
+  EXPECT_EQ(stat(c.candidate, "lights-drawn"), double(reaching));
+  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked-z-fail"), double(reaching));
+}
+
+// Lights in front of the camera, large on screen and partly hidden behind the box, sphere and
+// pillar: marked with z-pass; and far small ones drawn without stencil.
+TEST(PrepassStencilVolumes, ZPassAndSmallLights) {
+  Scene scene = roomScene();
+  scene.lights = {pointLight({-2.0f, 1.0f, -6.5f}, 4.0f, {1.0f, 0.5f, 0.2f}, 20.0f),
+                  pointLight({2.5f, 2.0f, -7.5f}, 4.0f, {0.2f, 0.6f, 1.0f}, 20.0f),
+                  spotLight({-4.0f, 4.5f, -3.0f}, {2.0f, 0.0f, -6.0f}, 12.0f, 35.0f)};
+  for (int i = 0; i < 6; ++i)
+    scene.lights.push_back(pointLight({-5.0f + 2.0f * float(i), 0.3f, -8.6f}, 0.6f, {1, 1, 1}, 2.0f));
+  const Comparison c =
+      expectMatchesForward("prepass", scene, "z-pass and small lights", int(kWidth * kHeight) / 6);
+  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked"), 3.0);
+  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked-z-fail"), 0.0);
+  EXPECT_EQ(stat(c.candidate, "lights-small-unstenciled"), 6.0);
 }
 
 }  // namespace
