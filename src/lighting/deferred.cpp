@@ -6,9 +6,10 @@
 //   deferred-translucent  glass and smoke, unlit or forward-lit (--deferred-translucent)
 // G-buffer, 12 B/px: gbuffer0 RGBA8 sRGB (base colour, metallic) + gbuffer1 RGBA16F (world normal,
 // roughness); with the D32 depth and the RGBA16F accumulation that every technique has, 24 B/px.
-// Infinity used four RGBA16F targets, 32 B/px plus its Z buffer: it stored depth again (D3D9-era
-// hardware could not sample Z), velocity and material ids, and a forward-lit colour that here is
-// the accumulation target itself.
+// Infinity used four RGBA16F targets, 32 B/px plus its Z buffer: depth again in a colour channel,
+// velocity, extinction and a material id that lll does not need, fp16 for base colour, and a
+// forward-lit colour that here is the accumulation target itself. Here depth is the prepass's,
+// sampled directly.
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "lighting/technique.h"
