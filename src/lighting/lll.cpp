@@ -115,6 +115,7 @@ class LightLinkedList final : public Technique {
   LllFill fill_;
   uint32_t linkFormat_;
   uint32_t linkBytes_;
+  bool autoLinkFormat_;
   uint32_t tilesX_ = 0;
   uint32_t tilesY_ = 0;
   uint32_t tiles_ = 0;
@@ -157,7 +158,8 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
     : context_(context),
       fill_(parseFill(settings.lllFill)),
       linkFormat_(parseLinkFormat(settings.lllLink, scene.lightCount())),
-      linkBytes_(linkFormat_ == gpu::kLinkCompact ? 8 : 16) {
+      linkBytes_(linkFormat_ == gpu::kLinkCompact ? 8 : 16),
+      autoLinkFormat_(settings.lllLink == "auto") {
   const uint32_t tile = settings.tileSize;
   if (tile == 0 || tile > gpu::kMaxTileSize || (tile & (tile - 1)) != 0)
     throw InputError(fmt::format("--tile {}: expected 1, 2, 4, 8 or 16", tile));
@@ -410,12 +412,19 @@ void LightLinkedList::measureLists(FrameContext& frame) {
 bool LightLinkedList::afterFrame() {
   std::memcpy(&lastCounters_, counters_.mapped(), sizeof(lastCounters_));
   countersValid_ = true;
-  if (lastCounters_.linksRequested <= poolCapacity_) return false;
-  // Overflow: nothing was silently dropped from the image we keep; grow and render the frame again.
+  const uint64_t requested = lastCounters_.linksRequested;
+  if (requested <= poolCapacity_) return false;
+  // Overflow: the frame is rendered again with a pool that fits; no light is silently dropped.
   ++overflows_;
-  allocatePool(std::min<uint64_t>(
-      maxPoolLinks_, std::max<uint64_t>(lastCounters_.linksRequested,
-                                        uint64_t(double(lastCounters_.linksRequested) * kPoolGrowth))));
+  if (requested > maxPoolLinks_ && linkFormat_ == gpu::kLinkCompact && autoLinkFormat_) {
+    // Compact links address 2^24 links; auto mode moves to wide links rather than fail.
+    linkFormat_ = gpu::kLinkWide;
+    linkBytes_ = 16;
+    uniforms_.params.y = linkFormat_;
+    maxPoolLinks_ = context_.properties().limits.maxStorageBufferRange / linkBytes_;
+  }
+  const uint64_t grown = std::max<uint64_t>(requested, uint64_t(double(requested) * kPoolGrowth));
+  allocatePool(requested > maxPoolLinks_ ? requested : std::min(maxPoolLinks_, grown));
   return true;
 }
 
