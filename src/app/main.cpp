@@ -45,11 +45,6 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(CLI::IsMember({"unlit", "forward"}));
   cmd.add_option("--aa", s.antiAliasing, "none | edge (deferred: edge-detect anti-aliasing)")
       ->check(CLI::IsMember({"none", "edge"}));
-  cmd.add_option("--particles", s.particles, "particle preset name or JSON file (smoke, sparks, dust)");
-  cmd.add_option("--particle-lighting", s.particleLighting, "pixel | vertex")
-      ->check(CLI::IsMember({"pixel", "vertex"}));
-  cmd.add_option("--particle-count", s.particleCount, "particle capacity (0: the preset's)")
-      ->check(CLI::Range(0u, 1000000u));
 }
 
 void addBenchOptions(CLI::App& cmd, lll::bench::BenchOptions& options) {
