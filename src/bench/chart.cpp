@@ -93,46 +93,77 @@ std::optional<std::string> scalingChart(const BenchReport& report, const fs::pat
       plots);
 }
 
-// Per-pass GPU time stacked into one bar per technique; one panel per scene and resolution, each
-// with its own scale (4K with 256 lights would flatten 1080p with 16).
-std::optional<std::string> threelChart(const BenchReport& report, const fs::path& dir) {
-  const Results results = measured(report, "threel");
-  if (results.empty()) return std::nullopt;
-  std::vector<std::string> passes, groups;
+// The bars of the ThreeL chart: passes (the stacked segments, "frame" left out: it is their
+// total) and groups (one panel each: scene and resolution), in the order they ran.
+struct StackedBars {
+  std::vector<std::string> passes;
+  std::vector<std::string> groups;
+};
+
+StackedBars stackedBars(const Results& results) {
+  StackedBars bars;
   for (const ScenarioResult* r : results) {
     for (const PassSummary& p : r->passes)
-      if (p.name != "frame" && std::find(passes.begin(), passes.end(), p.name) == passes.end())
-        passes.push_back(p.name);
-    if (std::find(groups.begin(), groups.end(), r->scenario.name) == groups.end())
-      groups.push_back(r->scenario.name);
+      if (p.name != "frame" && std::find(bars.passes.begin(), bars.passes.end(), p.name) == bars.passes.end())
+        bars.passes.push_back(p.name);
+    if (std::find(bars.groups.begin(), bars.groups.end(), r->scenario.name) == bars.groups.end())
+      bars.groups.push_back(r->scenario.name);
   }
+  return bars;
+}
+
+// One data block per group, one row per technique: its label, then each pass's median (0 if none).
+std::string stackedData(const Results& results, const StackedBars& bars) {
   std::string data;
-  for (const std::string& group : groups) {
-    data += fmt::format("# {}: technique {}\n", group, fmt::join(passes, " "));
+  for (const std::string& group : bars.groups) {
+    data += fmt::format("# {}: technique {}\n", group, fmt::join(bars.passes, " "));
     for (const ScenarioResult* r : results) {
       if (r->scenario.name != group) continue;
       data += gnuplotString(techniqueLabel(r->scenario.settings));
-      for (const std::string& name : passes)
+      for (const std::string& name : bars.passes)
         data += fmt::format(" {}", r->pass(name) ? r->pass(name)->medianMs : 0.0);
       data += "\n";
     }
     data += "\n\n";
   }
-  writeFile(dir / "threel.dat", data);
-  const size_t columns = std::min<size_t>(groups.size(), 2), rows = (groups.size() + 1) / 2;
+  return data;
+}
+
+// The tallest stack in a group, so its panel can leave room above it for the key.
+double tallestStack(const Results& results, const StackedBars& bars, const std::string& group) {
+  double tallest = 0.0;
+  for (const ScenarioResult* r : results) {
+    if (r->scenario.name != group) continue;
+    double height = 0.0;
+    for (const std::string& name : bars.passes) height += r->pass(name) ? r->pass(name)->medianMs : 0.0;
+    tallest = std::max(tallest, height);
+  }
+  return tallest;
+}
+
+// Per-pass GPU time stacked into one bar per technique; one panel per scene and resolution, each
+// with its own scale (4K with 256 lights would flatten 1080p with 16).
+std::optional<std::string> threelChart(const BenchReport& report, const fs::path& dir) {
+  const Results results = measured(report, "threel");
+  if (results.empty()) return std::nullopt;
+  const StackedBars bars = stackedBars(results);
+  writeFile(dir / "threel.dat", stackedData(results, bars));
+  const size_t columns = std::min<size_t>(bars.groups.size(), 2), rows = (bars.groups.size() + 1) / 2;
   std::string gp = fmt::format(
       "set output 'threel.png'\nset multiplot layout {},{} title {}\n"
       "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.85 border -1\n"
-      "set boxwidth 0.6\nset grid ytics\nset ylabel 'GPU time, ms (median)'\nset yrange [0:*]\n"
-      "set key top left box opaque\n",
+      "set boxwidth 0.6\nset grid ytics\nset ylabel 'GPU time, ms (median)'\nset key top left box opaque\n",
       rows, columns,
       gnuplotString(fmt::format("ThreeL benchmark: per-pass GPU time, all lights reach every pixel\n{}",
                                 subtitle(report))));
-  for (size_t g = 0; g < groups.size(); ++g) {
-    gp += fmt::format("set title {}\nplot ", gnuplotString(groups[g]));
-    for (size_t p = 0; p < passes.size(); ++p)
+  for (size_t g = 0; g < bars.groups.size(); ++g) {
+    // Headroom above the tallest bar for the key, one line per pass (a 1 ms scale without timestamps).
+    const double tallest = tallestStack(results, bars, bars.groups[g]);
+    const double top = (tallest > 0.0 ? tallest : 1.0) * (1.2 + 0.08 * bars.passes.size());
+    gp += fmt::format("set title {}\nset yrange [0:{}]\nplot ", gnuplotString(bars.groups[g]), top);
+    for (size_t p = 0; p < bars.passes.size(); ++p)
       gp += fmt::format("{}'threel.dat' index {} using {}{} title {}", p ? ", " : "", g, p + 2,
-                        p ? "" : ":xtic(1)", gnuplotString(passes[p]));
+                        p ? "" : ":xtic(1)", gnuplotString(bars.passes[p]));
     gp += "\n";
   }
   return gp + "unset multiplot\n";
@@ -152,7 +183,8 @@ std::optional<std::string> tilesChart(const BenchReport& report, const fs::path&
   const ScenarioResult& first = *results.front();
   return fmt::format(
       "set output 'tiles.png'\nset title {}\nset xlabel 'tile size, pixels'\nset logscale x 2\n"
-      "set xtics (1, 2, 4, 8, 16)\nset ylabel 'GPU frame time, ms (median; bars: min to max)'\n"
+      "set xrange [0.75:21]\nset xtics (1, 2, 4, 8, 16)\nset ylabel 'GPU frame time, ms (median; bars: min "
+      "to max)'\n"
       "set y2label 'GPU memory of the lighting data, MiB'\nset ytics nomirror\nset y2tics\n"
       "set yrange [0:*]\nset y2range [0:*]\nset grid xtics ytics\nset key top center box opaque\n"
       "plot 'tiles.dat' using 1:2:3:4 with yerrorlines lw 2 pt 7 title 'frame time', "
