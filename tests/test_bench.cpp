@@ -1,0 +1,273 @@
+// `lll bench`: the statistics, the suites' contents, a real --quick ThreeL run written to disk and
+// read back (CSV rows, JSON, summary, charts), and the CLI's answer to an unknown suite.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "bench/bench.h"
+#include "bench/report.h"
+#include "lighting/technique.h"
+#include "scene/errors.h"
+#include "test_support.h"
+
+namespace lll::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+FrameResult frameOf(std::initializer_list<std::pair<const char*, double>> passes) {
+  FrameResult frame;
+  for (const auto& [name, ms] : passes) frame.passes.push_back({name, ms});
+  return frame;
+}
+
+TEST(BenchStats, MedianMinMaxOfKnownSamples) {
+  const std::vector<FrameResult> odd = {frameOf({{"a", 3.0}, {"b", 10.0}}),
+                                        frameOf({{"a", 1.0}, {"b", 30.0}}),
+                                        frameOf({{"a", 2.0}, {"b", 20.0}})};
+  const auto s = summarizePasses(odd);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].name, "a");
+  EXPECT_DOUBLE_EQ(s[0].medianMs, 2.0);
+  EXPECT_DOUBLE_EQ(s[0].minMs, 1.0);
+  EXPECT_DOUBLE_EQ(s[0].maxMs, 3.0);
+  EXPECT_EQ(s[1].name, "b");
+  EXPECT_DOUBLE_EQ(s[1].medianMs, 20.0);
+  const std::vector<FrameResult> even = {frameOf({{"a", 4.0}}), frameOf({{"a", 1.0}}), frameOf({{"a", 3.0}}),
+                                         frameOf({{"a", 2.0}})};
+  EXPECT_DOUBLE_EQ(summarizePasses(even)[0].medianMs, 2.5);
+}
+
+size_t variantsPerLightCount() {
+  size_t n = 0;
+  for (const TechniqueInfo& t : techniques()) n += t.name == "lll" ? 3 : 1;
+  return n;
+}
+
+TEST(BenchSuites, ScalingRunsEveryRegisteredTechniqueAndEveryFill) {
+  const auto quick = buildSuite("scaling", SuiteOptions{.quick = true});
+  EXPECT_EQ(quick.size(), 3 * variantsPerLightCount());
+  const auto full = buildSuite("scaling", SuiteOptions{});
+  EXPECT_EQ(full.size(), 7 * variantsPerLightCount());
+  EXPECT_EQ(full.back().scene.extraLights, 65536u);
+  EXPECT_EQ(full.back().settings.width, 1920u);
+}
+
+TEST(BenchSuites, ForwardOverManyLightsIsSkippedOnCpuUnlessAsked) {
+  size_t skipped = 0;
+  for (const Scenario& s : buildSuite("scaling", SuiteOptions{.cpuDevice = true})) {
+    EXPECT_EQ(!s.skip.empty(), s.settings.technique == "forward" && s.scene.extraLights > 4096) << s.name;
+    skipped += !s.skip.empty();
+  }
+  EXPECT_EQ(skipped, 2u);  // 16384 and 65536 lights
+  for (const Scenario& s : buildSuite("scaling", SuiteOptions{.fullForward = true, .cpuDevice = true}))
+    EXPECT_TRUE(s.skip.empty());
+}
+
+TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {
+  const auto threel = buildSuite("threel", SuiteOptions{.quick = true});
+  ASSERT_EQ(threel.size(), 16u);
+  std::set<std::string> labels, names;
+  for (const Scenario& s : threel) {
+    labels.insert(techniqueLabel(s.settings));
+    names.insert(s.name);
+    EXPECT_EQ(s.settings.tileSize, 8u);
+  }
+  EXPECT_EQ(labels, (std::set<std::string>{"lll/shells", "lll/ray", "lll/compute", "forward"}));
+  EXPECT_EQ(names, (std::set<std::string>{"threel16 320x180", "threel16 640x360", "threel256 320x180",
+                                          "threel256 640x360"}));
+  EXPECT_THROW(buildSuite("nope", SuiteOptions{}), InputError);
+}
+
+// Splits one CSV line, honouring quoted fields (device names hold commas).
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '"' && quoted && i + 1 < line.size() && line[i + 1] == '"')
+      fields.back() += line[++i];
+    else if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      fields.emplace_back();
+    else
+      fields.back() += c;
+  }
+  return fields;
+}
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+bool gnuplotInstalled() {
+  return std::system("command -v gnuplot >/dev/null 2>&1") == 0;
+}
+
+void expectPng(const fs::path& path) {
+  const std::string bytes = readText(path);
+  ASSERT_GE(bytes.size(), 8u) << path;
+  EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << path;
+}
+
+fs::path freshDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("lll-{}-{}", name, getpid());
+  fs::remove_all(dir);
+  return dir;
+}
+
+// Every CSV row: its key (scenario, technique, fill), with times checked on the way.
+std::map<std::string, size_t> checkCsv(const fs::path& path, const Context& context) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line,
+            "suite,scenario,scene,lights,width,height,technique,fill,tile,pass,median_ms,min_ms,max_ms,"
+            "memory_bytes,device,driver,commit,date");
+  std::map<std::string, size_t> rows;
+  while (std::getline(in, line)) {
+    const auto f = csvFields(line);
+    EXPECT_EQ(f.size(), 18u) << line;
+    if (f.size() != 18) continue;
+    const double median = std::stod(f[10]), min = std::stod(f[11]), max = std::stod(f[12]);
+    EXPECT_TRUE(std::isfinite(median) && min > 0.0 && min <= median && median <= max) << line;
+    EXPECT_GE(std::stod(f[13]), 4.0 * std::stod(f[4]) * std::stod(f[5])) << "memory holds the depth";
+    EXPECT_EQ(f[14], context.info().name);
+    EXPECT_EQ(f[16], gitCommit());
+    ++rows[f[1] + "|" + f[6] + "|" + f[7]];
+  }
+  return rows;
+}
+
+TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
+  Context& context = test::gpuContext();
+  const size_t before = context.validationMessages().size();
+  BenchOptions options;
+  options.suites = {"threel"};
+  options.quick = true;
+  options.shrink = 20;  // 16x9 and 32x18: the suite's shape at a size lavapipe shades in moments
+  const BenchReport report = runBench(context, options);
+  const fs::path dir = freshDir("bench-test");
+  writeReport(report, dir);
+
+  ASSERT_EQ(report.results.size(), 16u);
+  std::map<std::string, size_t> expectedRows;
+  for (const ScenarioResult& r : report.results) {
+    const std::string& technique = r.scenario.settings.technique;
+    const bool built = std::any_of(techniques().begin(), techniques().end(),
+                                   [&](const TechniqueInfo& t) { return t.name == technique; });
+    EXPECT_EQ(r.status, built ? Status::Ok : Status::Skipped) << r.scenario.name << ": " << r.message;
+    if (r.status != Status::Ok) continue;
+    EXPECT_NE(r.pass("frame"), nullptr);
+    EXPECT_EQ(r.lightCount, r.scenario.scene.scene == "threel16" ? 16u : 256u);
+    const std::string fill = technique == "lll" ? r.scenario.settings.lllFill : "";
+    if (technique == "lll") {
+      EXPECT_GT(r.memory.size(), 1u) << "the link pool and heads, not only depth";
+    }
+    expectedRows[r.scenario.name + "|" + technique + "|" + fill] = r.passes.size();
+  }
+  EXPECT_GE(expectedRows.size(), 4u);  // forward at least, in all four scene x size
+  EXPECT_EQ(checkCsv(dir / "results.csv", context), expectedRows);
+
+  const auto json = nlohmann::json::parse(readText(dir / "results.json"));
+  EXPECT_EQ(json["device"], context.info().name);
+  EXPECT_EQ(json["commit"], gitCommit());
+  ASSERT_EQ(json["results"].size(), 16u);
+  for (const auto& r : json["results"]) {
+    EXPECT_EQ(r["driver"], context.info().driver);
+    EXPECT_FALSE(r["date"].get<std::string>().empty());
+    if (r["status"] == "ok") {
+      EXPECT_GE(r["memory"]["depth_bytes"].get<double>(), 4.0 * 16 * 9);
+    }
+  }
+  const std::string summary = readText(dir / "summary.md");
+  EXPECT_NE(summary.find(context.info().name), std::string::npos);
+  EXPECT_NE(summary.find("| forward |"), std::string::npos);
+  if (gnuplotInstalled()) expectPng(dir / "threel.png");
+  const auto messages = context.validationMessages();
+  for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
+  fs::remove_all(dir);
+}
+
+ScenarioResult fakeResult(const std::string& suite, const std::string& name, const std::string& technique,
+                          uint32_t lights, std::vector<PassSummary> passes) {
+  ScenarioResult r;
+  r.scenario.suite = suite;
+  r.scenario.name = name;
+  r.scenario.scene.scene = "atrium";
+  r.scenario.settings.technique = technique;
+  r.lightCount = lights;
+  r.passes = std::move(passes);
+  r.memory = {{"depth_bytes", 8.0e6}, {"link_pool_bytes", 1.0e6 * lights}};
+  return r;
+}
+
+// Charts from made-up numbers, with techniques that may not be built yet.
+BenchReport syntheticReport() {
+  BenchReport report;
+  report.suites = {"scaling", "threel", "tiles"};
+  for (const uint32_t lights : {16u, 256u, 4096u}) {
+    const double l = lights;
+    report.results.push_back(fakeResult("scaling", fmt::format("{} lights", lights), "forward", lights,
+                                        {{"frame", 0.1 * l, 0.09 * l, 0.12 * l}}));
+    report.results.push_back(fakeResult("scaling", fmt::format("{} lights", lights), "lll", lights,
+                                        {{"frame", 2.0 + 0.01 * l, 1.9 + 0.01 * l, 2.2 + 0.01 * l}}));
+  }
+  for (const char* name : {"threel16 1920x1080", "threel16 3840x2160"}) {
+    report.results.push_back(
+        fakeResult("threel", name, "forward", 16,
+                   {{"depth-prepass", 1, 1, 1}, {"forward-opaque", 8, 8, 9}, {"frame", 9, 9, 10}}));
+    report.results.push_back(fakeResult(
+        "threel", name, "lll", 16,
+        {{"depth-prepass", 1, 1, 1}, {"lll-fill", 2, 2, 2}, {"lll-shade", 3, 3, 3}, {"frame", 6, 6, 6}}));
+  }
+  for (const uint32_t tile : {1u, 2u, 4u, 8u, 16u}) {
+    ScenarioResult r = fakeResult("tiles", fmt::format("tile {}", tile), "lll", 1024,
+                                  {{"frame", 4.0 + 8.0 / tile, 4.0, 5.0 + 8.0 / tile}});
+    r.scenario.settings.tileSize = tile;
+    r.memory = {{"link_pool_bytes", 64.0e6 / (tile * tile)}};
+    report.results.push_back(r);
+  }
+  return report;
+}
+
+TEST(BenchCharts, EverySuiteWithResultsGetsAValidPng) {
+  const fs::path dir = freshDir("bench-charts");
+  fs::create_directories(dir);
+  const auto charts = writeCharts(syntheticReport(), dir);
+  EXPECT_TRUE(fs::exists(dir / "charts.gp"));
+  if (gnuplotInstalled()) {
+    EXPECT_EQ(charts.size(), 3u);
+    for (const fs::path& png : {dir / "scaling.png", dir / "threel.png", dir / "tiles.png"}) expectPng(png);
+  }
+  fs::remove_all(dir);
+}
+
+TEST(BenchCli, UnknownSuiteIsBadInputNamingTheKnownSuites) {
+  const std::string command = std::string(LLL_BINARY) + " bench --suite nope --out /dev/null 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buffer[256];
+  while (fgets(buffer, sizeof(buffer), pipe)) output += buffer;
+  const int status = pclose(pipe);
+  EXPECT_EQ(WEXITSTATUS(status), 2) << output;
+  EXPECT_NE(output.find("threel"), std::string::npos) << output;
+  EXPECT_NE(output.find("scaling"), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace lll::bench
