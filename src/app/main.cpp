@@ -50,6 +50,8 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
 void addBenchOptions(CLI::App& cmd, lll::bench::BenchOptions& options) {
   cmd.add_option("--suite", options.suites, "suite to run, repeatable (default: every suite)")
       ->check(CLI::IsMember(lll::bench::suiteNames()));
+  cmd.add_option("--technique", options.techniques,
+                 "run only this technique's scenarios, repeatable (default: all; see `lll techniques`)");
   cmd.add_flag("--quick", options.quick,
                "tiny sizes and few frames: a suite runs in under a minute on lavapipe");
   cmd.add_flag("--full-forward", options.fullForward,

@@ -123,6 +123,23 @@ std::vector<std::string> chosenSuites(const BenchOptions& options) {
   return suites;
 }
 
+// Throws InputError for a --suite or --technique that does not exist.
+void checkNames(const BenchOptions& options) {
+  chosenSuites(options);
+  for (const std::string& technique : options.techniques) findTechnique(technique);
+}
+
+// The suites' scenarios, less those of techniques that --technique left out.
+std::vector<Scenario> chosenScenarios(const BenchReport& report, const SuiteOptions& suiteOptions) {
+  const std::vector<std::string>& only = report.onlyTechniques;
+  std::vector<Scenario> scenarios;
+  for (const std::string& suite : report.suites)
+    for (Scenario& s : buildSuite(suite, suiteOptions))
+      if (only.empty() || std::find(only.begin(), only.end(), s.settings.technique) != only.end())
+        scenarios.push_back(std::move(s));
+  return scenarios;
+}
+
 BenchReport reportHeader(const Context& context, const BenchOptions& options) {
   BenchReport report;
   report.device = context.info();
@@ -133,6 +150,7 @@ BenchReport reportHeader(const Context& context, const BenchOptions& options) {
   report.warmupFrames = options.warmupFrames.value_or(options.quick ? kQuickWarmupFrames : kWarmupFrames);
   report.timedFrames = options.timedFrames.value_or(options.quick ? kQuickTimedFrames : kTimedFrames);
   report.suites = chosenSuites(options);
+  report.onlyTechniques = options.techniques;
   return report;
 }
 
@@ -163,15 +181,12 @@ const PassSummary* ScenarioResult::pass(const std::string& name) const {
 }
 
 BenchReport runBench(Context& context, const BenchOptions& options) {
+  checkNames(options);
   BenchReport report = reportHeader(context, options);
   if (report.timedFrames == 0) throw InputError("--frames 0: at least one timed frame is needed");
   const SuiteOptions suiteOptions{options.quick, options.fullForward, context.isCpuDevice(),
                                   std::max(1u, options.shrink)};
-  std::vector<Scenario> scenarios;
-  for (const std::string& suite : report.suites) {
-    const std::vector<Scenario> built = buildSuite(suite, suiteOptions);
-    scenarios.insert(scenarios.end(), built.begin(), built.end());
-  }
+  const std::vector<Scenario> scenarios = chosenScenarios(report, suiteOptions);
   const FrameCounts counts{report.warmupFrames, report.timedFrames};
   SceneCache scenes;
   ProgressBar progress(scenarios.size());
@@ -190,7 +205,7 @@ BenchReport runBench(Context& context, const BenchOptions& options) {
 }
 
 int runBenchCommand(const BenchOptions& options) {
-  chosenSuites(options);  // reject a bad suite name before starting Vulkan
+  checkNames(options);  // before the slow start of Vulkan
   Context context(options.device);
   const BenchReport report = runBench(context, options);
   writeReport(report, options.outDir);

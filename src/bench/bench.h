@@ -15,7 +15,8 @@
 namespace lll::bench {
 
 struct BenchOptions {
-  std::vector<std::string> suites;  // empty: every suite
+  std::vector<std::string> suites;      // empty: every suite
+  std::vector<std::string> techniques;  // only these techniques' scenarios; empty: all
   bool quick = false;
   bool fullForward = false;
   std::optional<uint32_t> warmupFrames;  // default kWarmupFrames (kQuickWarmupFrames with quick)
@@ -62,6 +63,7 @@ struct BenchReport {
   uint32_t warmupFrames = 0;
   uint32_t timedFrames = 0;
   std::vector<std::string> suites;
+  std::vector<std::string> onlyTechniques;  // --technique: the other scenarios were left out
   std::vector<ScenarioResult> results;
   size_t validationMessages = 0;
 };

@@ -82,6 +82,7 @@ void writeResultsJson(const BenchReport& report, const std::filesystem::path& pa
       {"warmup_frames", report.warmupFrames},
       {"timed_frames", report.timedFrames},
       {"suites", report.suites},
+      {"only_techniques", report.onlyTechniques},
       {"validation_messages", report.validationMessages},
   };
   nlohmann::json results = nlohmann::json::array();

@@ -123,6 +123,9 @@ std::string header(const BenchReport& report) {
   md += tableRow({"date", report.date});
   md += tableRow({"frames", fmt::format("{} warm-up + {} timed per scenario{}", report.warmupFrames,
                                         report.timedFrames, report.quick ? " (--quick: tiny sizes)" : "")});
+  if (!report.onlyTechniques.empty())
+    md += tableRow(
+        {"techniques", fmt::format("only {} (--technique)", fmt::join(report.onlyTechniques, ", "))});
   if (!report.timestamps) md += tableRow({"warning", "the device has no GPU timestamps: every time is 0"});
   return md + "\n";
 }
