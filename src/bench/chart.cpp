@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "bench/report.h"
@@ -82,15 +83,17 @@ std::optional<std::string> scalingChart(const BenchReport& report, const fs::pat
     ++index;
   }
   writeFile(dir / "scaling.dat", data);
+  std::set<uint64_t> counts;  // ticks where the measurements are, a little room either side
+  for (const ScenarioResult* r : results) counts.insert(r->lightCount);
   const RenderSettings& s = results.front()->scenario.settings;
   return fmt::format(
       "set output 'scaling.png'\n"
       "set title {}\nset xlabel 'lights in the scene (its own plus the random ones added)'\n"
-      "set ylabel 'GPU frame time, ms (median; bars: min to max)'\n"
-      "set logscale xy\nset grid xtics ytics mxtics mytics\nset key top left box opaque\n{}\n",
+      "set ylabel 'GPU frame time, ms (median; bars: min to max)'\nset logscale xy\n"
+      "set xrange [{}:{}]\nset xtics ({})\nset grid xtics ytics mytics\nset key top left box opaque\n{}\n",
       gnuplotString(fmt::format("Frame time against light count: {}, {}x{}\n{}",
                                 results.front()->scenario.scene.scene, s.width, s.height, subtitle(report))),
-      plots);
+      double(*counts.begin()) / 1.25, double(*counts.rbegin()) * 1.25, fmt::join(counts, ", "), plots);
 }
 
 // The bars of the ThreeL chart: passes (the stacked segments, "frame" left out: it is their
