@@ -65,7 +65,7 @@ void append(std::vector<Scenario>& to, const std::vector<Scenario>& from) {
 
 // ThreeL's test: every light reaches every pixel, at 1080p and 4K, tile 8, LLL fills vs forward.
 std::vector<Scenario> threelSuite(const SuiteOptions& options) {
-  const std::vector<Size> sizes = options.quick ? std::vector<Size>{{320, 180}, {640, 360}}
+  const std::vector<Size> sizes = options.quick ? std::vector<Size>{{32, 18}, {64, 36}}
                                                 : std::vector<Size>{{1920, 1080}, {3840, 2160}};
   std::vector<Scenario> out;
   for (const char* scene : {"threel16", "threel256"}) {
