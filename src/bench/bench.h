@@ -21,7 +21,6 @@ struct BenchOptions {
   bool fullForward = false;
   std::optional<uint32_t> warmupFrames;  // default kWarmupFrames (kQuickWarmupFrames with quick)
   std::optional<uint32_t> timedFrames;   // default kTimedFrames (kQuickTimedFrames with quick)
-  uint32_t shrink = 1;                   // divides every scenario's width and height (tests)
   std::filesystem::path outDir = "bench-out";
   ContextOptions device;
 };

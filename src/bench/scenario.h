@@ -25,7 +25,6 @@ struct SuiteOptions {
   bool quick = false;        // tiny sizes and counts, so a suite runs on lavapipe in under a minute
   bool fullForward = false;  // forward with more than kForwardLightLimitOnCpu lights on a CPU device
   bool cpuDevice = false;    // lavapipe: hours per frame for brute force over tens of thousands of lights
-  uint32_t shrink = 1;       // divides every width and height (tests)
 };
 
 // Brute-force forward over more lights than this is skipped on a CPU device unless --full-forward.

@@ -22,15 +22,15 @@ struct Size {
 
 const std::vector<std::string> kLllFills = {"shells", "ray", "compute"};
 
-// A scenario of `suite` rendering `scene` at `size` (shrunk for tests) with default settings.
-Scenario makeScenario(const std::string& suite, const std::string& name, const SceneRequest& scene, Size size,
-                      const SuiteOptions& options) {
+// A scenario of `suite` rendering `scene` at `size` with default settings.
+Scenario makeScenario(const std::string& suite, const std::string& name, const SceneRequest& scene,
+                      Size size) {
   Scenario s;
   s.suite = suite;
   s.name = name;
   s.scene = scene;
-  s.settings.width = std::max(1u, size.width / options.shrink);
-  s.settings.height = std::max(1u, size.height / options.shrink);
+  s.settings.width = size.width;
+  s.settings.height = size.height;
   return s;
 }
 
@@ -65,13 +65,13 @@ void append(std::vector<Scenario>& to, const std::vector<Scenario>& from) {
 
 // ThreeL's test: every light reaches every pixel, at 1080p and 4K, tile 8, LLL fills vs forward.
 std::vector<Scenario> threelSuite(const SuiteOptions& options) {
-  const std::vector<Size> sizes = options.quick ? std::vector<Size>{{32, 18}, {64, 36}}
-                                                : std::vector<Size>{{1920, 1080}, {3840, 2160}};
+  const std::vector<Size> sizes =
+      options.quick ? std::vector<Size>{{32, 18}, {64, 36}} : std::vector<Size>{{1920, 1080}, {3840, 2160}};
   std::vector<Scenario> out;
   for (const char* scene : {"threel16", "threel256"}) {
     for (const Size size : sizes) {
       Scenario base = makeScenario("threel", fmt::format("{} {}x{}", scene, size.width, size.height),
-                                   SceneRequest{scene, 0, 1}, size, options);
+                                   SceneRequest{scene, 0, 1}, size);
       base.settings.tileSize = 8;
       append(out, perTechnique(base, {"lll", "forward"}, true));
     }
@@ -88,7 +88,7 @@ std::vector<Scenario> scalingSuite(const SuiteOptions& options) {
   std::vector<Scenario> out;
   for (const uint32_t lights : counts) {
     const Scenario base = makeScenario("scaling", fmt::format("{} lights", lights),
-                                       SceneRequest{kDefaultSceneName, lights, 1}, size, options);
+                                       SceneRequest{kDefaultSceneName, lights, 1}, size);
     for (Scenario s : perTechnique(base, registeredTechniques(), true)) {
       if (s.settings.technique == "forward" && lights > kForwardLightLimitOnCpu && options.cpuDevice &&
           !options.fullForward)
@@ -106,8 +106,8 @@ std::vector<Scenario> tilesSuite(const SuiteOptions& options) {
   const Size size = options.quick ? Size{160, 90} : Size{1920, 1080};
   std::vector<Scenario> out;
   for (const uint32_t tile : {1u, 2u, 4u, 8u, 16u}) {
-    Scenario s = makeScenario("tiles", fmt::format("tile {}", tile),
-                              SceneRequest{kDefaultSceneName, lights, 1}, size, options);
+    Scenario s =
+        makeScenario("tiles", fmt::format("tile {}", tile), SceneRequest{kDefaultSceneName, lights, 1}, size);
     s.settings.technique = "lll";
     s.settings.tileSize = tile;
     out.push_back(s);
@@ -124,7 +124,7 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
   std::vector<Scenario> out;
   for (const uint32_t particles : counts) {
     Scenario base = makeScenario("smoke", fmt::format("{} particles", particles),
-                                 SceneRequest{kDefaultSceneName, 256, 1}, size, options);
+                                 SceneRequest{kDefaultSceneName, 256, 1}, size);
     base.settings.particles = "smoke";
     base.settings.particleCount = particles;
     append(out, perTechnique(base, registeredTechniques(), false));
