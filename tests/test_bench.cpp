@@ -47,6 +47,16 @@ TEST(BenchStats, MedianMinMaxOfKnownSamples) {
   EXPECT_DOUBLE_EQ(summarizePasses(even)[0].medianMs, 2.5);
 }
 
+TEST(BenchStats, PassOrderKeepsEveryFramesOwnOrder) {
+  ScenarioResult lll, forward;
+  for (const char* name : {"depth-prepass", "lll-fill", "lll-shade", "tonemap", "frame"})
+    lll.passes.push_back({name});
+  for (const char* name : {"depth-prepass", "forward-opaque", "tonemap", "frame"})
+    forward.passes.push_back({name});
+  EXPECT_EQ(passOrder({&lll, &forward}), (std::vector<std::string>{"depth-prepass", "lll-fill", "lll-shade",
+                                                                   "forward-opaque", "tonemap", "frame"}));
+}
+
 size_t variantsPerLightCount() {
   size_t n = 0;
   for (const TechniqueInfo& t : techniques()) n += t.name == "lll" ? 3 : 1;

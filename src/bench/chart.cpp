@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <fstream>
 #include <optional>
@@ -24,7 +25,14 @@ namespace {
 namespace fs = std::filesystem;
 using Results = std::vector<const ScenarioResult*>;
 
-constexpr const char* kTerminal = "set terminal pngcairo noenhanced size 1280,800 font 'sans,11'";
+// Twelve colours that stay apart (Tableau 10 and two more): a ThreeL frame has about ten passes.
+const std::array<const char*, 12> kPalette = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2",
+                                              "#59a14f", "#edc948", "#b07aa1", "#ff9da7",
+                                              "#9c755f", "#bab0ac", "#1f3b5c", "#8cd17d"};
+
+std::string terminal(int width, int height) {
+  return fmt::format("set terminal pngcairo noenhanced size {},{} font 'sans,11'", width, height);
+}
 
 // A double-quoted gnuplot string: newlines become \n escapes, which only such strings expand.
 std::string gnuplotString(const std::string& text) {
@@ -87,10 +95,11 @@ std::optional<std::string> scalingChart(const BenchReport& report, const fs::pat
   for (const ScenarioResult* r : results) counts.insert(r->lightCount);
   const RenderSettings& s = results.front()->scenario.settings;
   return fmt::format(
-      "set output 'scaling.png'\n"
+      "{}\nset output 'scaling.png'\n"
       "set title {}\nset xlabel 'lights in the scene (its own plus the random ones added)'\n"
       "set ylabel 'GPU frame time, ms (median; bars: min to max)'\nset logscale xy\n"
       "set xrange [{}:{}]\nset xtics ({})\nset grid xtics ytics mytics\nset key top left box opaque\n{}\n",
+      terminal(1280, 800),
       gnuplotString(fmt::format("Frame time against light count: {}, {}x{}\n{}",
                                 results.front()->scenario.scene.scene, s.width, s.height, subtitle(report))),
       double(*counts.begin()) / 1.25, double(*counts.rbegin()) * 1.25, fmt::join(counts, ", "), plots);
@@ -105,13 +114,11 @@ struct StackedBars {
 
 StackedBars stackedBars(const Results& results) {
   StackedBars bars;
-  for (const ScenarioResult* r : results) {
-    for (const PassSummary& p : r->passes)
-      if (p.name != "frame" && std::find(bars.passes.begin(), bars.passes.end(), p.name) == bars.passes.end())
-        bars.passes.push_back(p.name);
+  for (const std::string& pass : passOrder(results))
+    if (pass != "frame") bars.passes.push_back(pass);
+  for (const ScenarioResult* r : results)
     if (std::find(bars.groups.begin(), bars.groups.end(), r->scenario.name) == bars.groups.end())
       bars.groups.push_back(r->scenario.name);
-  }
   return bars;
 }
 
@@ -132,18 +139,6 @@ std::string stackedData(const Results& results, const StackedBars& bars) {
   return data;
 }
 
-// The tallest stack in a group, so its panel can leave room above it for the key.
-double tallestStack(const Results& results, const StackedBars& bars, const std::string& group) {
-  double tallest = 0.0;
-  for (const ScenarioResult* r : results) {
-    if (r->scenario.name != group) continue;
-    double height = 0.0;
-    for (const std::string& name : bars.passes) height += r->pass(name) ? r->pass(name)->medianMs : 0.0;
-    tallest = std::max(tallest, height);
-  }
-  return tallest;
-}
-
 // Per-pass GPU time stacked into one bar per technique; one panel per scene and resolution, each
 // with its own scale (4K with 256 lights would flatten 1080p with 16).
 std::optional<std::string> threelChart(const BenchReport& report, const fs::path& dir) {
@@ -153,20 +148,18 @@ std::optional<std::string> threelChart(const BenchReport& report, const fs::path
   writeFile(dir / "threel.dat", stackedData(results, bars));
   const size_t columns = std::min<size_t>(bars.groups.size(), 2), rows = (bars.groups.size() + 1) / 2;
   std::string gp = fmt::format(
-      "set output 'threel.png'\nset multiplot layout {},{} title {}\n"
-      "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.85 border -1\n"
-      "set boxwidth 0.6\nset grid ytics\nset ylabel 'GPU time, ms (median)'\nset key top left box opaque\n",
-      rows, columns,
+      "{}\nset output 'threel.png'\nset multiplot layout {},{} title {}\n"
+      "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.9 border -1\n"
+      "set boxwidth 0.6\nset grid ytics\nset ylabel 'GPU time, ms (median)'\nset yrange [0:*]\n"
+      "set key outside right top box\n",
+      terminal(1600, 1000), rows, columns,
       gnuplotString(fmt::format("ThreeL benchmark: per-pass GPU time, all lights reach every pixel\n{}",
                                 subtitle(report))));
   for (size_t g = 0; g < bars.groups.size(); ++g) {
-    // Headroom above the tallest bar for the key, one line per pass (a 1 ms scale without timestamps).
-    const double tallest = tallestStack(results, bars, bars.groups[g]);
-    const double top = (tallest > 0.0 ? tallest : 1.0) * (1.2 + 0.08 * bars.passes.size());
-    gp += fmt::format("set title {}\nset yrange [0:{}]\nplot ", gnuplotString(bars.groups[g]), top);
+    gp += fmt::format("set title {}\nplot ", gnuplotString(bars.groups[g]));
     for (size_t p = 0; p < bars.passes.size(); ++p)
-      gp += fmt::format("{}'threel.dat' index {} using {}{} title {}", p ? ", " : "", g, p + 2,
-                        p ? "" : ":xtic(1)", gnuplotString(bars.passes[p]));
+      gp += fmt::format("{}'threel.dat' index {} using {}{} lc rgb '{}' title {}", p ? ", " : "", g, p + 2,
+                        p ? "" : ":xtic(1)", kPalette[p % kPalette.size()], gnuplotString(bars.passes[p]));
     gp += "\n";
   }
   return gp + "unset multiplot\n";
@@ -185,13 +178,14 @@ std::optional<std::string> tilesChart(const BenchReport& report, const fs::path&
   writeFile(dir / "tiles.dat", data);
   const ScenarioResult& first = *results.front();
   return fmt::format(
-      "set output 'tiles.png'\nset title {}\nset xlabel 'tile size, pixels'\nset logscale x 2\n"
-      "set xrange [0.75:21]\nset xtics (1, 2, 4, 8, 16)\nset ylabel 'GPU frame time, ms (median; bars: min "
-      "to max)'\n"
+      "{}\nset output 'tiles.png'\nset title {}\nset xlabel 'tile size, pixels'\nset logscale x 2\n"
+      "set xrange [0.75:21]\nset xtics (1, 2, 4, 8, 16)\n"
+      "set ylabel 'GPU frame time, ms (median; bars: min to max)'\n"
       "set y2label 'GPU memory of the lighting data, MiB'\nset ytics nomirror\nset y2tics\n"
       "set yrange [0:*]\nset y2range [0:*]\nset grid xtics ytics\nset key top center box opaque\n"
       "plot 'tiles.dat' using 1:2:3:4 with yerrorlines lw 2 pt 7 title 'frame time', "
       "'' using 1:5 axes x1y2 with linespoints lw 2 pt 5 dt 2 title 'memory'\n",
+      terminal(1280, 800),
       gnuplotString(fmt::format("Tile size: {} with {} lights, {}x{}, {}\n{}", first.scenario.scene.scene,
                                 first.lightCount, first.scenario.settings.width,
                                 first.scenario.settings.height, techniqueLabel(first.scenario.settings),
@@ -223,7 +217,7 @@ bool runGnuplot(const fs::path& dir) {
 }  // namespace
 
 std::vector<fs::path> writeCharts(const BenchReport& report, const fs::path& dir) {
-  std::string script = std::string(kTerminal) + "\n";
+  std::string script;
   std::vector<fs::path> charts;
   using ChartFn = std::optional<std::string> (*)(const BenchReport&, const fs::path&);
   for (const auto& [name, chart] : {std::pair<const char*, ChartFn>{"scaling.png", scalingChart},

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -68,6 +69,21 @@ std::string csvField(const std::string& value) {
 }
 
 }  // namespace
+
+std::vector<std::string> passOrder(const std::vector<const ScenarioResult*>& results) {
+  std::vector<std::string> order;
+  for (const ScenarioResult* r : results) {
+    for (size_t i = 0; i < r->passes.size(); ++i) {
+      if (std::find(order.begin(), order.end(), r->passes[i].name) != order.end()) continue;
+      // Before the first later pass of this frame that is already placed, else last.
+      auto at = order.end();
+      for (size_t j = i + 1; j < r->passes.size() && at == order.end(); ++j)
+        at = std::find(order.begin(), order.end(), r->passes[j].name);
+      order.insert(at, r->passes[i].name);
+    }
+  }
+  return order;
+}
 
 void writeResultsJson(const BenchReport& report, const std::filesystem::path& path) {
   nlohmann::json j = {

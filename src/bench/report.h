@@ -6,6 +6,10 @@
 
 namespace lll::bench {
 
+// Every pass name of `results` in one order that keeps each result's own order (depth-prepass
+// first; tonemap and frame last): the columns of per-pass tables and the segments of stacked bars.
+std::vector<std::string> passOrder(const std::vector<const ScenarioResult*>& results);
+
 // Everything: run metadata, and per scenario its settings, status, per-pass times and memory.
 void writeResultsJson(const BenchReport& report, const std::filesystem::path& path);
 // One row per scenario x technique x pass that ran, for spreadsheets and plotting tools.

@@ -67,9 +67,7 @@ std::string memoryCell(const ScenarioResult& r) {
 
 // One row per scenario that ran, one column per pass name met in the suite: median ms.
 std::string passTable(const Results& results) {
-  std::vector<std::string> passes;
-  for (const ScenarioResult* r : results)
-    for (const PassSummary& p : r->passes) addUnique(passes, p.name);
+  const std::vector<std::string> passes = passOrder(results);
   std::vector<std::string> columns = {"scenario", "technique", "lights"};
   columns.insert(columns.end(), passes.begin(), passes.end());
   std::string md = tableHeader(columns);
