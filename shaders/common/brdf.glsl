@@ -32,7 +32,9 @@ float visibilitySmithGgxCorrelated(float nDotL, float nDotV, float alphaRoughnes
   return sum > 0.0 ? 0.5 / sum : 0.0;
 }
 
-vec3 fresnelSchlick(vec3 f0, float vDotH) { return f0 + (1.0 - f0) * pow(1.0 - vDotH, 5.0); }
+vec3 fresnelSchlick(vec3 f0, float vDotH) {
+  return f0 + (1.0 - f0) * pow(1.0 - vDotH, 5.0);
+}
 
 // BRDF * cos(theta_l) for light arriving from unit direction l.
 vec3 brdfCosine(Surface s, vec3 l) {
@@ -47,7 +49,8 @@ vec3 brdfCosine(Surface s, vec3 l) {
   vec3 diffuseColor = mix(s.baseColor, vec3(0.0), s.metallic);
   vec3 f = fresnelSchlick(f0, vDotH);
   vec3 diffuse = (1.0 - f) * diffuseColor / kPi;
-  vec3 specular = f * distributionGgx(nDotH, alphaRoughness) * visibilitySmithGgxCorrelated(nDotL, nDotV, alphaRoughness);
+  vec3 specular =
+      f * distributionGgx(nDotH, alphaRoughness) * visibilitySmithGgxCorrelated(nDotL, nDotV, alphaRoughness);
   return (diffuse + specular) * nDotL;
 }
 

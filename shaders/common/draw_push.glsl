@@ -3,6 +3,8 @@
 #define LLL_DRAW_PUSH_GLSL
 #include "shared/gpu_types.h"
 
-layout(push_constant) uniform DrawBlock { DrawPush draw; };
+layout(push_constant) uniform DrawBlock {
+  DrawPush draw;
+};
 
 #endif

@@ -12,12 +12,22 @@
 #define LLL_LIST_ACCESS readonly
 #endif
 
-layout(set = 0, binding = 3) uniform LllBlock { LllUniforms lll; };
-layout(std430, set = 0, binding = 4) LLL_LIST_ACCESS buffer HeadBlock { uint tileHeads[]; };
+layout(set = 0, binding = 3) uniform LllBlock {
+  LllUniforms lll;
+};
+layout(std430, set = 0, binding = 4) LLL_LIST_ACCESS buffer HeadBlock {
+  uint tileHeads[];
+};
 // Links as 32-bit words: 2 per compact link, 4 per wide link (layouts in shared/lll_types.h).
-layout(std430, set = 0, binding = 5) LLL_LIST_ACCESS buffer LinkBlock { uint linkWords[]; };
-layout(std430, set = 0, binding = 6) buffer CounterBlock { LllCounters counters; };
-layout(std430, set = 0, binding = 7) LLL_LIST_ACCESS buffer TileDepthBlock { float tileDepth[]; };
+layout(std430, set = 0, binding = 5) LLL_LIST_ACCESS buffer LinkBlock {
+  uint linkWords[];
+};
+layout(std430, set = 0, binding = 6) buffer CounterBlock {
+  LllCounters counters;
+};
+layout(std430, set = 0, binding = 7) LLL_LIST_ACCESS buffer TileDepthBlock {
+  float tileDepth[];
+};
 
 uint tileIndexOf(uvec2 pixel) {
   uint tile = frame.counts.y;
@@ -65,7 +75,9 @@ struct LightLink {
   uint next;
 };
 
-bool isListEnd(uint link) { return link == kLinkEnd || (lll.params.y == kLinkCompact && link == kCompactLinkEnd); }
+bool isListEnd(uint link) {
+  return link == kLinkEnd || (lll.params.y == kLinkCompact && link == kCompactLinkEnd);
+}
 
 LightLink readLink(uint link) {
   LightLink l;

@@ -28,7 +28,9 @@ vec3 perturbNormal(vec3 n, vec3 position, vec2 uv, vec3 tangentNormal) {
   return normalize(mat3(t * invmax, b * invmax, n) * tangentNormal);
 }
 
-float materialAlpha(GpuMaterial m, vec2 uv) { return m.baseColorFactor.a * texture(baseColorTexture, uv).a; }
+float materialAlpha(GpuMaterial m, vec2 uv) {
+  return m.baseColorFactor.a * texture(baseColorTexture, uv).a;
+}
 
 Surface sampleSurface(GpuMaterial m, vec3 position, vec3 normal, vec2 uv, bool frontFacing) {
   Surface s;
@@ -51,6 +53,8 @@ Surface sampleSurface(GpuMaterial m, vec3 position, vec3 normal, vec2 uv, bool f
 }
 
 // What every technique adds besides its lights: emission and a small constant ambient.
-vec3 ambientAndEmissive(Surface s) { return frame.ambient.rgb * s.baseColor * s.occlusion + s.emissive; }
+vec3 ambientAndEmissive(Surface s) {
+  return frame.ambient.rgb * s.baseColor * s.occlusion + s.emissive;
+}
 
 #endif

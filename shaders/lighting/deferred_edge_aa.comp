@@ -6,7 +6,9 @@
 #include "shared/gpu_types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform FrameBlock { FrameUniforms frame; };
+layout(set = 0, binding = 0) uniform FrameBlock {
+  FrameUniforms frame;
+};
 layout(set = 0, binding = 5) uniform texture2D depthImage;
 layout(set = 0, binding = 6) uniform texture2D accumulation;
 layout(set = 0, binding = 7) uniform texture2D gbuffer1;

@@ -6,7 +6,9 @@
 #include "common/frame.glsl"
 #include "shared/deferred_types.h"
 
-layout(std430, set = 0, binding = 3) readonly buffer VolumeBlock { LightVolume volumes[]; };
+layout(std430, set = 0, binding = 3) readonly buffer VolumeBlock {
+  LightVolume volumes[];
+};
 layout(set = 0, binding = 5) uniform texture2D depthImage;
 
 // Linear depth of the pixel's visible surface, or a negative value when the pixel must not be lit

@@ -4,7 +4,9 @@
 #include "common/frame.glsl"
 #include "shared/deferred_types.h"
 
-layout(std430, set = 0, binding = 3) readonly buffer VolumeBlock { LightVolume volumes[]; };
+layout(std430, set = 0, binding = 3) readonly buffer VolumeBlock {
+  LightVolume volumes[];
+};
 layout(location = 0) in vec3 inPosition;  // unit shell vertex
 
 layout(location = 0) flat out uint outVolume;

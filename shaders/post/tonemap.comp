@@ -4,11 +4,15 @@
 #include "shared/gpu_types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform FrameBlock { FrameUniforms frame; };
+layout(set = 0, binding = 0) uniform FrameBlock {
+  FrameUniforms frame;
+};
 layout(set = 0, binding = 1, rgba16f) uniform readonly image2D hdrImage;
 layout(set = 0, binding = 2, rgba8) uniform writeonly image2D ldrImage;
 
-vec3 filmic(vec3 x) { return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0); }
+vec3 filmic(vec3 x) {
+  return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
 
 vec3 srgbEncode(vec3 c) {
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));

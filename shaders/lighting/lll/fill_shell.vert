@@ -5,8 +5,12 @@
 #include "lighting/lll/light_shape.glsl"
 
 layout(location = 0) in vec3 inPosition;
-layout(std430, set = 0, binding = 10) readonly buffer ShellOrderBlock { uint shellLights[]; };
-layout(push_constant) uniform FillBlock { FillPush fill; };
+layout(std430, set = 0, binding = 10) readonly buffer ShellOrderBlock {
+  uint shellLights[];
+};
+layout(push_constant) uniform FillBlock {
+  FillPush fill;
+};
 layout(constant_id = 0) const uint kShapeCone = 0u;
 
 layout(location = 0) flat out uint outLight;
@@ -32,7 +36,8 @@ void main() {
     vec3 side = normalize(abs(axis.y) < 0.99 ? cross(axis, vec3(0, 1, 0)) : cross(axis, vec3(1, 0, 0)));
     vec3 up = cross(axis, side);  // (side, up, axis) right-handed: the mesh keeps its winding
     float radius = len * sinAngle / cosAngle;
-    world = center - axis * back + (side * inPosition.x + up * inPosition.y) * radius + axis * (inPosition.z * len);
+    world = center - axis * back + (side * inPosition.x + up * inPosition.y) * radius +
+            axis * (inPosition.z * len);
   }
   vec4 clip = frame.viewProj * vec4(world, 1.0);
   outDepth = clip.w;

@@ -9,7 +9,9 @@
 layout(constant_id = 1) const uint kBackFaces = 0u;
 // Bounds layers picked by id, as in Bezrati's sample, so overlapping lights rarely collide.
 layout(constant_id = 2) const uint kBoundsLayers = 8u;
-layout(std430, set = 0, binding = 8) buffer BoundsBlock { uint tileBounds[]; };
+layout(std430, set = 0, binding = 8) buffer BoundsBlock {
+  uint tileBounds[];
+};
 
 layout(location = 0) flat in uint inLight;
 layout(location = 1) flat in uint inBatchId;

@@ -21,8 +21,12 @@ vec3 directionToViewDepthSpace(vec3 world) {
 
 // How far a light's shape is pushed out so that every pixel of a tile it touches sees it from the
 // tile's centre: half a tile's diagonal at the light's far end.
-float tileInflation(float centerDepth, float range) { return max(centerDepth + range, 0.0) * lll.grid.z; }
+float tileInflation(float centerDepth, float range) {
+  return max(centerDepth + range, 0.0) * lll.grid.z;
+}
 
-bool usesCone(GpuLight light) { return uint(light.directionType.w) == kLightSpot && light.spotParams.x >= kMinConeCos; }
+bool usesCone(GpuLight light) {
+  return uint(light.directionType.w) == kLightSpot && light.spotParams.x >= kMinConeCos;
+}
 
 #endif

@@ -23,7 +23,8 @@ vec3 boundsView(Surface s, uint tileIndex, float depth) {
     if (depth >= l.minDepth && depth <= l.maxDepth) {
       listed = true;
       GpuLight light = lights[l.light];
-      if (any(greaterThan(evaluateLight(light, s), vec3(0.0)))) reached = max(reached, light.colorIntensity.rgb);
+      if (any(greaterThan(evaluateLight(light, s), vec3(0.0))))
+        reached = max(reached, light.colorIntensity.rgb);
     }
     link = l.next;
   }
