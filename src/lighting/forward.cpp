@@ -9,16 +9,10 @@ namespace lll {
 
 namespace {
 
-const std::initializer_list<Binding> kMeshBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-};
-
 class Forward final : public Technique {
  public:
   Forward(Context& context, const GpuScene& scene)
-      : layout_(context, kMeshBindings, sizeof(gpu::DrawPush),
+      : layout_(context, kMeshPassBindings, sizeof(gpu::DrawPush),
                 VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, {scene.materialSetLayout()}) {
     GraphicsPipelineDesc desc;
     desc.vertexShader = "common/mesh.vert";

@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "gpu/pass_timer.h"
+#include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "render/gpu_scene.h"
 #include "render/settings.h"
@@ -53,8 +54,12 @@ void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
                     std::initializer_list<ColorTarget> colors, VkImageView depth, VkImageLayout depthLayout,
                     bool clearDepth);
 
-// Binds set 0 of a mesh pass: frame uniforms (0), lights (1), materials (2).
-class DescriptorWriter;
+// Set 0 of a mesh pass: frame uniforms (0), lights (1), materials (2); meshPassDescriptors writes it.
+inline const std::initializer_list<Binding> kMeshPassBindings = {
+    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+};
 DescriptorWriter meshPassDescriptors(const FrameContext& frame);
 
 inline uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) {

@@ -20,12 +20,6 @@ constexpr uint32_t kMaxRerenders = 8;
 // Lights per tile shown as red in the heatmap view (ThreeL's Sponza peaks around 35).
 constexpr uint32_t kHeatmapScale = 32;
 
-const std::initializer_list<Binding> kMeshBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-};
-
 }  // namespace
 
 void validateResolution(uint32_t width, uint32_t height) {
@@ -51,7 +45,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
       Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
   updateUniforms();
 
-  depthLayout_ = PipelineLayout(context, kMeshBindings, sizeof(gpu::DrawPush),
+  depthLayout_ = PipelineLayout(context, kMeshPassBindings, sizeof(gpu::DrawPush),
                                 VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                                 {gpuScene_->materialSetLayout()});
   GraphicsPipelineDesc depth;
