@@ -3,6 +3,9 @@
 // file ends in an InputError that names it, never in a crash or an out-of-bounds read.
 #include "scene/gltf_loader.h"
 
+// Before the implementation macros: it includes tiny_gltf.h, whose implementation must come once.
+#include "scene/gltf_accessors.h"
+
 #define TINYGLTF_IMPLEMENTATION
 #define TINYGLTF_NO_STB_IMAGE_WRITE  // stb_image_write belongs to the image output code
 #define STB_IMAGE_IMPLEMENTATION
@@ -31,14 +34,13 @@
 namespace lll {
 namespace {
 
+using gltf_detail::Components;
+
 // tinygltf passes buffer and chunk sizes around as 32-bit ints.
 constexpr uint64_t kMaxFileBytes = std::numeric_limits<int32_t>::max();
 // tinygltf copies "extras" and "extensions" into its own tree recursively: bounding the nesting
 // keeps a hostile file from overflowing the stack. Real glTF files nest well under 20 deep.
 constexpr int kMaxJsonNesting = 128;
-// An accessor without a bufferView is all zeros (plus sparse values), so no data in the file bounds
-// its count; this does, instead of allocating whatever the count asks for.
-constexpr size_t kMaxElementsWithoutData = size_t{1} << 22;
 // Beyond what any GPU we target samples; stops a forged image header from asking for gigabytes.
 constexpr int kMaxTextureSide = 16384;
 
@@ -170,70 +172,6 @@ std::string oneLine(std::string text) {
   return text;
 }
 
-std::string typeName(int type) {
-  if (type == TINYGLTF_TYPE_SCALAR) return "SCALAR";
-  if (type >= TINYGLTF_TYPE_VEC2 && type <= TINYGLTF_TYPE_VEC4) return "VEC" + std::to_string(type);
-  return "a matrix type";
-}
-
-// Which component types glTF allows for what we read.
-enum class Components { Float, FloatOrNormalizedUnsigned, Index };
-
-bool componentsAllowed(Components allowed, int componentType, bool normalized) {
-  switch (allowed) {
-    case Components::Float:
-      return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
-    case Components::FloatOrNormalizedUnsigned:
-      return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
-             (normalized && (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                             componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
-    case Components::Index:
-      return !normalized && (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                             componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-                             componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
-  }
-  return false;
-}
-
-const char* describe(Components allowed) {
-  switch (allowed) {
-    case Components::Float:
-      return "FLOAT (5126)";
-    case Components::FloatOrNormalizedUnsigned:
-      return "FLOAT (5126), or normalized UNSIGNED_BYTE (5121) or UNSIGNED_SHORT (5123)";
-    case Components::Index:
-      return "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT, not normalized";
-  }
-  return "";
-}
-
-template <typename T>
-double loadComponent(const uint8_t* p, bool normalized) {
-  T value;
-  std::memcpy(&value, p, sizeof value);
-  if constexpr (std::is_floating_point_v<T>) {
-    return value;
-  } else {
-    return normalized ? double(value) / double(std::numeric_limits<T>::max()) : double(value);
-  }
-}
-
-// Only called for the unsigned and float component types that componentsAllowed() accepts.
-double loadComponent(const uint8_t* p, int componentType, bool normalized) {
-  switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return loadComponent<uint8_t>(p, normalized);
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return loadComponent<uint16_t>(p, normalized);
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-      return loadComponent<uint32_t>(p, normalized);
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-      return loadComponent<float>(p, normalized);
-    default:
-      return 0.0;
-  }
-}
-
 glm::vec3 unitOr(const glm::dvec3& v, const glm::vec3& fallback) {
   const double length = glm::length(v);
   return std::isfinite(length) && length > 1e-12 ? glm::vec3(v / length) : fallback;
@@ -275,25 +213,16 @@ class GltfImporter {
     std::vector<uint8_t> rgba;
   };
 
-  // Where an accessor's elements start in memory, and how far apart they are.
-  struct ElementSpan {
-    const uint8_t* data = nullptr;
-    size_t stride = 0;
-  };
-
   [[noreturn]] void fail(const std::string& what) const { throw InputError(file_ + ": " + what); }
   void warn(const std::string& what) { warnings_.push_back(file_ + ": " + what); }
 
   void parse();
   void checkVersionAndExtensions();
-  void checkBufferViews();
-
-  ElementSpan checkedElements(int bufferView, size_t byteOffset, size_t count, size_t elementSize,
-                              bool useViewStride, const std::string& name) const;
+  void checkBufferViews() const { gltf_detail::checkBufferViews(model_, file_); }
   template <typename T>
-  std::vector<T> readAccessor(int index, const std::string& what, int type, Components allowed) const;
-  template <typename T>
-  void applySparse(const tinygltf::Accessor& accessor, const std::string& name, std::vector<T>& values) const;
+  std::vector<T> readAccessor(int index, const std::string& what, int type, Components allowed) const {
+    return gltf_detail::readAccessor<T>(model_, file_, index, what, type, allowed);
+  }
 
   Material convertMaterial(const tinygltf::Material& in, int index);
   template <typename Info>
@@ -394,133 +323,6 @@ void GltfImporter::checkVersionAndExtensions() {
   if (!ignored.empty()) {
     warn("uses glTF extension(s) " + describeList(ignored) +
          " that the renderer ignores; the scene may look different than in other viewers");
-  }
-}
-
-void GltfImporter::checkBufferViews() {
-  for (size_t i = 0; i < model_.bufferViews.size(); ++i) {
-    const tinygltf::BufferView& view = model_.bufferViews[i];
-    const std::string name = "bufferView " + std::to_string(i);
-    if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size()) {
-      fail(name + " refers to buffer " + std::to_string(view.buffer) + ", but the file has " +
-           std::to_string(model_.buffers.size()) + " buffers");
-    }
-    const size_t bufferSize = model_.buffers[size_t(view.buffer)].data.size();
-    if (view.byteOffset > bufferSize || view.byteLength > bufferSize - view.byteOffset) {
-      fail(name + " covers bytes " + std::to_string(view.byteOffset) + " + " +
-           std::to_string(view.byteLength) + " of buffer " + std::to_string(view.buffer) +
-           ", which has only " + std::to_string(bufferSize) + " bytes. The file is corrupt; re-export it.");
-    }
-  }
-}
-
-GltfImporter::ElementSpan GltfImporter::checkedElements(int bufferView, size_t byteOffset, size_t count,
-                                                        size_t elementSize, bool useViewStride,
-                                                        const std::string& name) const {
-  if (bufferView < 0 || size_t(bufferView) >= model_.bufferViews.size()) {
-    fail(name + " refers to bufferView " + std::to_string(bufferView) + ", but the file has " +
-         std::to_string(model_.bufferViews.size()) + " bufferViews");
-  }
-  const tinygltf::BufferView& view = model_.bufferViews[size_t(bufferView)];
-  const size_t stride = useViewStride && view.byteStride != 0 ? view.byteStride : elementSize;
-  if (stride < elementSize) {
-    fail(name + " has elements of " + std::to_string(elementSize) + " bytes, but bufferView " +
-         std::to_string(bufferView) + " has the smaller byteStride " + std::to_string(stride));
-  }
-  // Phrased with divisions so that a forged count cannot overflow the arithmetic. count >= 1.
-  if (byteOffset > view.byteLength || view.byteLength - byteOffset < elementSize ||
-      count - 1 > (view.byteLength - byteOffset - elementSize) / stride) {
-    fail(name + " reads " + std::to_string(count) + " elements of " + std::to_string(elementSize) +
-         " bytes (stride " + std::to_string(stride) + ") from byte " + std::to_string(byteOffset) +
-         " of bufferView " + std::to_string(bufferView) + ", which is only " +
-         std::to_string(view.byteLength) + " bytes long. The file is corrupt or truncated; re-export it.");
-  }
-  const uint8_t* base = model_.buffers[size_t(view.buffer)].data.data();
-  return {base + view.byteOffset + byteOffset, stride};
-}
-
-template <typename T>
-std::vector<T> GltfImporter::readAccessor(int index, const std::string& what, int type,
-                                          Components allowed) const {
-  if (index < 0 || size_t(index) >= model_.accessors.size()) {
-    fail(what + " refers to accessor " + std::to_string(index) + ", but the file has " +
-         std::to_string(model_.accessors.size()) + " accessors");
-  }
-  const tinygltf::Accessor& accessor = model_.accessors[size_t(index)];
-  const std::string name = "accessor " + std::to_string(index) + " (" + what + ")";
-  if (accessor.type != type) {
-    fail(name + " has type " + typeName(accessor.type) + ", but glTF requires " + typeName(type));
-  }
-  if (!componentsAllowed(allowed, accessor.componentType, accessor.normalized)) {
-    const bool isFloat = accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
-    fail(name + " has componentType " + std::to_string(accessor.componentType) +
-         (isFloat               ? ""
-          : accessor.normalized ? " (normalized)"
-                                : " (not normalized)") +
-         "; glTF allows only " + describe(allowed) + " here");
-  }
-  if (accessor.count == 0) fail(name + " has count 0; glTF requires at least 1");
-
-  const size_t components = size_t(tinygltf::GetNumComponentsInType(uint32_t(accessor.type)));
-  const size_t componentSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType)));
-  std::vector<T> values;
-  if (accessor.bufferView < 0) {
-    if (accessor.count > kMaxElementsWithoutData) {
-      fail(name + " has no bufferView but a count of " + std::to_string(accessor.count) +
-           ", above the limit of " + std::to_string(kMaxElementsWithoutData) +
-           " for data that is all zeros or sparse");
-    }
-    values.assign(accessor.count * components, T{0});
-  } else {
-    const ElementSpan span = checkedElements(accessor.bufferView, accessor.byteOffset, accessor.count,
-                                             components * componentSize, true, name);
-    values.resize(accessor.count * components);
-    for (size_t i = 0; i < accessor.count; ++i) {
-      for (size_t c = 0; c < components; ++c) {
-        values[i * components + c] = static_cast<T>(loadComponent(
-            span.data + i * span.stride + c * componentSize, accessor.componentType, accessor.normalized));
-      }
-    }
-  }
-  if (accessor.sparse.isSparse) applySparse(accessor, name, values);
-  return values;
-}
-
-template <typename T>
-void GltfImporter::applySparse(const tinygltf::Accessor& accessor, const std::string& name,
-                               std::vector<T>& values) const {
-  const auto& sparse = accessor.sparse;
-  if (sparse.count < 1 || size_t(sparse.count) > accessor.count) {
-    fail(name + " has a sparse count of " + std::to_string(sparse.count) + "; it must be between 1 and " +
-         std::to_string(accessor.count));
-  }
-  if (!componentsAllowed(Components::Index, sparse.indices.componentType, false)) {
-    fail(name + " has sparse indices of componentType " + std::to_string(sparse.indices.componentType) +
-         "; glTF allows " + describe(Components::Index));
-  }
-  if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
-    fail(name + " has a negative sparse byteOffset");
-  const size_t count = size_t(sparse.count);
-  const size_t components = values.size() / accessor.count;
-  const size_t componentSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType)));
-  const size_t indexSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(sparse.indices.componentType)));
-  const ElementSpan indices = checkedElements(sparse.indices.bufferView, size_t(sparse.indices.byteOffset),
-                                              count, indexSize, false, name + " sparse indices");
-  const ElementSpan replacements =
-      checkedElements(sparse.values.bufferView, size_t(sparse.values.byteOffset), count,
-                      components * componentSize, false, name + " sparse values");
-  for (size_t k = 0; k < count; ++k) {
-    const auto target =
-        size_t(loadComponent(indices.data + k * indices.stride, sparse.indices.componentType, false));
-    if (target >= accessor.count) {
-      fail(name + " has sparse index " + std::to_string(target) + ", but the accessor has only " +
-           std::to_string(accessor.count) + " elements");
-    }
-    for (size_t c = 0; c < components; ++c) {
-      values[target * components + c] =
-          static_cast<T>(loadComponent(replacements.data + k * replacements.stride + c * componentSize,
-                                       accessor.componentType, accessor.normalized));
-    }
   }
 }
 
