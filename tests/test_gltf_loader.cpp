@@ -116,11 +116,10 @@ struct GltfBuilder {
     doc["buffers"] = json::array({{{"byteLength", bin.size()}}});
     std::string text = doc.dump();
     text.resize((text.size() + 3) / 4 * 4, ' ');
-    std::vector<uint8_t> glb;
+    std::vector<uint8_t> glb = {'g', 'l', 'T', 'F'};
     auto put32 = [&](uint32_t v) {
       for (int i = 0; i < 4; ++i) glb.push_back(uint8_t(v >> (8 * i)));
     };
-    glb.insert(glb.end(), {'g', 'l', 'T', 'F'});
     put32(2);
     put32(uint32_t(12 + 8 + text.size() + 8 + payload.size()));
     put32(uint32_t(text.size()));
