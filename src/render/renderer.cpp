@@ -33,6 +33,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
       scene_(scene),
       settings_(settings),
       camera_(resolveCamera(scene, settings.camera)),
+      sceneBounds_(scene.worldBounds()),
       timer_(context) {
   validateResolution(settings.width, settings.height);
   if (scene.lights.size() > gpu::kMaxLights)
@@ -86,7 +87,7 @@ void Renderer::createTargets() {
 }
 
 void Renderer::updateUniforms() {
-  const Bounds bounds = scene_.worldBounds();
+  const Bounds& bounds = sceneBounds_;
   const float aspect = float(settings_.width) / float(settings_.height);
   glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);
   glm::vec3 up = camera_.up;

@@ -66,6 +66,7 @@ class Renderer {
   const Scene& scene_;
   RenderSettings settings_;
   Camera camera_;
+  Bounds sceneBounds_;  // static geometry: computed once, sets the far plane every frame
   gpu::FrameUniforms uniforms_{};
   std::unique_ptr<GpuScene> gpuScene_;
   FrameTargets targets_;
