@@ -84,7 +84,7 @@ std::vector<Scenario> scalingSuite(const SuiteOptions& options) {
   const std::vector<uint32_t> counts = options.quick
                                            ? std::vector<uint32_t>{16, 64, 256}
                                            : std::vector<uint32_t>{16, 64, 256, 1024, 4096, 16384, 65536};
-  const Size size = options.quick ? Size{160, 90} : Size{1920, 1080};
+  const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   std::vector<Scenario> out;
   for (const uint32_t lights : counts) {
     const Scenario base = makeScenario("scaling", fmt::format("{} lights", lights),
@@ -103,7 +103,7 @@ std::vector<Scenario> scalingSuite(const SuiteOptions& options) {
 // What the tile size costs and saves: time and light-list memory of the LLL, tile 1 to 16.
 std::vector<Scenario> tilesSuite(const SuiteOptions& options) {
   const uint32_t lights = options.quick ? 64 : 1024;
-  const Size size = options.quick ? Size{160, 90} : Size{1920, 1080};
+  const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   std::vector<Scenario> out;
   for (const uint32_t tile : {1u, 2u, 4u, 8u, 16u}) {
     Scenario s =
@@ -120,7 +120,7 @@ std::vector<Scenario> tilesSuite(const SuiteOptions& options) {
 std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
   const std::vector<uint32_t> counts =
       options.quick ? std::vector<uint32_t>{1024} : std::vector<uint32_t>{1024, 65536, 1000000};
-  const Size size = options.quick ? Size{160, 90} : Size{1920, 1080};
+  const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   std::vector<Scenario> out;
   for (const uint32_t particles : counts) {
     Scenario base = makeScenario("smoke", fmt::format("{} particles", particles),
