@@ -27,12 +27,6 @@ constexpr double kDepthAndAccumulationBytesPerPixel = 4 + 8;
 
 constexpr VkShaderStageFlags kGraphicsStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
-const std::initializer_list<Binding> kMeshBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-};
-
 const std::initializer_list<Binding> kLightBindings = {
     {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -70,7 +64,7 @@ class Deferred final : public Technique {
  public:
   Deferred(Context& context, const GpuScene& scene, const RenderSettings& settings,
            const FrameTargets& targets)
-      : meshLayout_(context, kMeshBindings, sizeof(gpu::DrawPush), kGraphicsStages,
+      : meshLayout_(context, kMeshPassBindings, sizeof(gpu::DrawPush), kGraphicsStages,
                     {scene.materialSetLayout()}),
         lightLayout_(context, kLightBindings),
         volumes_(context, uint32_t(scene.scene().lights.size())),
