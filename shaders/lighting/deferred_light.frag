@@ -16,12 +16,6 @@ void main() {
   if (linearDepth < 0.0) discard;
   vec4 g0 = texelFetch(gbuffer0, pixel, 0);
   vec4 g1 = texelFetch(gbuffer1, pixel, 0);
-  Surface s;
-  s.position = reconstructPosition(gl_FragCoord.xy, linearDepth);
-  s.normal = normalize(g1.xyz);
-  s.view = normalize(frame.cameraPosition.xyz - s.position);
-  s.baseColor = g0.rgb;
-  s.metallic = g0.a;
-  s.roughness = g1.w;
+  Surface s = surfaceFromGbuffer(g0, g1, reconstructPosition(gl_FragCoord.xy, linearDepth));
   outColor = vec4(evaluateLight(lights[volume.light.x], s), 0.0);
 }

@@ -4,6 +4,7 @@
 #define LLL_LIGHT_VOLUME_GLSL
 #extension GL_EXT_samplerless_texture_functions : require
 #include "common/frame.glsl"
+#include "common/gbuffer.glsl"
 #include "shared/deferred_types.h"
 
 layout(std430, set = 0, binding = 3) readonly buffer VolumeBlock {
@@ -19,19 +20,6 @@ float litDepth(LightVolume volume, ivec2 pixel) {
   float linearDepth = linearizeDepth(depth);
   if (depth <= 0.0 || linearDepth < volume.depthRange.x || linearDepth > volume.depthRange.y) return -1.0;
   return linearDepth;
-}
-
-// World position of the pixel's surface from its linear depth: the ray through the pixel with unit
-// view depth, built from the camera's axes (the rows of the view matrix), scaled by the depth.
-// No matrix inverse per pixel.
-vec3 reconstructPosition(vec2 fragCoord, float linearDepth) {
-  vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
-  vec3 right = vec3(frame.view[0][0], frame.view[1][0], frame.view[2][0]);
-  vec3 up = vec3(frame.view[0][1], frame.view[1][1], frame.view[2][1]);
-  vec3 back = vec3(frame.view[0][2], frame.view[1][2], frame.view[2][2]);
-  // Framebuffer y points down (the projection flips it), view-space y up.
-  vec3 ray = right * (ndc.x * frame.depthParams.z) - up * (ndc.y * frame.depthParams.w) - back;
-  return frame.cameraPosition.xyz + ray * linearDepth;
 }
 
 #endif

@@ -1,28 +1,26 @@
 // Technique "deferred": Infinity's deferred lighting (seeds/infinity-deferred-instant-radiosity.txt).
-//   deferred-gbuffer      the scene once (depth EQUAL the prepass) into the G-buffer, with ambient
-//                         and emission written straight into the accumulation target
+//   deferred-gbuffer      the scene once (depth EQUAL the prepass) into the shared thin G-buffer
+//                         (render/gbuffer.h), with ambient and emission written straight into the
+//                         accumulation target
 //   deferred-lights       each visible light as a bounding volume, additively blended
 //   deferred-edge-aa      (--aa edge) blend pixels on depth or normal discontinuities
 //   deferred-translucent  glass and smoke, unlit or forward-lit (--deferred-translucent)
-// G-buffer, 12 B/px: gbuffer0 RGBA8 sRGB (base colour, metallic) + gbuffer1 RGBA16F (world normal,
-// roughness); with the D32 depth and the RGBA16F accumulation that every technique has, 24 B/px.
-// Infinity used four RGBA16F targets, 32 B/px plus its Z buffer: depth again in a colour channel,
-// velocity, extinction and a material id that lll does not need, fp16 for base colour, and a
-// forward-lit colour that here is the accumulation target itself. Here depth is the prepass's,
-// sampled directly.
+// G-buffer 12 B/px (RGBA8 base colour + metallic, RGBA16F normal + roughness); with the D32 depth
+// and the RGBA16F accumulation that every technique has, 24 B/px. Infinity used four RGBA16F
+// targets, 32 B/px plus its Z buffer: depth again in a colour channel, velocity, extinction and a
+// material id that lll does not need, fp16 for base colour, and a forward-lit colour that here is
+// the accumulation target itself. Here depth is the prepass's, sampled directly.
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "lighting/technique.h"
 #include "lighting/volume_lights.h"
+#include "render/gbuffer.h"
 #include "scene/errors.h"
 
 namespace lll {
 
 namespace {
 
-constexpr VkFormat kGbuffer0Format = VK_FORMAT_R8G8B8A8_SRGB;
-constexpr VkFormat kGbuffer1Format = VK_FORMAT_R16G16B16A16_SFLOAT;
-constexpr double kGbufferBytesPerPixel = 4 + 8;
 constexpr double kDepthAndAccumulationBytesPerPixel = 4 + 8;
 
 constexpr VkShaderStageFlags kGraphicsStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
@@ -67,12 +65,11 @@ class Deferred final : public Technique {
       : meshLayout_(context, kMeshPassBindings, sizeof(gpu::DrawPush), kGraphicsStages,
                     {scene.materialSetLayout()}),
         lightLayout_(context, kLightBindings),
+        gbuffer_(context, scene, targets),
         volumes_(context, uint32_t(scene.scene().lights.size())),
         edgeAa_(edgeAntiAliasing(settings)) {
-    const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    gbuffer0_ = Image(context, targets.width, targets.height, kGbuffer0Format, usage, "gbuffer0");
-    gbuffer1_ = Image(context, targets.width, targets.height, kGbuffer1Format, usage, "gbuffer1");
     if (edgeAa_) {
+      const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
       // The edge filter reads neighbours, so it cannot work in place: lights accumulate here.
       accumulation_ = Image(context, targets.width, targets.height, kHdrFormat, usage, "accumulation");
       edgeAaLayout_ = PipelineLayout(context, kEdgeAaBindings);
@@ -91,9 +88,9 @@ class Deferred final : public Technique {
 
   std::vector<std::pair<std::string, double>> stats() const override {
     const LightVolumeCounts& c = volumes_.counts();
-    return {{"gbuffer-bytes-per-pixel", kGbufferBytesPerPixel},
+    return {{"gbuffer-bytes-per-pixel", GBuffer::kBytesPerPixel},
             {"gbuffer-with-depth-and-accumulation-bytes-per-pixel",
-             kGbufferBytesPerPixel + kDepthAndAccumulationBytesPerPixel},
+             GBuffer::kBytesPerPixel + kDepthAndAccumulationBytesPerPixel},
             {"lights-drawn", c.visible},
             {"lights-drawn-camera-inside", c.cameraInside},
             {"lights-drawn-as-cones", c.cones}};
@@ -103,13 +100,9 @@ class Deferred final : public Technique {
   void createScenePipelines(Context& context, bool litTranslucents) {
     GraphicsPipelineDesc desc;
     desc.vertexShader = "common/mesh.vert";
-    desc.fragmentShader = "lighting/deferred_gbuffer.frag";
-    desc.colorFormats = {kHdrFormat, kGbuffer0Format, kGbuffer1Format};
+    desc.fragmentShader = "lighting/translucent.frag";
     desc.depthFormat = kDepthFormat;
     desc.depthWrite = false;
-    desc.depthCompare = VK_COMPARE_OP_EQUAL;  // one G-buffer write per pixel: the prepass decided
-    gbufferPipeline_ = Pipeline(context, meshLayout_, desc);
-    desc.fragmentShader = "lighting/translucent.frag";
     desc.colorFormats = {kHdrFormat};
     desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
     desc.blend = BlendMode::Alpha;
@@ -143,34 +136,12 @@ class Deferred final : public Technique {
   }
 
   void geometryPass(FrameContext& frame) {
-    const FrameTargets& t = frame.targets;
-    ScopedPass pass(frame.timer, frame.cmd, "deferred-gbuffer");
-    for (const Image* image : {&gbuffer0_, &gbuffer1_, &accumulation_}) {
-      if (*image)
-        image->transition(frame.cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
-                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    }
-    beginRendering(frame.cmd, t.width, t.height,
-                   {{accumulationView(t), true}, {gbuffer0_.view(), true}, {gbuffer1_.view(), true}},
-                   t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-    gbufferPipeline_.bind(frame.cmd);
-    meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                    meshLayout_.handle());
-    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque, frame.eye);
-    vkCmdEndRendering(frame.cmd);
-    for (const Image* image : {&gbuffer0_, &gbuffer1_}) {
-      image->transition(
-          frame.cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-          VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-          VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    }
-    // The light pass blends onto what this pass wrote into the accumulation target.
-    memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    if (accumulation_)
+      accumulation_.transition(frame.cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
+                               VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                               VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    gbuffer_.record(frame, "deferred-gbuffer", accumulationView(frame.targets));
   }
 
   // The CPU culls the lights and groups them by shape (points, spots) and by camera side; each
@@ -186,9 +157,9 @@ class Deferred final : public Technique {
     writer.uniform(0, frame.uniformBuffer.handle())
         .storage(1, frame.scene.lightBuffer().handle())
         .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-        .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer0_.view(),
+        .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target0().view(),
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-        .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer1_.view(),
+        .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     volumes_.addBindings(writer).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                                       lightLayout_.handle());
@@ -215,7 +186,7 @@ class Deferred final : public Technique {
         .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
         .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, accumulation_.view(),
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-        .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer1_.view(),
+        .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
         .image(8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
         .push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, edgeAaLayout_.handle());
@@ -248,13 +219,11 @@ class Deferred final : public Technique {
   PipelineLayout meshLayout_;
   PipelineLayout lightLayout_;
   PipelineLayout edgeAaLayout_;
-  Pipeline gbufferPipeline_;
   Pipeline outsidePipeline_;
   Pipeline insidePipeline_;
   Pipeline edgeAaPipeline_;
   Pipeline translucentPipeline_;
-  Image gbuffer0_;
-  Image gbuffer1_;
+  GBuffer gbuffer_;
   Image accumulation_;
   LightVolumeDraws volumes_;
   bool edgeAa_;

@@ -1,9 +1,8 @@
 #version 460
-// Deferred geometry pass: what the BRDF needs, once per visible pixel (depth EQUAL the prepass).
-// Ambient and emission need no light, so they go straight into the accumulation target, as
-// Infinity's forward-lit "FL" channels do; the G-buffer keeps only what the light pass reads.
-//   gbuffer0 RGBA8 sRGB: rgb base colour, a metallic
-//   gbuffer1 RGBA16F:    xyz world-space unit normal (facing the viewer), w roughness
+// G-buffer pass (src/render/gbuffer.h): what the BRDF needs, once per visible pixel (depth EQUAL
+// the prepass). Ambient and emission need no light, so they go straight into the accumulation
+// target, as Infinity's forward-lit "FL" channels do; the G-buffer keeps only what lighting reads.
+// Layout and decoding: common/gbuffer.glsl.
 #include "common/material.glsl"
 
 layout(location = 0) in vec3 inWorldPosition;

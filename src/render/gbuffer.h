@@ -1,0 +1,39 @@
+#pragma once
+// The thin G-buffer that techniques shading away from the geometry share ("deferred" lights it
+// with light volumes, "lll --lll-shade compute" walks the light lists in a compute pass).
+//   target0 RGBA8 sRGB: rgb base colour, a metallic
+//   target1 RGBA16F:    xyz world-space unit normal (facing the viewer), w roughness
+// 12 B/px; position comes from the prepass depth. Ambient and emission need no light, so the pass
+// writes them straight into the accumulation target (Infinity's forward-lit channels).
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "render/frame.h"
+
+namespace lll {
+
+class GBuffer {
+ public:
+  static constexpr VkFormat kFormat0 = VK_FORMAT_R8G8B8A8_SRGB;
+  static constexpr VkFormat kFormat1 = VK_FORMAT_R16G16B16A16_SFLOAT;
+  static constexpr double kBytesPerPixel = 4 + 8;
+
+  GBuffer() = default;
+  GBuffer(Context& context, const GpuScene& scene, const FrameTargets& targets);
+
+  // Draws the opaque scene once (depth EQUAL the prepass) into `accumulation` (cleared; must be
+  // COLOR_ATTACHMENT_OPTIMAL) and the two targets. Afterwards the targets are
+  // SHADER_READ_ONLY_OPTIMAL for fragment and compute shaders and the accumulation writes are
+  // visible to colour attachment reads and writes.
+  void record(FrameContext& frame, const char* passName, VkImageView accumulation) const;
+
+  const Image& target0() const { return target0_; }
+  const Image& target1() const { return target1_; }
+
+ private:
+  PipelineLayout layout_;
+  Pipeline pipeline_;
+  Image target0_;
+  Image target1_;
+};
+
+}  // namespace lll
