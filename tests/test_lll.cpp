@@ -245,23 +245,37 @@ double statOf(const test::Rendered& r, const std::string& name) {
   return 0.0;
 }
 
+// Each fill with the default compute shading, and the chapter's fragment shading with one fill
+// (fill and shading are independent: the lists are the same).
+struct Variant {
+  const char* fill;
+  const char* shade;
+};
+constexpr Variant kVariants[] = {
+    {"compute", "compute"}, {"ray", "compute"}, {"shells", "compute"}, {"compute", "fragment"}};
+
+std::string variantName(const Variant& v) {
+  return std::string(v.fill) + "/" + v.shade;
+}
+
 class LllImages : public ::testing::TestWithParam<ImageCase> {};
 
 TEST_P(LllImages, EveryFillMatchesForward) {
   const Scene scene = loadCase(GetParam());
   RenderSettings settings;
-  settings.width = 96;
-  settings.height = 54;
+  settings.width = 160;
+  settings.height = 90;
   const test::Rendered reference = test::render(scene, settings);
   settings.technique = "lll";
-  for (const char* fill : {"compute", "ray", "shells"}) {
-    settings.lllFill = fill;
+  for (const Variant& v : kVariants) {
+    settings.lllFill = v.fill;
+    settings.lllShade = v.shade;
     const test::Rendered lll = test::render(scene, settings);
     const double psnr = test::psnr(lll.ldr, reference.ldr);
-    EXPECT_GE(psnr, 45.0) << fill;
-    RecordProperty(std::string("psnr_") + fill, std::to_string(psnr));
-    EXPECT_GT(statOf(lll, "links_used"), 0.0) << fill;
-    EXPECT_EQ(statOf(lll, "link_bytes_each"), scene.lights.size() > 256 ? 16.0 : 8.0) << fill;
+    EXPECT_GE(psnr, 45.0) << variantName(v);
+    RecordProperty("psnr_" + std::string(v.fill) + "_" + v.shade, std::to_string(psnr));
+    EXPECT_GT(statOf(lll, "links_used"), 0.0) << variantName(v);
+    EXPECT_EQ(statOf(lll, "link_bytes_each"), scene.lights.size() > 256 ? 16.0 : 8.0) << variantName(v);
   }
 }
 
@@ -279,29 +293,33 @@ TEST(LllImages, AwkwardLightsMatchForward) {
   // Camera inside a light, lights under the floor and off-screen, spots of every width.
   const Scene scene = awkwardLightsScene(40);
   RenderSettings settings;
-  settings.width = 96;
-  settings.height = 96;
+  settings.width = 128;
+  settings.height = 128;
   const test::Rendered reference = test::render(scene, settings);
   settings.technique = "lll";
-  for (const char* fill : {"compute", "ray", "shells"}) {
-    settings.lllFill = fill;
-    EXPECT_GE(test::psnr(test::render(scene, settings).ldr, reference.ldr), 45.0) << fill;
+  for (const Variant& v : kVariants) {
+    settings.lllFill = v.fill;
+    settings.lllShade = v.shade;
+    EXPECT_GE(test::psnr(test::render(scene, settings).ldr, reference.ldr), 45.0) << variantName(v);
   }
 }
 
 TEST(LllImages, TinyPoolGrowsAndStillMatches) {
   const Scene scene = *makeBuiltinScene("atrium");
   RenderSettings settings;
-  settings.width = 96;
-  settings.height = 54;
+  settings.width = 160;
+  settings.height = 90;
   const test::Rendered reference = test::render(scene, settings);
   settings.technique = "lll";
   settings.linksPerTile = 1;  // far too small: the first frame must overflow
-  const test::Rendered lll = test::render(scene, settings);
-  EXPECT_GE(lll.frame.rerenders, 1u);
-  EXPECT_GE(statOf(lll, "overflows"), 1.0);
-  EXPECT_GE(statOf(lll, "link_pool_capacity"), statOf(lll, "links_used"));
-  EXPECT_GE(test::psnr(lll.ldr, reference.ldr), 45.0);
+  for (const char* fill : {"compute", "ray", "shells"}) {
+    settings.lllFill = fill;
+    const test::Rendered lll = test::render(scene, settings);
+    EXPECT_GE(lll.frame.rerenders, 1u) << fill;
+    EXPECT_GE(statOf(lll, "overflows"), 1.0) << fill;
+    EXPECT_GE(statOf(lll, "link_pool_capacity"), statOf(lll, "links_used")) << fill;
+    EXPECT_GE(test::psnr(lll.ldr, reference.ldr), 45.0) << fill;
+  }
 }
 
 TEST(LllImages, CompactLinksRefuseTooManyLights) {

@@ -22,16 +22,34 @@ layout(std430, set = 0, binding = 4) LLL_LIST_ACCESS buffer HeadBlock {
 layout(std430, set = 0, binding = 5) LLL_LIST_ACCESS buffer LinkBlock {
   uint linkWords[];
 };
-layout(std430, set = 0, binding = 6) buffer CounterBlock {
+// Shading passes must not see a writable buffer: lavapipe runs fragment shaders with side effects
+// far slower. Fills and the stats pass (LLL_WRITES_COUNTERS) write the counters.
+#if defined(LLL_FILL_PASS) || defined(LLL_WRITES_COUNTERS)
+#define LLL_COUNTER_ACCESS
+#else
+#define LLL_COUNTER_ACCESS readonly
+#endif
+layout(std430, set = 0, binding = 6) LLL_COUNTER_ACCESS buffer CounterBlock {
   LllCounters counters;
 };
 layout(std430, set = 0, binding = 7) LLL_LIST_ACCESS buffer TileDepthBlock {
   float tileDepth[];
 };
 
+// Clamped to the grid: helper invocations beyond the image's right or bottom edge must still read
+// a real list.
 uint tileIndexOf(uvec2 pixel) {
   uint tile = frame.counts.y;
-  return (pixel.y / tile) * frame.counts.z + pixel.x / tile;
+  uvec2 t = min(pixel / tile, frame.counts.zw - 1u);
+  return t.y * frame.counts.z + t.x;
+}
+
+// A fill pushes at most one link per light into a tile's list, so no walk needs more steps than
+// there are lights. Bounding walks by this rather than by the pool's size matters: inactive lanes
+// of a fragment shader (lavapipe runs 4x4 blocks) may start from undefined values, and a walk
+// bounded only by the pool then spins for the whole pool on a garbage chain while its block waits.
+uint longestPossibleList() {
+  return min(lll.params.x, frame.counts.x);
 }
 
 // fp16 of a depth rounded towards -infinity / +infinity, so a compact link's bounds only widen.
@@ -48,12 +66,8 @@ uint halfRoundedUp(float value) {
 }
 
 #ifdef LLL_FILL_PASS
-// Allocates a link and pushes it at the head of the tile's list (LIFO). Past the pool's end the
-// counter still counts, so the CPU learns the size the pool must grow to; nothing is written.
-void pushLink(uint tileIndex, uint lightIndex, float minDepth, float maxDepth) {
-  uint link = atomicAdd(counters.linksRequested, 1u);
-  if (link >= lll.params.x) return;
-  uint next = atomicExchange(tileHeads[tileIndex], link);
+// Writes link `link` (already allocated, inside the pool) in the pool's format.
+void writeLink(uint link, uint lightIndex, float minDepth, float maxDepth, uint next) {
   if (lll.params.y == kLinkCompact) {
     uint depths = halfRoundedDown(max(minDepth, 0.0)) | (halfRoundedUp(maxDepth) << 16);
     linkWords[2u * link] = depths;
@@ -65,6 +79,15 @@ void pushLink(uint tileIndex, uint lightIndex, float minDepth, float maxDepth) {
     linkWords[base + 2u] = lightIndex;
     linkWords[base + 3u] = next;
   }
+}
+
+// Allocates a link and pushes it at the head of the tile's list (LIFO), as the raster fills do:
+// any number of fragments may push into one tile at once. Past the pool's end the counter still
+// counts, so the CPU learns the size the pool must grow to; nothing is written.
+void pushLink(uint tileIndex, uint lightIndex, float minDepth, float maxDepth) {
+  uint link = atomicAdd(counters.linksRequested, 1u);
+  if (link >= lll.params.x) return;
+  writeLink(link, lightIndex, minDepth, maxDepth, atomicExchange(tileHeads[tileIndex], link));
 }
 #endif
 

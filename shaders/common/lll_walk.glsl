@@ -5,12 +5,12 @@
 #include "common/brdf.glsl"
 #include "common/lll_data.glsl"
 
-// Sum of the lights in the tile's list whose depth bounds contain `linearDepth`. The loop stops at
-// the pool's capacity too, so a corrupt list can never hang the GPU.
+// Sum of the lights in the tile's list whose depth bounds contain `linearDepth`. The loop also stops
+// after longestPossibleList() links, so a corrupt list can never hang the GPU.
 vec3 shadeFromLightList(Surface s, uint tileIndex, float linearDepth) {
   vec3 color = vec3(0.0);
   uint link = tileHeads[tileIndex];
-  for (uint guard = 0u; !isListEnd(link) && guard < lll.params.x; ++guard) {
+  for (uint guard = 0u; !isListEnd(link) && guard < longestPossibleList(); ++guard) {
     LightLink l = readLink(link);
     if (linearDepth >= l.minDepth && linearDepth <= l.maxDepth) color += evaluateLight(lights[l.light], s);
     link = l.next;
@@ -21,7 +21,7 @@ vec3 shadeFromLightList(Surface s, uint tileIndex, float linearDepth) {
 uint listLength(uint tileIndex) {
   uint count = 0u;
   uint link = tileHeads[tileIndex];
-  for (; !isListEnd(link) && count < lll.params.x; ++count) link = readLink(link).next;
+  for (; !isListEnd(link) && count < longestPossibleList(); ++count) link = readLink(link).next;
   return count;
 }
 

@@ -37,6 +37,9 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(CLI::IsMember({"shells", "ray", "compute"}));
   cmd.add_option("--lll-link", s.lllLink, "link format: compact (8 B, <=256 lights) | wide (16 B) | auto")
       ->check(CLI::IsMember({"compact", "wide", "auto"}));
+  cmd.add_option("--lll-shade", s.lllShade,
+                 "lll opaque shading: compute (thin G-buffer, list walk in a compute pass) | fragment")
+      ->check(CLI::IsMember({"compute", "fragment"}));
   cmd.add_option("--debug-view", s.debugView, "none | heatmap | bounds | tiles (lll)")
       ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));
   cmd.add_option(

@@ -13,6 +13,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/vk_check.h"
 #include "lighting/light_volumes.h"
+#include "render/gbuffer.h"
 #include "scene/errors.h"
 #include "shared/lll_types.h"
 
@@ -42,6 +43,9 @@ const std::initializer_list<Binding> kBindings = {
     {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kAllStages},
     {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {11, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+    {12, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+    {13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
 };
 
 LllFill parseFill(const std::string& name) {
@@ -49,6 +53,14 @@ LllFill parseFill(const std::string& name) {
   if (name == "ray") return LllFill::Ray;
   if (name == "compute") return LllFill::Compute;
   throw InputError(fmt::format("--lll-fill {}: expected shells, ray or compute", name));
+}
+
+// true: opaque surfaces are lit in a compute pass over a thin G-buffer; false: in the fragment
+// shader of a second geometry pass (the chapter's forward shading).
+bool parseComputeShading(const std::string& name) {
+  if (name == "compute") return true;
+  if (name == "fragment") return false;
+  throw InputError(fmt::format("--lll-shade {}: expected compute or fragment", name));
 }
 
 uint32_t parseLinkFormat(const std::string& name, uint32_t lightCount) {
@@ -109,10 +121,12 @@ class LightLinkedList final : public Technique {
   void fillRaster(FrameContext& frame);
   void drawShellBatch(FrameContext& frame, uint32_t first, uint32_t end, bool backFaces);
   void shade(FrameContext& frame);
+  void shadeOpaqueInCompute(FrameContext& frame);
   void measureLists(FrameContext& frame);
 
   Context& context_;
   LllFill fill_;
+  bool computeShading_;
   uint32_t linkFormat_;
   uint32_t linkBytes_;
   bool autoLinkFormat_;
@@ -151,12 +165,15 @@ class LightLinkedList final : public Technique {
   Pipeline shellBack_[2];
   Pipeline shadeOpaque_;
   Pipeline shadeBlend_;
+  Pipeline shadeCompute_;
+  std::unique_ptr<GBuffer> gbuffer_;  // --lll-shade compute only
 };
 
 LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const RenderSettings& settings,
                                  const FrameTargets& targets)
     : context_(context),
       fill_(parseFill(settings.lllFill)),
+      computeShading_(parseComputeShading(settings.lllShade)),
       linkFormat_(parseLinkFormat(settings.lllLink, scene.lightCount())),
       linkBytes_(linkFormat_ == gpu::kLinkCompact ? 8 : 16),
       autoLinkFormat_(settings.lllLink == "auto") {
@@ -177,6 +194,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
     maxPoolLinks_ = std::min<uint64_t>(maxPoolLinks_, gpu::kCompactLinkEnd);
   createBuffers();
   createPipelines(scene);
+  if (computeShading_) gbuffer_ = std::make_unique<GBuffer>(context, scene, targets);
   if (fill_ != LllFill::Compute) createShells(scene);
   allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile));
 }
@@ -221,6 +239,7 @@ void LightLinkedList::createPipelines(const GpuScene& scene) {
   tileDepthPipeline_ = Pipeline(context_, layout_, "lighting/lll/tile_depth.comp");
   statsPipeline_ = Pipeline(context_, layout_, "lighting/lll/stats.comp");
   if (fill_ == LllFill::Compute) computeFill_ = Pipeline(context_, layout_, "lighting/lll/fill_compute.comp");
+  if (computeShading_) shadeCompute_ = Pipeline(context_, layout_, "lighting/lll/shade.comp");
 
   GraphicsPipelineDesc fill;
   fill.vertexShader = "lighting/lll/fill_shell.vert";
@@ -380,9 +399,12 @@ void LightLinkedList::drawShellBatch(FrameContext& frame, uint32_t first, uint32
 }
 
 void LightLinkedList::shade(FrameContext& frame) {
+  if (computeShading_) gbuffer_->record(frame, "lll-gbuffer", frame.targets.hdr.view());
   memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+  if (computeShading_) shadeOpaqueInCompute(frame);
   const FrameTargets& t = frame.targets;
   const struct {
     const char* name;
@@ -391,6 +413,7 @@ void LightLinkedList::shade(FrameContext& frame) {
   } passes[2] = {{"lll-shade-opaque", shadeOpaque_, DrawFilter::Opaque},
                  {"lll-shade-blend", shadeBlend_, DrawFilter::Blend}};
   for (const auto& p : passes) {
+    if (p.filter == DrawFilter::Opaque && computeShading_) continue;
     if (p.filter == DrawFilter::Blend && !frame.scene.hasBlendDraws()) continue;
     ScopedPass pass(frame.timer, frame.cmd, p.name);
     beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), p.filter == DrawFilter::Opaque}},
@@ -400,6 +423,34 @@ void LightLinkedList::shade(FrameContext& frame) {
     frame.scene.draw(frame.cmd, shadeLayout_.handle(), p.filter, frame.eye);
     vkCmdEndRendering(frame.cmd);
   }
+}
+
+// The G-buffer pass left ambient and emission in the HDR target; one invocation per pixel adds
+// its tile's lights in place (storage image), then the target goes back to being an attachment
+// for the glass.
+void LightLinkedList::shadeOpaqueInCompute(FrameContext& frame) {
+  const FrameTargets& t = frame.targets;
+  ScopedPass pass(frame.timer, frame.cmd, "lll-shade-opaque");
+  t.hdr.transition(frame.cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  shadeCompute_.bind(frame.cmd);
+  descriptors(frame)
+      .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+             depthSampler_)
+      .image(11, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target0().view(),
+             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .image(12, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target1().view(),
+             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+  vkCmdDispatch(frame.cmd, divideRoundingUp(t.width, gpu::kTileGroupSize),
+                divideRoundingUp(t.height, gpu::kTileGroupSize), 1);
+  t.hdr.transition(frame.cmd, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                   VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
 }
 
 void LightLinkedList::measureLists(FrameContext& frame) {
@@ -440,6 +491,9 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
       {"tiles", double(tiles_)},
   };
   if (bounds_) s.push_back({"bounds_bytes", double(bounds_.size())});
+  if (gbuffer_)
+    s.push_back({"gbuffer_bytes", GBuffer::kBytesPerPixel * gbuffer_->target0().width() *
+                                      gbuffer_->target0().height()});
   if (measured_ && countersValid_) {
     s.push_back({"longest_list", double(lastCounters_.longestList)});
     s.push_back({"mean_list", double(lastCounters_.totalListLength) /

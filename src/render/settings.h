@@ -17,6 +17,7 @@ struct RenderSettings {
   // Light Linked List options (technique "lll").
   std::string lllFill = "compute";  // shells | ray | compute
   std::string lllLink = "auto";     // compact | wide | auto
+  std::string lllShade = "compute";  // compute (thin G-buffer + compute pass) | fragment
   uint32_t tileSize = 8;
   uint32_t linksPerTile = 32;      // initial link pool: tiles * this, grown on overflow
   std::string debugView = "none";  // none | heatmap | bounds | tiles

@@ -2,9 +2,12 @@
 #define LLL_FILL_PASS
 // The fill with no rasterizer. One workgroup covers 8x8 tiles: its threads first test 64 lights at a
 // time against the group's whole volume and gather the survivors in shared memory, then each thread
-// tests those against its own tile exactly (sphere to tile-volume distance, shared/lll_types.h) and
-// pushes the links. Spots add a conservative cone test (the cone against a sphere bounding the part
-// of the tile volume within the light's depth range).
+// tests those against its own tile exactly (sphere to tile-volume distance, shared/lll_types.h).
+// Spots add a conservative cone test (the cone against a sphere bounding the part of the tile
+// volume within the light's depth range).
+// Each thread owns its tile's list, so links need no atomic exchange at the head, and the group
+// allocates all its links of a batch with one atomic on the global counter (shared-memory offsets
+// within the group) instead of one per link: 16 full-screen lights at 1080p are 518,400 links.
 #include "lighting/lll/light_shape.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -12,6 +15,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 shared uint groupFarBits;
 shared uint candidateCount;
 shared uint candidates[64];
+shared uint groupLinks;
+shared uint groupBase;
 
 vec4 slopesOfTiles(uvec2 first, uvec2 last) {
   float size = float(frame.counts.y);
@@ -67,8 +72,12 @@ void main() {
   float groupFar = uintBitsToFloat(groupFarBits);
 
   uint lightCount = frame.counts.x;
+  uint head = kLinkEnd;
   for (uint base = 0u; base < lightCount; base += 64u) {
-    if (gl_LocalInvocationIndex == 0u) candidateCount = 0u;
+    if (gl_LocalInvocationIndex == 0u) {
+      candidateCount = 0u;
+      groupLinks = 0u;
+    }
     barrier();
     uint index = base + gl_LocalInvocationIndex;
     if (index < lightCount) {
@@ -78,13 +87,32 @@ void main() {
     }
     barrier();
     uint count = candidateCount;
+    // Which candidates touch this tile: one bit each (at most 64).
+    uvec2 hits = uvec2(0u);
     for (uint i = 0u; valid && i < count; ++i) {
       GpuLight light = lights[candidates[i]];
-      vec3 center = toViewDepthSpace(light.positionRange.xyz);
-      if (!lightTouches(light, center, ownSlopes, zNear, far)) continue;
-      float range = light.positionRange.w;
-      pushLink(tileIndex, candidates[i], center.z - range, center.z + range);
+      if (lightTouches(light, toViewDepthSpace(light.positionRange.xyz), ownSlopes, zNear, far))
+        hits[i >> 5] |= 1u << (i & 31u);
+    }
+    uint own = bitCount(hits.x) + bitCount(hits.y);
+    uint offset = own > 0u ? atomicAdd(groupLinks, own) : 0u;
+    barrier();
+    if (gl_LocalInvocationIndex == 0u && groupLinks > 0u)
+      groupBase = atomicAdd(counters.linksRequested, groupLinks);
+    barrier();
+    uint link = groupBase + offset;
+    for (uint word = 0u; word < 2u; ++word) {
+      while (hits[word] != 0u) {
+        uint i = word * 32u + uint(findLSB(hits[word]));
+        hits[word] &= hits[word] - 1u;
+        if (link >= lll.params.x) break;  // past the pool: counted, not written (the CPU grows it)
+        GpuLight light = lights[candidates[i]];
+        float z = toViewDepthSpace(light.positionRange.xyz).z, range = light.positionRange.w;
+        writeLink(link, candidates[i], z - range, z + range, head);
+        head = link++;
+      }
     }
     barrier();
   }
+  if (valid) tileHeads[tileIndex] = head;
 }

@@ -1,4 +1,5 @@
 #version 460
+#define LLL_WRITES_COUNTERS
 // Longest and total list length, for --stats (run on captured frames only).
 #include "common/frame.glsl"
 #include "common/lll_walk.glsl"

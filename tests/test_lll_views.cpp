@@ -1,0 +1,126 @@
+// The lll debug views (--debug-view heatmap|bounds|tiles) against the lists read back from the GPU,
+// under both shading paths (compute over the G-buffer, fragment over the geometry).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "lighting/lll.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_source.h"
+#include "test_support.h"
+
+namespace lll {
+namespace {
+
+// CPU copy of shaders/common/debug_colors.glsl's heat(): blue through green to red.
+glm::vec3 heat(float t) {
+  t = std::clamp(t, 0.0f, 1.0f);
+  return t < 0.5f ? glm::mix(glm::vec3(0, 0, 1), glm::vec3(0, 1, 0), t * 2.0f)
+                  : glm::mix(glm::vec3(0, 1, 0), glm::vec3(1, 0, 0), t * 2.0f - 1.0f);
+}
+
+struct ViewRender {
+  HdrImage hdr;
+  TileLightLists lists;
+};
+
+ViewRender renderView(const Scene& scene, const std::string& view, const std::string& shade) {
+  RenderSettings settings;
+  settings.technique = "lll";
+  settings.width = 157;  // not a multiple of the tile: the last column and row are partial
+  settings.height = 91;
+  settings.debugView = view;
+  settings.lllShade = shade;
+  Context& context = test::gpuContext();
+  const size_t before = context.validationMessages().size();
+  Renderer renderer(context, scene, settings);
+  renderer.renderFrame(true);
+  ViewRender out{renderer.hdrImage(), readTileLightLists(renderer.technique())};
+  const auto messages = context.validationMessages();
+  for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
+  return out;
+}
+
+Scene viewScene() {
+  return loadScene(SceneRequest{"atrium", 256, 5});
+}
+
+// Every pixel of the heatmap shows its tile's list length on the legend's scale (32 = red); the
+// renderer's scale constant is the one the tonemap's legend uses.
+class HeatmapView : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(HeatmapView, ShowsEachTilesListLength) {
+  const ViewRender r = renderView(viewScene(), "heatmap", GetParam());
+  const uint32_t tile = 8;
+  uint32_t checked = 0;
+  for (uint32_t y = 0; y < r.hdr.height; ++y) {
+    for (uint32_t x = 0; x < r.hdr.width; ++x) {
+      const glm::vec4 c = r.hdr.at(x, y);
+      if (c.r == 0.0f && c.g == 0.0f && c.b == 0.0f) continue;  // background or an empty list
+      const size_t count = r.lists.tiles[(y / tile) * r.lists.tilesX + x / tile].size();
+      ASSERT_GT(count, 0u) << "a coloured pixel in a tile without lights at " << x << "," << y;
+      const glm::vec3 expected = heat(float(count) / 32.0f);
+      ASSERT_NEAR(c.r, expected.r, 2e-3f) << x << "," << y << " list of " << count;
+      ASSERT_NEAR(c.g, expected.g, 2e-3f) << x << "," << y << " list of " << count;
+      ASSERT_NEAR(c.b, expected.b, 2e-3f) << x << "," << y << " list of " << count;
+      ++checked;
+    }
+  }
+  // The atrium fills the view: most pixels carry a list.
+  EXPECT_GT(checked, r.hdr.width * r.hdr.height / 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shading, HeatmapView, ::testing::Values("compute", "fragment"));
+
+TEST(LllViews, TilesViewDrawsTheGridOverTheLitImage) {
+  const Scene scene = viewScene();
+  for (const char* shade : {"compute", "fragment"}) {
+    const ViewRender r = renderView(scene, "tiles", shade);
+    uint32_t grid = 0, gridYellow = 0, inside = 0, insideYellow = 0;
+    for (uint32_t y = 0; y < r.hdr.height; ++y) {
+      for (uint32_t x = 0; x < r.hdr.width; ++x) {
+        const glm::vec4 c = r.hdr.at(x, y);
+        if (c.r == 0.0f && c.g == 0.0f && c.b == 0.0f) continue;  // background
+        const bool yellow = c.r == 1.0f && c.g == 1.0f && c.b == 0.0f;
+        if (x % 8 == 0 || y % 8 == 0) {
+          ++grid;
+          gridYellow += yellow;
+        } else {
+          ++inside;
+          insideYellow += yellow;
+        }
+      }
+    }
+    EXPECT_GT(grid, 1000u) << shade;
+    EXPECT_EQ(gridYellow, grid) << shade << ": every grid line pixel on geometry is yellow";
+    EXPECT_LT(insideYellow, inside / 100 + 1) << shade << ": the lit image shows between the lines";
+  }
+}
+
+// The bounds view depends only on the lists and the surfaces, so both shading paths agree, and it
+// shows all three states (reached, listed but out of range, unlisted).
+TEST(LllViews, BoundsViewAgreesAcrossShadingPaths) {
+  const Scene scene = viewScene();
+  const ViewRender compute = renderView(scene, "bounds", "compute");
+  const ViewRender fragment = renderView(scene, "bounds", "fragment");
+  uint32_t differing = 0, grey = 0, coloured = 0;
+  for (uint32_t y = 0; y < compute.hdr.height; ++y) {
+    for (uint32_t x = 0; x < compute.hdr.width; ++x) {
+      const glm::vec4 a = compute.hdr.at(x, y), b = fragment.hdr.at(x, y);
+      if (glm::length(glm::vec3(a) - glm::vec3(b)) > 1e-3f) ++differing;
+      if (a.r == 0.25f && a.g == 0.25f && a.b == 0.25f)
+        ++grey;
+      else if (a.r + a.g + a.b > 0.0f)
+        ++coloured;
+    }
+  }
+  // Position from depth (compute) and from interpolation (fragment) differ by rounding: a light
+  // exactly at the edge of its range may flip a handful of pixels.
+  EXPECT_LT(differing, compute.hdr.width * compute.hdr.height / 200);
+  EXPECT_GT(grey, 0u);
+  EXPECT_GT(coloured, 0u);
+}
+
+}  // namespace
+}  // namespace lll
