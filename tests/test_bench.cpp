@@ -59,7 +59,7 @@ TEST(BenchStats, PassOrderKeepsEveryFramesOwnOrder) {
 
 size_t variantsPerLightCount() {
   size_t n = 0;
-  for (const TechniqueInfo& t : techniques()) n += t.name == "lll" ? 3 : 1;
+  for (const TechniqueInfo& t : techniques()) n += t.name == "lll" ? 4 : 1;  // 3 fills + fragment shading
   return n;
 }
 
@@ -85,14 +85,15 @@ TEST(BenchSuites, ForwardOverManyLightsIsSkippedOnCpuUnlessAsked) {
 
 TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {
   const auto threel = buildSuite("threel", SuiteOptions{.quick = true});
-  ASSERT_EQ(threel.size(), 16u);
+  ASSERT_EQ(threel.size(), 20u);
   std::set<std::string> labels, names;
   for (const Scenario& s : threel) {
     labels.insert(techniqueLabel(s.settings));
     names.insert(s.name);
     EXPECT_EQ(s.settings.tileSize, 8u);
   }
-  EXPECT_EQ(labels, (std::set<std::string>{"lll/shells", "lll/ray", "lll/compute", "forward"}));
+  EXPECT_EQ(labels, (std::set<std::string>{"lll/shells", "lll/ray", "lll/compute", "lll/compute/fragment-shade",
+                                           "forward"}));
   EXPECT_EQ(names, (std::set<std::string>{"threel16 32x18", "threel16 64x36", "threel256 32x18",
                                           "threel256 64x36"}));
   EXPECT_THROW(buildSuite("nope", SuiteOptions{}), InputError);
@@ -172,7 +173,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   const fs::path dir = freshDir("bench-test");
   writeReport(report, dir);
 
-  ASSERT_EQ(report.results.size(), 16u);
+  ASSERT_EQ(report.results.size(), 20u);
   std::map<std::string, size_t> expectedRows;
   for (const ScenarioResult& r : report.results) {
     const std::string& technique = r.scenario.settings.technique;
@@ -182,7 +183,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
     if (r.status != Status::Ok) continue;
     EXPECT_NE(r.pass("frame"), nullptr);
     EXPECT_EQ(r.lightCount, r.scenario.scene.scene == "threel16" ? 16u : 256u);
-    const std::string fill = technique == "lll" ? r.scenario.settings.lllFill : "";
+    const std::string fill = bench::lllVariant(r.scenario.settings);
     if (technique == "lll") {
       EXPECT_GT(r.memory.size(), 1u) << "the link pool and heads, not only depth";
     }
@@ -194,7 +195,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   const auto json = nlohmann::json::parse(readText(dir / "results.json"));
   EXPECT_EQ(json["device"], context.info().name);
   EXPECT_EQ(json["commit"], gitCommit());
-  ASSERT_EQ(json["results"].size(), 16u);
+  ASSERT_EQ(json["results"].size(), 20u);
   for (const auto& r : json["results"]) {
     EXPECT_EQ(r["driver"], context.info().driver);
     EXPECT_FALSE(r["date"].get<std::string>().empty());

@@ -283,6 +283,10 @@ TEST_F(CliTest, LightsBeyondTheLightBuffer) {
   expectBadInput(render("plane", {"--lights", "1048576"}), {"--lights 1048576", "1048577", "at most"});
 }
 
+TEST_F(CliTest, AbsurdLightRangeScale) {
+  expectBadInput(render("plane", {"--lights", "4", "--light-range-scale", "0"}), {"--light-range-scale", "0"});
+}
+
 TEST_F(CliTest, UnknownTechniqueListsTechniques) {
   expectBadInput(render("plane", {"--technique", "nosuch"}), {"--technique nosuch", "forward", "lll"});
 }

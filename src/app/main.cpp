@@ -20,6 +20,8 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--lights", job.scene.extraLights,
                  "random point lights: scattered in the scene bounds, added to the file's own lights")
       ->check(CLI::Range(0u, 1u << 20));
+  cmd.add_option("--light-range-scale", job.scene.lightRangeScale,
+                 "multiplies the ranges of the --lights lights (light-volume overdraw studies)");
   cmd.add_option("--seed", job.scene.seed, "seed for random lights and particles")
       ->each([&s](const std::string& v) { s.seed = uint32_t(std::stoul(v)); });
   cmd.add_option("--camera", s.camera, "camera name, or eye and target as \"ex,ey,ez,tx,ty,tz\"");

@@ -31,8 +31,7 @@ struct FrameCounts {
 class SceneCache {
  public:
   const Scene& get(const SceneRequest& request) {
-    if (!scene_ || request.scene != key_.scene || request.extraLights != key_.extraLights ||
-        request.seed != key_.seed) {
+    if (!scene_ || request != key_) {
       scene_.reset();
       scene_ = loadScene(request);
       key_ = request;

@@ -39,6 +39,7 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"technique", s.settings.technique},
       {"label", techniqueLabel(s.settings)},
       {"fill", s.settings.technique == "lll" ? s.settings.lllFill : ""},
+      {"shade", s.settings.technique == "lll" ? s.settings.lllShade : ""},
       {"tile", s.settings.tileSize},
       {"particles", s.settings.particles},
       {"particle_count", s.settings.particleCount},
@@ -113,7 +114,7 @@ void writeResultsCsv(const BenchReport& report, const std::filesystem::path& pat
          "memory_bytes,device,driver,commit,date\n";
   for (const ScenarioResult& r : report.results) {
     const Scenario& s = r.scenario;
-    const std::string fill = s.settings.technique == "lll" ? s.settings.lllFill : "";
+    const std::string fill = lllVariant(s.settings);  // "compute/fragment-shade" for fragment shading
     for (const PassSummary& p : r.passes)
       out << fmt::format("{},{},{},{},{},{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.0f},{},{},{},{}\n", s.suite,
                          csvField(s.name), csvField(s.scene.scene), r.lightCount, s.settings.width,

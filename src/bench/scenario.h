@@ -18,6 +18,9 @@ struct Scenario {
   std::string skip;         // why the suite leaves it out (recorded, not run); empty to run it
 };
 
+// The light linked list's variant: its fill, with "/fragment-shade" when opaque surfaces are lit
+// in the fragment shader rather than the default compute pass; empty for other techniques.
+std::string lllVariant(const RenderSettings& settings);
 // "lll/ray" for the light linked list (its fill matters as much as the technique), else the name.
 std::string techniqueLabel(const RenderSettings& settings);
 

@@ -34,7 +34,8 @@ Scenario makeScenario(const std::string& suite, const std::string& name, const S
   return s;
 }
 
-// One copy of `base` per technique in `names`; "lll" expands to one per fill when `everyFill`.
+// One copy of `base` per technique in `names`; "lll" expands to one per fill when `everyFill`
+// (opaque shading in compute), plus the compute fill with the chapter's fragment shading.
 std::vector<Scenario> perTechnique(const Scenario& base, const std::vector<std::string>& names,
                                    bool everyFill) {
   std::vector<Scenario> out;
@@ -49,6 +50,9 @@ std::vector<Scenario> perTechnique(const Scenario& base, const std::vector<std::
       s.settings.lllFill = fill;
       out.push_back(s);
     }
+    s.settings.lllFill = "compute";
+    s.settings.lllShade = "fragment";
+    out.push_back(s);
   }
   return out;
 }
@@ -115,6 +119,21 @@ std::vector<Scenario> tilesSuite(const SuiteOptions& options) {
   return out;
 }
 
+// Infinity's observation: deferred lighting costs what its light volumes cover, not how many
+// lights there are. Same 256 lights, ranges scaled 1/4x to 2x: light-volume fragments (overdraw)
+// against deferred-lights time, with lll and forward beside it.
+std::vector<Scenario> overdrawSuite(const SuiteOptions& options) {
+  const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
+  std::vector<Scenario> out;
+  for (const float scale : {0.25f, 0.5f, 1.0f, 2.0f}) {
+    SceneRequest scene{kDefaultSceneName, 256, 1};
+    scene.lightRangeScale = scale;
+    const Scenario base = makeScenario("overdraw", fmt::format("range x{}", scale), scene, size);
+    append(out, perTechnique(base, {"deferred", "prepass", "lll", "forward"}, false));
+  }
+  return out;
+}
+
 // Lit smoke in the default scene with 256 extra lights. The runner records it as skipped while
 // no technique draws particles.
 std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
@@ -134,12 +153,17 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
 
 }  // namespace
 
+std::string lllVariant(const RenderSettings& settings) {
+  if (settings.technique != "lll") return "";
+  return settings.lllShade == "fragment" ? settings.lllFill + "/fragment-shade" : settings.lllFill;
+}
+
 std::string techniqueLabel(const RenderSettings& settings) {
-  return settings.technique == "lll" ? "lll/" + settings.lllFill : settings.technique;
+  return settings.technique == "lll" ? "lll/" + lllVariant(settings) : settings.technique;
 }
 
 const std::vector<std::string>& suiteNames() {
-  static const std::vector<std::string> names = {"threel", "scaling", "tiles", "smoke"};
+  static const std::vector<std::string> names = {"threel", "scaling", "tiles", "overdraw", "smoke"};
   return names;
 }
 
@@ -147,6 +171,7 @@ std::vector<Scenario> buildSuite(const std::string& suite, const SuiteOptions& o
   if (suite == "threel") return threelSuite(options);
   if (suite == "scaling") return scalingSuite(options);
   if (suite == "tiles") return tilesSuite(options);
+  if (suite == "overdraw") return overdrawSuite(options);
   if (suite == "smoke") return smokeSuite(options);
   throw InputError(
       fmt::format("--suite {}: unknown suite (known: {})", suite, fmt::join(suiteNames(), ", ")));

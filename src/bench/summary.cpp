@@ -100,12 +100,38 @@ std::string notRun(const Results& results) {
   return md.empty() ? md : "Not measured:\n\n" + md;
 }
 
+const double* statOf(const ScenarioResult& r, const std::string& key) {
+  for (const auto& [name, value] : r.techniqueStats)
+    if (name == key) return &value;
+  return nullptr;
+}
+
+// Techniques drawing lights as volumes report their light pass's fragment count ("<technique>-
+// lights" pass): overdraw (fragments per pixel) and the pass's time per fragment.
+std::string overdrawCell(const ScenarioResult& r) {
+  const double* fragments = statOf(r, "light-volume-fragments");
+  const double* overdraw = statOf(r, "light-volume-overdraw");
+  const PassSummary* lights = r.pass(r.scenario.settings.technique + "-lights");
+  if (!fragments || !overdraw || !lights || *fragments <= 0.0) return "";
+  return fmt::format("{:.1f} ({:.2f} ns/fragment)", *overdraw, lights->medianMs * 1e6 / *fragments);
+}
+
+std::string overdrawTable(const Results& results) {
+  Results volumes;
+  for (const ScenarioResult* r : results)
+    if (r->status == Status::Ok && statOf(*r, "light-volume-fragments")) volumes.push_back(r);
+  if (volumes.empty()) return "";
+  return "\nLight-volume overdraw: fragments shaded by the light pass per pixel (its time per fragment)\n\n" +
+         pivot(volumes, overdrawCell);
+}
+
 std::string suiteSection(const std::string& suite, const Results& results, uint32_t frames) {
   std::string md = fmt::format("## {}\n\n", suite);
   md += fmt::format("Frame time, ms: median of {} timed frames (min–max)\n\n", frames) +
         pivot(results, frameCell);
   md += "\nGPU memory of the lighting data, MiB (depth + the technique's buffers)\n\n" +
         pivot(results, memoryCell);
+  md += overdrawTable(results);
   md += "\nPer-pass GPU time, ms (median)\n\n" + passTable(results);
   const std::string skipped = notRun(results);
   return md + (skipped.empty() ? "" : "\n" + skipped) + "\n";

@@ -307,6 +307,8 @@ void Context::createDevice() {
   features.features.samplerAnisotropy = supported.samplerAnisotropy;
   features.features.independentBlend = supported.independentBlend;
   features.features.depthClamp = supported.depthClamp;  // light volumes must not lose far faces
+  features.features.pipelineStatisticsQuery = supported.pipelineStatisticsQuery;
+  pipelineStatistics_ = supported.pipelineStatisticsQuery == VK_TRUE;
 
   const char* extensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};

@@ -47,6 +47,8 @@ class Context {
   // Nanoseconds per timestamp tick; 0 when the queue has no timestamps.
   double timestampPeriodNs() const { return timestampPeriodNs_; }
   uint32_t timestampValidBits() const { return timestampValidBits_; }
+  // pipelineStatisticsQuery is enabled (fragment counts for overdraw; see fragment_counter.h).
+  bool pipelineStatistics() const { return pipelineStatistics_; }
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
                           VkMemoryPropertyFlags preferred = 0) const;
@@ -83,6 +85,7 @@ class Context {
   double timestampPeriodNs_ = 0.0;
   uint32_t timestampValidBits_ = 0;
   bool validation_ = false;
+  bool pipelineStatistics_ = false;
   mutable std::mutex messagesMutex_;
   std::vector<std::string> messages_;
 };

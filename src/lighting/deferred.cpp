@@ -11,6 +11,7 @@
 // material id that lll does not need, fp16 for base colour, and a forward-lit colour that here is
 // the accumulation target itself. Here depth is the prepass's, sampled directly.
 #include "gpu/context.h"
+#include "gpu/fragment_counter.h"
 #include "gpu/pipeline.h"
 #include "lighting/technique.h"
 #include "lighting/volume_lights.h"
@@ -67,6 +68,8 @@ class Deferred final : public Technique {
         lightLayout_(context, kLightBindings),
         gbuffer_(context, scene, targets),
         volumes_(context, uint32_t(scene.scene().lights.size())),
+        lightFragments_(context),
+        pixels_(double(targets.width) * targets.height),
         edgeAa_(edgeAntiAliasing(settings)) {
     if (edgeAa_) {
       const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
@@ -86,14 +89,28 @@ class Deferred final : public Technique {
     translucentPass(frame);
   }
 
+  bool afterFrame() override {
+    if (auto count = lightFragments_.read()) lastLightFragments_ = double(*count);
+    return false;
+  }
+
   std::vector<std::pair<std::string, double>> stats() const override {
     const LightVolumeCounts& c = volumes_.counts();
-    return {{"gbuffer-bytes-per-pixel", GBuffer::kBytesPerPixel},
-            {"gbuffer-with-depth-and-accumulation-bytes-per-pixel",
-             GBuffer::kBytesPerPixel + kDepthAndAccumulationBytesPerPixel},
-            {"lights-drawn", c.visible},
-            {"lights-drawn-camera-inside", c.cameraInside},
-            {"lights-drawn-as-cones", c.cones}};
+    std::vector<std::pair<std::string, double>> s = {
+        {"gbuffer-bytes-per-pixel", GBuffer::kBytesPerPixel},
+        {"gbuffer-with-depth-and-accumulation-bytes-per-pixel",
+         GBuffer::kBytesPerPixel + kDepthAndAccumulationBytesPerPixel},
+        {"gbuffer_bytes", GBuffer::kBytesPerPixel * pixels_},  // the bench's memory column
+        {"lights-drawn", c.visible},
+        {"lights-drawn-camera-inside", c.cameraInside},
+        {"lights-drawn-as-cones", c.cones}};
+    if (accumulation_) s.push_back({"accumulation_bytes", 8.0 * pixels_});
+    if (lastLightFragments_ >= 0.0) {
+      // Fragment shader invocations of the light volumes: Infinity's cost driver.
+      s.push_back({"light-volume-fragments", lastLightFragments_});
+      s.push_back({"light-volume-overdraw", lastLightFragments_ / pixels_});
+    }
+    return s;
   }
 
  private:
@@ -148,6 +165,7 @@ class Deferred final : public Technique {
   // group is one instanced draw with one pipeline, so no state changes between its lights.
   void lightPass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
+    lightFragments_.reset(frame.cmd);
     ScopedPass pass(frame.timer, frame.cmd, "deferred-lights");
     volumes_.prepare(frame.scene.scene().lights, frame.uniforms,
                      [](const PlacedLightVolume& v) { return v.cameraInside ? kInside : kOutside; });
@@ -164,10 +182,12 @@ class Deferred final : public Technique {
     volumes_.addBindings(writer).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                                       lightLayout_.handle());
     volumes_.bindGeometry(frame.cmd);
+    lightFragments_.begin(frame.cmd);
     for (const VolumeRun& run : volumes_.runs()) {
       (run.group == kInside ? insidePipeline_ : outsidePipeline_).bind(frame.cmd);
       volumes_.draw(frame.cmd, run.shape, run.first, run.count);
     }
+    lightFragments_.end(frame.cmd);
     vkCmdEndRendering(frame.cmd);
   }
 
@@ -226,6 +246,9 @@ class Deferred final : public Technique {
   GBuffer gbuffer_;
   Image accumulation_;
   LightVolumeDraws volumes_;
+  FragmentCounter lightFragments_;
+  double pixels_;
+  double lastLightFragments_ = -1.0;
   bool edgeAa_;
 };
 

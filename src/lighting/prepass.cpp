@@ -125,7 +125,8 @@ class Prepass final : public Technique {
                     {scene.materialSetLayout()}),
         lightLayout_(context, kLightBindings),
         depthStencilFormat_(depthStencilFormat(context)),
-        volumes_(context, uint32_t(scene.scene().lights.size())) {
+        volumes_(context, uint32_t(scene.scene().lights.size())),
+        pixels_(double(targets.width) * targets.height) {
     const VkImageUsageFlags color = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     normals_ = Image(context, targets.width, targets.height, kNormalFormat, color, "prepass-normals");
     diffuse_ = Image(context, targets.width, targets.height, kLightBufferFormat, color, "prepass-diffuse");
@@ -145,13 +146,19 @@ class Prepass final : public Technique {
 
   std::vector<std::pair<std::string, double>> stats() const override {
     const double depthStencilBytes = depthStencilFormat_ == VK_FORMAT_D32_SFLOAT_S8_UINT ? 5 : 4;
-    return {{"gbuffer-bytes-per-pixel", kNormalBytesPerPixel},
-            {"light-buffer-bytes-per-pixel", kLightBufferBytesPerPixel},
-            {"depth-stencil-bytes-per-pixel", depthStencilBytes},
-            {"lights-drawn", volumes_.counts().visible},
-            {"lights-stencil-marked", counts_.stencilZPass + counts_.stencilZFail},
-            {"lights-stencil-marked-z-fail", counts_.stencilZFail},
-            {"lights-small-unstenciled", counts_.small}};
+    std::vector<std::pair<std::string, double>> s = {
+        {"gbuffer-bytes-per-pixel", kNormalBytesPerPixel},
+        {"light-buffer-bytes-per-pixel", kLightBufferBytesPerPixel},
+        {"depth-stencil-bytes-per-pixel", depthStencilBytes},
+        // Totals for the bench's memory column (keys ending in _bytes).
+        {"normals_bytes", kNormalBytesPerPixel * pixels_},
+        {"light_buffers_bytes", kLightBufferBytesPerPixel * pixels_},
+        {"depth_stencil_bytes", depthStencilBytes * pixels_},
+        {"lights-drawn", volumes_.counts().visible},
+        {"lights-stencil-marked", counts_.stencilZPass + counts_.stencilZFail},
+        {"lights-stencil-marked-z-fail", counts_.stencilZFail},
+        {"lights-small-unstenciled", counts_.small}};
+    return s;
   }
 
  private:
@@ -343,6 +350,7 @@ class Prepass final : public Technique {
   Image specular_;
   Image depthStencil_;
   LightVolumeDraws volumes_;
+  double pixels_;
   LightPassCounts counts_;
 };
 

@@ -34,11 +34,16 @@ Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings)
     throw InputError(fmt::format("--lights {}: the scene would have {} lights; at most {} are supported",
                                  request.extraLights, scene.lights.size() + request.extraLights,
                                  gpu::kMaxLights));
+  if (!(request.lightRangeScale > 0.0f && request.lightRangeScale <= kMaxLightRangeScale))
+    throw InputError(fmt::format("--light-range-scale {}: expected a factor in (0, {}]", request.lightRangeScale,
+                                 kMaxLightRangeScale));
   if (request.extraLights > 0) {
     const Bounds bounds = scene.worldBounds();
     if (!bounds.valid())
       throw InputError(fmt::format("scene '{}': has no geometry to place --lights in", name));
+    const size_t first = scene.lights.size();
     scatterRandomLights(scene.lights, bounds, request.extraLights, request.seed);
+    for (size_t i = first; i < scene.lights.size(); ++i) scene.lights[i].range *= request.lightRangeScale;
   }
   return scene;
 }

@@ -8,10 +8,15 @@
 
 namespace lll {
 
+// Largest --light-range-scale: beyond it every random light covers the whole default scene.
+inline constexpr float kMaxLightRangeScale = 16.0f;
+
 struct SceneRequest {
   std::string scene;         // built-in name or path; empty for the default scene
   uint32_t extraLights = 0;  // --lights: scattered when the scene has none, added otherwise
   uint32_t seed = 1;
+  float lightRangeScale = 1.0f;  // multiplies the ranges of the --lights lights (overdraw studies)
+  bool operator==(const SceneRequest&) const = default;
 };
 
 // Throws InputError for an unknown name, a missing or broken file, or too many lights.
