@@ -10,6 +10,7 @@
 #include <string>
 
 #include "scene/mesh_builder.h"
+#include "scene/builtin_scenes.h"
 #include "scene/scene_source.h"
 #include "test_support.h"
 
@@ -373,6 +374,13 @@ TEST(DeferredLightVolumes, LightsBehindTheCamera) {
       expectMatchesForward("deferred", scene, "lights behind the camera", int(kWidth * kHeight) / 4);
   EXPECT_EQ(stat(c.candidate, "lights-drawn"), double(reaching));
   EXPECT_EQ(stat(c.candidate, "lights-drawn-camera-inside"), double(reaching));
+}
+
+// Box lights are drawn as their bounding spheres; the shader's box window does the rest.
+TEST(DeferredLightVolumes, BoxLights) {
+  const Scene scene = *makeBuiltinScene("box-plane");
+  for (const char* technique : {"deferred", "prepass"})
+    expectMatchesForward(technique, scene, std::string("box lights, ") + technique, int(kWidth * kHeight) / 20);
 }
 
 // ---------------------------------------------------------------------------------------------

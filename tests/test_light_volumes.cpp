@@ -27,6 +27,15 @@ TEST(LightVolumes, SphereShellContainsUnitSphere) {
   for (const glm::vec3& p : mesh.positions) EXPECT_LT(glm::length(p), 1.3f);
 }
 
+TEST(LightVolumes, BoxShellIsTheUnitCubeWoundOutwards) {
+  const VolumeMesh mesh = boxShell();
+  EXPECT_EQ(mesh.positions.size(), 8u);
+  EXPECT_EQ(mesh.indices.size(), 36u);
+  // Every face at distance exactly 1 from the centre, its normal pointing away from it.
+  checkFacesOutside(mesh, glm::vec3(0.0f), 1.0f);
+  for (const glm::vec3& p : mesh.positions) EXPECT_FLOAT_EQ(glm::length(p), std::sqrt(3.0f));
+}
+
 TEST(LightVolumes, ConeShellContainsTruncatedCone) {
   const VolumeMesh mesh = coneShell(16);
   // Every face lies outside points of the exact cone: sample the cone's boundary circle at z = 1

@@ -8,6 +8,7 @@
 #include "lighting/lll.h"
 #include "scene/builtin_scenes.h"
 #include "scene/errors.h"
+#include "scene/lights.h"
 #include "scene/scene_source.h"
 #include "shared/lll_types.h"
 #include "test_support.h"
@@ -17,8 +18,9 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-// The plane under a camera 8 m above it, with point and spot lights of every awkward kind: one
-// around the camera, some below the floor (hidden), some off-screen, spots pointing every way.
+// The plane under a camera 8 m above it, with point, spot and box lights of every awkward kind: one
+// around the camera, some below the floor (hidden), some off-screen, spots pointing every way,
+// boxes turned every way (one around the camera, one under the floor).
 Scene awkwardLightsScene(uint32_t extraPoints) {
   Scene scene = *makeBuiltinScene("plane");
   scene.lights.clear();
@@ -56,6 +58,14 @@ Scene awkwardLightsScene(uint32_t extraPoints) {
     spot.innerConeAngle = spot.outerConeAngle * 0.7f;
     scene.lights.push_back(spot);
   }
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 x(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)), y(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+    scene.lights.push_back(makeBoxLight({uniform(-8, 8), uniform(-0.5f, 3), uniform(-8, 8)}, x, y,
+                                        {uniform(0.3f, 4), uniform(0.3f, 2), uniform(0.3f, 1.5f)},
+                                        {uniform(0.2f, 1), uniform(0.2f, 1), uniform(0.2f, 1)}, 6.0f));
+  }
+  scene.lights.push_back(makeBoxLight({0.0f, 7.0f, 0.5f}, {1, 0, 0}, {0, 1, 1}, {3, 2, 2}, glm::vec3(1.0f), 8.0f));
+  scene.lights.push_back(makeBoxLight({2.0f, -1.5f, 0.0f}, {1, 0, 0}, {0, 1, 0}, {2, 1, 2}, glm::vec3(1.0f), 8.0f));
   return scene;
 }
 
@@ -82,20 +92,38 @@ struct ViewLight {
   float range;
   float cosOuter;
   bool spot;
+  bool box;
+  glm::vec3 boxAxes[3];  // unit, view space
+  glm::vec3 halfExtents;
 };
+
+glm::vec3 toViewDepth(const glm::mat4& view, const glm::vec3& direction) {
+  const glm::vec3 a = glm::mat3(view) * direction;
+  return {a.x, a.y, -a.z};
+}
 
 ViewLight toView(const Light& light, const glm::mat4& view) {
   const glm::vec3 c = glm::vec3(view * glm::vec4(light.position, 1.0f));
-  const glm::vec3 a = glm::mat3(view) * light.direction;
-  return {{c.x, c.y, -c.z},
-          glm::normalize(glm::vec3(a.x, a.y, -a.z)),
-          light.range,
-          std::cos(light.outerConeAngle),
-          light.type == LightType::Spot};
+  ViewLight l{{c.x, c.y, -c.z},
+              glm::normalize(toViewDepth(view, light.direction)),
+              light.range,
+              std::cos(light.outerConeAngle),
+              light.type == LightType::Spot,
+              light.type == LightType::Box,
+              {},
+              light.halfExtents};
+  const glm::vec3 axes[3] = {light.boxAxisX, light.boxAxisY, glm::cross(light.boxAxisX, light.boxAxisY)};
+  for (int i = 0; i < 3; ++i) l.boxAxes[i] = toViewDepth(view, axes[i]);
+  return l;
 }
 
 bool insideLight(const ViewLight& l, glm::vec3 p, float shrink) {
   const glm::vec3 d = p - l.center;
+  if (l.box) {
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(glm::dot(d, l.boxAxes[i])) > l.halfExtents[i] * shrink) return false;
+    return true;
+  }
   const float dist = glm::length(d);
   if (dist > l.range * shrink) return false;
   return !l.spot || dist < 1e-6f || glm::dot(d / dist, l.axis) >= l.cosOuter + 1e-3f;
@@ -166,7 +194,7 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings) {
         const float dist = std::sqrt(referenceDistanceSquared(l.center, slopes, zNear, zFar));
         const std::vector<glm::vec3> inside =
             dist <= l.range ? samplesInside(l, slopes, zNear, zFar) : std::vector<glm::vec3>{};
-        const bool must = !inside.empty() || (!l.spot && dist <= l.range * 0.999f);
+        const bool must = !inside.empty() || (!l.spot && !l.box && dist <= l.range * 0.999f);
         check.mustList += must;
         const LightLinkRecord* link = byLight[i];
         if (must && !link) ++check.missing;

@@ -68,13 +68,31 @@ float spotAttenuation(GpuLight light, vec3 towardsLight) {
   return t * t;
 }
 
+// A box light's window: KHR's (1 - x^4)^2 along each of the box's axes, x the position over the half
+// extent, so the light fades to exactly zero at every face. `offset` is from the box's centre.
+float boxWindow(GpuLight light, vec3 offset) {
+  vec3 x = light.directionType.xyz, y = light.spotParams.xyz;  // axes times half extents
+  vec3 z = normalize(cross(x, y));
+  vec3 q = vec3(dot(offset, x) / dot(x, x), dot(offset, y) / dot(y, y), dot(offset, z) / light.spotParams.w);
+  vec3 w = clamp(1.0 - q * q * q * q, 0.0, 1.0);
+  w *= w;
+  return w.x * w.y * w.z;
+}
+
+// How much of a light's intensity reaches a point `toLight` away from it (`distance` its length):
+// inverse square times the light's window (range sphere, spot cone or box).
+float lightAttenuation(GpuLight light, vec3 toLight, float distance) {
+  if (uint(light.directionType.w) == kLightBox) return boxWindow(light, -toLight) / max(distance * distance, 1e-4);
+  return rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, toLight / max(distance, 1e-6));
+}
+
 // Radiance one light reflects from the surface towards the eye.
 vec3 evaluateLight(GpuLight light, Surface s) {
   vec3 toLight = light.positionRange.xyz - s.position;
   float distance = length(toLight);
   if (distance >= light.positionRange.w) return vec3(0.0);
   vec3 l = toLight / max(distance, 1e-6);
-  float attenuation = rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
+  float attenuation = lightAttenuation(light, toLight, distance);
   if (attenuation <= 0.0) return vec3(0.0);
   return brdfCosine(s, l) * light.colorIntensity.rgb * (light.colorIntensity.w * attenuation);
 }

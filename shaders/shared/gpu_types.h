@@ -7,10 +7,13 @@ LLL_NAMESPACE_BEGIN
 
 // One punctual light (KHR_lights_punctual), in world space.
 struct GpuLight {
-  vec4 positionRange;   // xyz position, w range (distance where the light is cut off)
+  vec4 positionRange;   // xyz position, w range (distance where the light is cut off; a box's
+                        // bounding radius)
   vec4 colorIntensity;  // rgb linear colour, w intensity (candela)
-  vec4 directionType;   // xyz direction the spot points to (unit), w kLightPoint or kLightSpot
-  vec4 spotParams;      // x cos(outer cone), y cos(inner cone), z angle scale, w angle offset
+  vec4 directionType;   // xyz spot: direction it points to (unit); box: its x axis times its half
+                        // extent; w kLightPoint, kLightSpot or kLightBox
+  vec4 spotParams;      // spot: x cos(outer cone), y cos(inner cone), z angle scale, w angle offset
+                        // box: xyz its y axis times its half extent, w its half extent along z
 };
 LLL_CHECK_SIZE(GpuLight, 64);
 

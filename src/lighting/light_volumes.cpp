@@ -63,4 +63,18 @@ VolumeMesh coneShell(uint32_t sides) {
   return mesh;
 }
 
+VolumeMesh boxShell() {
+  VolumeMesh mesh;
+  for (int i = 0; i < 8; ++i)
+    mesh.positions.push_back(glm::vec3(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f, i & 4 ? 1.0f : -1.0f));
+  // Two triangles per face, counter-clockwise seen from outside.
+  mesh.indices = {0, 2, 3, 0, 3, 1,   // -z
+                  4, 5, 7, 4, 7, 6,   // +z
+                  0, 1, 5, 0, 5, 4,   // -y
+                  2, 6, 7, 2, 7, 3,   // +y
+                  0, 4, 6, 0, 6, 2,   // -x
+                  1, 3, 7, 1, 7, 5};  // +x
+  return mesh;
+}
+
 }  // namespace lll

@@ -23,4 +23,8 @@ VolumeMesh sphereShell();
 // spot light volume (cone intersected with the range sphere) when len = range.
 VolumeMesh coneShell(uint32_t sides = 16);
 
+// The cube [-1, 1]^3 (8 vertices, 12 triangles): mapped onto a box light's axes it is the exact
+// box, so a box light's shell adds nothing beyond its volume.
+VolumeMesh boxShell();
+
 }  // namespace lll

@@ -25,6 +25,8 @@ namespace {
 constexpr uint32_t kShellBatch = 0xFFFF;
 // Bounds layers (as Bezrati's sample's 12): overlapping lights rarely overwrite each other's depth.
 constexpr uint32_t kBoundsLayers = 8;
+// Shell meshes of the raster fills: sphere, cone, box (the fill_shell.vert specialization).
+constexpr uint32_t kShellShapes = 3;
 // Growth beyond the requested links on overflow, so a slowly growing scene re-renders rarely.
 constexpr double kPoolGrowth = 1.25;
 
@@ -149,10 +151,10 @@ class LightLinkedList final : public Technique {
   Buffer tileDepth_;
   Buffer bounds_;
   Buffer shellOrder_;
-  uint32_t sphereLights_ = 0;  // shellOrder_ holds sphere-filled lights first, then cone-filled ones
-  uint32_t shellLights_ = 0;
-  ShellMesh sphere_;
-  ShellMesh cone_;
+  // shellOrder_ holds sphere-filled lights, then cone-filled ones, then boxes: shape s fills
+  // shellOrder_[shapeStart_[s], shapeStart_[s + 1]).
+  uint32_t shapeStart_[kShellShapes + 1] = {};
+  ShellMesh shellMeshes_[kShellShapes];  // sphere, cone, box
   VkSampler depthSampler_ = VK_NULL_HANDLE;
 
   PipelineLayout layout_;
@@ -161,8 +163,8 @@ class LightLinkedList final : public Technique {
   Pipeline tileDepthPipeline_;
   Pipeline statsPipeline_;
   Pipeline computeFill_;
-  Pipeline shellFront_[2];  // [sphere, cone]
-  Pipeline shellBack_[2];
+  Pipeline shellFront_[kShellShapes];
+  Pipeline shellBack_[kShellShapes];
   Pipeline shadeOpaque_;
   Pipeline shadeBlend_;
   Pipeline shadeCompute_;
@@ -248,14 +250,14 @@ void LightLinkedList::createPipelines(const GpuScene& scene) {
   fill.vertexInput = VertexInput::Position;
   fill.depthTest = false;  // the software depth test against the tile depth replaces it
   fill.depthWrite = false;
-  for (uint32_t cone = 0; fill_ != LllFill::Compute && cone < 2; ++cone) {
-    fill.specialization = {cone, 1, kBoundsLayers};
+  for (uint32_t shape = 0; fill_ != LllFill::Compute && shape < kShellShapes; ++shape) {
+    fill.specialization = {shape, 1, kBoundsLayers};
     fill.cullMode = VK_CULL_MODE_FRONT_BIT;  // keep back faces
-    shellBack_[cone] = Pipeline(context_, fillLayout_, fill);
+    shellBack_[shape] = Pipeline(context_, fillLayout_, fill);
     if (fill_ != LllFill::Shells) continue;
-    fill.specialization = {cone, 0, kBoundsLayers};
+    fill.specialization = {shape, 0, kBoundsLayers};
     fill.cullMode = VK_CULL_MODE_BACK_BIT;
-    shellFront_[cone] = Pipeline(context_, fillLayout_, fill);
+    shellFront_[shape] = Pipeline(context_, fillLayout_, fill);
   }
 
   GraphicsPipelineDesc shade;
@@ -272,20 +274,26 @@ void LightLinkedList::createPipelines(const GpuScene& scene) {
 }
 
 void LightLinkedList::createShells(const GpuScene& scene) {
-  sphere_ = ShellMesh(context_, sphereShell());
-  cone_ = ShellMesh(context_, coneShell());
-  // Narrow spots get the cone shell; points and wide spots (cone larger than the sphere) the sphere.
-  std::vector<uint32_t> spheres, cones;
+  shellMeshes_[0] = ShellMesh(context_, sphereShell());
+  shellMeshes_[1] = ShellMesh(context_, coneShell());
+  shellMeshes_[2] = ShellMesh(context_, boxShell());
+  // Narrow spots get the cone shell; points and wide spots (cone larger than the sphere) the
+  // sphere; boxes the box.
+  std::vector<uint32_t> byShape[kShellShapes];
   const auto& lights = scene.scene().lights;
   for (uint32_t i = 0; i < lights.size(); ++i) {
     const bool narrowSpot = lights[i].type == LightType::Spot && std::cos(lights[i].outerConeAngle) >= 0.5f;
-    (narrowSpot ? cones : spheres).push_back(i);
+    byShape[lights[i].type == LightType::Box ? 2 : narrowSpot ? 1 : 0].push_back(i);
   }
-  sphereLights_ = uint32_t(spheres.size());
-  shellLights_ = uint32_t(lights.size());
-  spheres.insert(spheres.end(), cones.begin(), cones.end());
-  shellOrder_ = Buffer(context_, spheres.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device);
-  shellOrder_.upload(std::span<const uint32_t>(spheres));
+  std::vector<uint32_t> order;
+  for (uint32_t shape = 0; shape < kShellShapes; ++shape) {
+    shapeStart_[shape] = uint32_t(order.size());
+    order.insert(order.end(), byShape[shape].begin(), byShape[shape].end());
+  }
+  shapeStart_[kShellShapes] = uint32_t(order.size());
+  shellOrder_ = Buffer(context_, std::max<size_t>(order.size(), 1) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                       MemoryUse::Device);
+  if (!order.empty()) shellOrder_.upload(std::span<const uint32_t>(order));
 }
 
 DescriptorWriter LightLinkedList::descriptors(const FrameContext& frame) const {
@@ -352,8 +360,9 @@ void LightLinkedList::fillCompute(FrameContext& frame) {
 
 void LightLinkedList::fillRaster(FrameContext& frame) {
   ScopedPass pass(frame.timer, frame.cmd, fill_ == LllFill::Ray ? "lll-fill-ray" : "lll-fill-shells");
-  for (uint32_t first = 0; first < shellLights_; first += kShellBatch) {
-    const uint32_t end = std::min(shellLights_, first + kShellBatch);
+  const uint32_t shellLights = shapeStart_[kShellShapes];
+  for (uint32_t first = 0; first < shellLights; first += kShellBatch) {
+    const uint32_t end = std::min(shellLights, first + kShellBatch);
     if (fill_ == LllFill::Shells) {
       if (first > 0) {  // a new batch reuses the ids: forget the previous batch's bounds
         memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
@@ -376,14 +385,11 @@ void LightLinkedList::drawShellBatch(FrameContext& frame, uint32_t first, uint32
   // No attachments: the tile grid is the render area, the lists are the output.
   beginRendering(cmd, tilesX_, tilesY_, {}, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED, false);
   const gpu::FillPush push{glm::uvec4(first, 0, 0, 0)};
-  struct Range {
-    const ShellMesh& mesh;
-    uint32_t begin, end;
-  };
-  const Range ranges[2] = {{sphere_, first, std::min(end, sphereLights_)},
-                           {cone_, std::max(first, sphereLights_), end}};
-  for (uint32_t shape = 0; shape < 2; ++shape) {
-    const Range& r = ranges[shape];
+  for (uint32_t shape = 0; shape < kShellShapes; ++shape) {
+    struct {
+      const ShellMesh& mesh;
+      uint32_t begin, end;
+    } r = {shellMeshes_[shape], std::max(first, shapeStart_[shape]), std::min(end, shapeStart_[shape + 1])};
     if (r.begin >= r.end) continue;
     const Pipeline& pipeline = backFaces ? shellBack_[shape] : shellFront_[shape];
     pipeline.bind(cmd);

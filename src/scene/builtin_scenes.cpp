@@ -1,5 +1,7 @@
 #include "scene/builtin_scenes.h"
 
+#include "scene/lights.h"
+
 #include <glm/gtc/constants.hpp>
 #include <glm/gtx/color_space.hpp>
 
@@ -92,6 +94,22 @@ Scene makeSpotPlane() {
   return scene;
 }
 
+// Box lights (Bezrati's box-shaped volumes): a long one standing in the plane, turned 30 degrees,
+// and three smaller ones of other orientations, to show their rectangular footprints.
+Scene makeBoxPlane() {
+  Scene scene = makePlane("box-plane");
+  const float turn = glm::radians(30.0f);
+  scene.lights.push_back(makeBoxLight({0.5f, 1.0f, 0.0f}, {std::cos(turn), 0.0f, std::sin(turn)}, {0.0f, 1.0f, 0.0f},
+                                      {4.0f, 1.5f, 1.5f}, {1.0f, 0.9f, 0.8f}, 6.0f));
+  scene.lights.push_back(makeBoxLight({-5.0f, 0.5f, -4.0f}, {1.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f},
+                                      {1.0f, 1.0f, 2.5f}, {1.0f, 0.2f, 0.1f}, 3.0f));
+  scene.lights.push_back(makeBoxLight({5.0f, 0.8f, -5.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, -1.0f},
+                                      {2.0f, 1.0f, 1.0f}, {0.1f, 0.4f, 1.0f}, 3.0f));
+  scene.lights.push_back(makeBoxLight({-4.0f, 0.3f, 5.0f}, {1.0f, 0.3f, -1.0f}, {0.0f, 1.0f, 0.3f},
+                                      {3.0f, 0.6f, 0.6f}, {0.2f, 1.0f, 0.3f}, 2.0f));
+  return scene;
+}
+
 struct BuiltinEntry {
   const char* name;
   const char* description;
@@ -111,6 +129,8 @@ const BuiltinEntry kBuiltinScenes[] = {
      makePointPlane},
     {"spot-plane", "analytic test: the same plane under one spot light 3 m above it, pointing down",
      makeSpotPlane},
+    {"box-plane", "the same plane with four box lights of different sizes and orientations (Bezrati's box volumes)",
+     makeBoxPlane},
 };
 
 }  // namespace

@@ -43,10 +43,29 @@ void scatterRandomLights(std::vector<Light>& lights, const Bounds& bounds, uint3
   }
 }
 
+Light makeBoxLight(const glm::vec3& center, const glm::vec3& axisX, const glm::vec3& axisY,
+                   const glm::vec3& halfExtents, const glm::vec3& color, float intensity) {
+  Light l;
+  l.type = LightType::Box;
+  l.position = center;
+  l.boxAxisX = glm::normalize(axisX);
+  l.boxAxisY = glm::normalize(axisY - l.boxAxisX * glm::dot(axisY, l.boxAxisX));
+  l.halfExtents = halfExtents;
+  l.range = glm::length(halfExtents);
+  l.color = color;
+  l.intensity = intensity;
+  return l;
+}
+
 gpu::GpuLight toGpuLight(const Light& light) {
   gpu::GpuLight g{};
   g.positionRange = glm::vec4(light.position, light.range);
   g.colorIntensity = glm::vec4(light.color, light.intensity);
+  if (light.type == LightType::Box) {
+    g.directionType = glm::vec4(light.boxAxisX * light.halfExtents.x, float(gpu::kLightBox));
+    g.spotParams = glm::vec4(light.boxAxisY * light.halfExtents.y, light.halfExtents.z);
+    return g;
+  }
   const uint32_t type = light.type == LightType::Spot ? gpu::kLightSpot : gpu::kLightPoint;
   g.directionType = glm::vec4(glm::normalize(light.direction), float(type));
   // KHR_lights_punctual's spot falloff, precomputed: smooth = saturate(cd * scale + offset)^2.

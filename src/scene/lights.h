@@ -22,6 +22,11 @@ float rangeForUnboundedLight(float intensity, const glm::vec3& color);
 // read at exposure 1. The same seed gives the same lights on every machine.
 void scatterRandomLights(std::vector<Light>& lights, const Bounds& bounds, uint32_t count, uint32_t seed);
 
+// A box light centred at `center` with orthonormalised axes (x, then y made orthogonal to it) and
+// half extents; its range is set to the box's bounding radius.
+Light makeBoxLight(const glm::vec3& center, const glm::vec3& axisX, const glm::vec3& axisY,
+                   const glm::vec3& halfExtents, const glm::vec3& color, float intensity);
+
 gpu::GpuLight toGpuLight(const Light& light);
 
 }  // namespace lll

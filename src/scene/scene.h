@@ -67,10 +67,14 @@ struct Instance {
   glm::mat4 transform{1.0f};  // object to world
 };
 
-enum class LightType : uint32_t { Point = 0, Spot = 1 };
+// Point and Spot as KHR_lights_punctual. Box: Bezrati's box-shaped light volume (the chapter draws
+// area lights as boxes): a point emitter at the box's centre whose influence is bounded by an
+// oriented box instead of a sphere, fading smoothly to zero at the box's faces (brdf.glsl).
+enum class LightType : uint32_t { Point = 0, Spot = 1, Box = 2 };
 
 // KHR_lights_punctual semantics: intensity in candela, colour linear, range finite (loaders turn
-// an unbounded glTF light into a finite range, see lights.h), cone angles in radians.
+// an unbounded glTF light into a finite range, see lights.h), cone angles in radians. A box light's
+// range is its bounding radius, length(halfExtents): makeBoxLight (lights.h) keeps them in step.
 struct Light {
   LightType type = LightType::Point;
   glm::vec3 position{0.0f};
@@ -80,6 +84,10 @@ struct Light {
   float range = 1.0f;
   float innerConeAngle = 0.0f;
   float outerConeAngle = 0.7853982f;  // pi / 4, the glTF default
+  // Box lights: unit, orthogonal x and y axes (z = cross(x, y)) and half extents along them.
+  glm::vec3 boxAxisX{1.0f, 0.0f, 0.0f};
+  glm::vec3 boxAxisY{0.0f, 1.0f, 0.0f};
+  glm::vec3 halfExtents{0.5f};
 };
 
 struct Camera {

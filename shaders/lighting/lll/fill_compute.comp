@@ -3,8 +3,8 @@
 // The fill with no rasterizer. One workgroup covers 8x8 tiles: its threads first test 64 lights at a
 // time against the group's whole volume and gather the survivors in shared memory, then each thread
 // tests those against its own tile exactly (sphere to tile-volume distance, shared/lll_types.h).
-// Spots add a conservative cone test (the cone against a sphere bounding the part of the tile
-// volume within the light's depth range).
+// Spots and boxes add a conservative shape test (the cone or box against a sphere bounding the part
+// of the tile volume within the light's depth range).
 // Each thread owns its tile's list, so links need no atomic exchange at the head, and the group
 // allocates all its links of a batch with one atomic on the global counter (shared-memory offsets
 // within the group) instead of one per link: 16 full-screen lights at 1080p are 518,400 links.
@@ -48,9 +48,28 @@ bool spotMayTouch(GpuLight light, vec3 center, vec4 slopes, float zNear, float z
   return coneMayTouchSphere(center, axis, light.spotParams.x, range, 0.5 * (lo + hi), 0.5 * length(hi - lo));
 }
 
+// A box against the sphere bounding the tile volume within the box's depth range: the distance
+// from the sphere's centre to the box (conservative for the tile, exact for the sphere).
+bool boxMayTouch(GpuLight light, vec3 center, vec4 slopes, float zNear, float zFar) {
+  vec3 x, y, z;
+  boxAxes(light, x, y, z);
+  float halfDepth = abs(x.z) + abs(y.z) + abs(z.z);
+  float z0 = max(zNear, center.z - halfDepth), z1 = min(zFar, center.z + halfDepth);
+  if (z0 > z1) return false;
+  vec3 lo = vec3(min(slopes.x * z0, slopes.x * z1), min(slopes.z * z0, slopes.z * z1), z0);
+  vec3 hi = vec3(max(slopes.y * z0, slopes.y * z1), max(slopes.w * z0, slopes.w * z1), z1);
+  vec3 d = 0.5 * (lo + hi) - center;
+  float radius = 0.5 * length(hi - lo);
+  vec3 outside = max(abs(vec3(dot(d, x) / length(x), dot(d, y) / length(y), dot(d, z) / length(z))) -
+                         vec3(length(x), length(y), length(z)),
+                     0.0);
+  return dot(outside, outside) <= radius * radius;
+}
+
 bool lightTouches(GpuLight light, vec3 center, vec4 slopes, float zNear, float zFar) {
   float range = light.positionRange.w;
   if (tileVolumeDistanceSquared(center, slopes, zNear, zFar) > range * range) return false;
+  if (isBox(light)) return boxMayTouch(light, center, slopes, zNear, zFar);
   return spotMayTouch(light, center, slopes, zNear, zFar);
 }
 
@@ -107,8 +126,8 @@ void main() {
         hits[word] &= hits[word] - 1u;
         if (link >= lll.params.x) break;  // past the pool: counted, not written (the CPU grows it)
         GpuLight light = lights[candidates[i]];
-        float z = toViewDepthSpace(light.positionRange.xyz).z, range = light.positionRange.w;
-        writeLink(link, candidates[i], z - range, z + range, head);
+        float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
+        writeLink(link, candidates[i], z - halfDepth, z + halfDepth, head);
         head = link++;
       }
     }

@@ -1,7 +1,7 @@
 #version 460
 #define LLL_FILL_PASS
 // ThreeL's refinement: back faces only. The eye ray through the tile centre is intersected with the
-// light's exact sphere (and cone, for spots), each grown by the tile inflation; a ray that misses
+// light's exact sphere (and cone, for spots; box, for box lights), each grown by the tile inflation; a ray that misses
 // adds no link, so the shell's corners cost nothing. The ray is rebuilt from the fragment position
 // rather than interpolated from the vertices: the same ray, and it stays valid when shell vertices
 // lie behind the eye (camera inside a light).
@@ -60,6 +60,27 @@ void clipToCone(vec3 dir, vec3 apex, vec3 axis, float cos2, inout float lo, inou
   }
 }
 
+// Where the ray p(t) = t * dir lies inside the box (centre, axes scaled by half extents, each half
+// extent grown by `grow`): the slab intersection, or false when it misses.
+bool rayBox(vec3 dir, vec3 center, vec3 axes[3], float grow, out float lo, out float hi) {
+  lo = -1e30;
+  hi = 1e30;
+  for (int i = 0; i < 3; ++i) {
+    float halfExtent = length(axes[i]);
+    vec3 unit = axes[i] / halfExtent;
+    float extent = halfExtent + grow;
+    float o = dot(-center, unit), d = dot(dir, unit);
+    if (abs(d) < 1e-12) {
+      if (abs(o) > extent) return false;
+      continue;
+    }
+    float t0 = (-extent - o) / d, t1 = (extent - o) / d;
+    lo = max(lo, min(t0, t1));
+    hi = min(hi, max(t0, t1));
+  }
+  return lo <= hi;
+}
+
 void main() {
   uvec2 tile = uvec2(gl_FragCoord.xy);
   if (tile.x >= frame.counts.z || tile.y >= frame.counts.w) return;
@@ -77,7 +98,11 @@ void main() {
   if (disc < 0.0) return;
   float s = sqrt(disc);
   float lo = (b - s) / a, hi = (b + s) / a;
-  if (usesCone(light)) {
+  if (isBox(light)) {
+    vec3 axes[3];
+    boxAxes(light, axes[0], axes[1], axes[2]);
+    if (!rayBox(dir, center, axes, inflation, lo, hi)) return;
+  } else if (usesCone(light)) {
     vec3 axis = directionToViewDepthSpace(light.directionType.xyz);
     float cosAngle = light.spotParams.x;
     float sinAngle = sqrt(max(1.0 - cosAngle * cosAngle, 1e-6));

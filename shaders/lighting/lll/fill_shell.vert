@@ -1,7 +1,7 @@
 #version 460
 #define LLL_FILL_PASS
 // Light shells for the raster fills: a coarse sphere or cone mesh that contains the light's exact
-// volume, grown by the tile inflation, drawn into the tile grid (one fragment per tile centre).
+// volume (a box light is its own exact shell), grown by the tile inflation, drawn into the tile grid (one fragment per tile centre).
 #include "lighting/lll/light_shape.glsl"
 
 layout(location = 0) in vec3 inPosition;
@@ -11,7 +11,8 @@ layout(std430, set = 0, binding = 10) readonly buffer ShellOrderBlock {
 layout(push_constant) uniform FillBlock {
   FillPush fill;
 };
-layout(constant_id = 0) const uint kShapeCone = 0u;
+// 0: sphere shell, 1: cone shell, 2: box (lighting/light_volumes.h).
+layout(constant_id = 0) const uint kShape = 0u;
 
 layout(location = 0) flat out uint outLight;
 layout(location = 1) flat out uint outBatchId;
@@ -24,8 +25,16 @@ void main() {
   float range = light.positionRange.w;
   float inflation = tileInflation(toViewDepthSpace(center).z, range);
   vec3 world;
-  if (kShapeCone == 0u) {
+  if (kShape == 0u) {
     world = center + inPosition * (range + inflation);
+  } else if (kShape == 2u) {
+    // The unit cube onto the box, each half extent grown by the inflation; (x, y, cross(x, y)) is
+    // right-handed, so the mesh keeps its winding.
+    vec3 x = light.directionType.xyz, y = light.spotParams.xyz;
+    vec3 z = normalize(cross(x, y));
+    float hx = length(x), hy = length(y), hz = light.spotParams.w;
+    world = center + (x / hx) * (inPosition.x * (hx + inflation)) + (y / hy) * (inPosition.y * (hy + inflation)) +
+            z * (inPosition.z * (hz + inflation));
   } else {
     // Moving the apex back by inflation / sin(angle) widens the cone by `inflation` everywhere.
     vec3 axis = light.directionType.xyz;

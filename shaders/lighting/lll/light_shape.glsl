@@ -29,4 +29,24 @@ bool usesCone(GpuLight light) {
   return uint(light.directionType.w) == kLightSpot && light.spotParams.x >= kMinConeCos;
 }
 
+bool isBox(GpuLight light) {
+  return uint(light.directionType.w) == kLightBox;
+}
+
+// A box light's axes in view-depth space, each scaled by its half extent.
+void boxAxes(GpuLight light, out vec3 x, out vec3 y, out vec3 z) {
+  vec3 worldX = light.directionType.xyz, worldY = light.spotParams.xyz;
+  x = directionToViewDepthSpace(worldX);
+  y = directionToViewDepthSpace(worldY);
+  z = directionToViewDepthSpace(normalize(cross(worldX, worldY)) * light.spotParams.w);
+}
+
+// Half the light's extent along the view axis: a box's projection onto it, else its range.
+float depthHalfExtent(GpuLight light) {
+  if (!isBox(light)) return light.positionRange.w;
+  vec3 x, y, z;
+  boxAxes(light, x, y, z);
+  return abs(x.z) + abs(y.z) + abs(z.z);
+}
+
 #endif
