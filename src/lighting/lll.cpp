@@ -451,12 +451,8 @@ void LightLinkedList::shadeOpaqueInCompute(FrameContext& frame) {
              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
       .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
       .push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
-  vkCmdDispatch(frame.cmd, divideRoundingUp(t.width, gpu::kTileGroupSize),
-                divideRoundingUp(t.height, gpu::kTileGroupSize), 1);
-  t.hdr.transition(frame.cmd, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                   VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+  dispatchPerPixel(frame.cmd, t);
+  hdrFromComputeToAttachment(frame.cmd, t);
 }
 
 void LightLinkedList::measureLists(FrameContext& frame) {

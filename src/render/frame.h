@@ -66,4 +66,10 @@ inline uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) {
   return (value + divisor - 1) / divisor;
 }
 
+// One invocation per pixel of the frame, in kTileGroupSize x kTileGroupSize groups.
+void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets);
+
+// A compute pass wrote hdr in GENERAL layout; give it back to the colour attachment passes.
+void hdrFromComputeToAttachment(VkCommandBuffer cmd, const FrameTargets& targets);
+
 }  // namespace lll

@@ -191,8 +191,7 @@ void Renderer::tonemap(FrameContext& frame) {
       .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
       .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapLayout_.handle());
-  vkCmdDispatch(cmd, divideRoundingUp(targets_.width, gpu::kTileGroupSize),
-                divideRoundingUp(targets_.height, gpu::kTileGroupSize), 1);
+  dispatchPerPixel(cmd, targets_);
 }
 
 void Renderer::captureImages(VkCommandBuffer cmd) {
