@@ -3,7 +3,8 @@
 //                         and emission written straight into the accumulation target
 //   deferred-lights       each visible light as a bounding volume, additively blended
 //   deferred-edge-aa      (--aa edge) blend pixels on depth or normal discontinuities
-//   deferred-translucent  glass and smoke, unlit or forward-lit (--deferred-translucent)
+//   deferred-translucent  glass, unlit or forward-lit (--deferred-translucent); then particles,
+//                         lit the same way
 // G-buffer, 12 B/px: gbuffer0 RGBA8 sRGB (base colour, metallic) + gbuffer1 RGBA16F (world normal,
 // roughness); with the D32 depth and the RGBA16F accumulation that every technique has, 24 B/px.
 // Infinity used four RGBA16F targets, 32 B/px plus its Z buffer: depth again in a colour channel,
@@ -14,6 +15,7 @@
 #include "gpu/pipeline.h"
 #include "lighting/technique.h"
 #include "lighting/volume_lights.h"
+#include "particles/particle_system.h"
 #include "scene/errors.h"
 
 namespace lll {
@@ -68,7 +70,8 @@ class Deferred final : public Technique {
                     {scene.materialSetLayout()}),
         lightLayout_(context, kLightBindings),
         volumes_(context, uint32_t(scene.scene().lights.size())),
-        edgeAa_(edgeAntiAliasing(settings)) {
+        edgeAa_(edgeAntiAliasing(settings)),
+        litTranslucents_(forwardLitTranslucents(settings)) {
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     gbuffer0_ = Image(context, targets.width, targets.height, kGbuffer0Format, usage, "gbuffer0");
     gbuffer1_ = Image(context, targets.width, targets.height, kGbuffer1Format, usage, "gbuffer1");
@@ -78,7 +81,7 @@ class Deferred final : public Technique {
       edgeAaLayout_ = PipelineLayout(context, kEdgeAaBindings);
       edgeAaPipeline_ = Pipeline(context, edgeAaLayout_, "lighting/deferred_edge_aa.comp");
     }
-    createScenePipelines(context, forwardLitTranslucents(settings));
+    createScenePipelines(context, litTranslucents_);
     createLightPipelines(context);
   }
 
@@ -87,6 +90,8 @@ class Deferred final : public Technique {
     lightPass(frame);
     if (edgeAa_) edgeAntiAliasingPass(frame);
     translucentPass(frame);
+    if (frame.particles)
+      frame.particles->draw(frame, litTranslucents_ ? ParticleShading::AllLights : ParticleShading::Unlit);
   }
 
   std::vector<std::pair<std::string, double>> stats() const override {
@@ -258,6 +263,7 @@ class Deferred final : public Technique {
   Image accumulation_;
   LightVolumeDraws volumes_;
   bool edgeAa_;
+  bool litTranslucents_;
 };
 
 }  // namespace

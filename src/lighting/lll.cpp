@@ -13,6 +13,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/vk_check.h"
 #include "lighting/light_volumes.h"
+#include "particles/particle_system.h"
 #include "scene/errors.h"
 #include "shared/lll_types.h"
 
@@ -400,6 +401,10 @@ void LightLinkedList::shade(FrameContext& frame) {
     frame.scene.draw(frame.cmd, shadeLayout_.handle(), p.filter, frame.eye);
     vkCmdEndRendering(frame.cmd);
   }
+  if (frame.particles)
+    frame.particles->draw(
+        frame, ParticleShading::LightList,
+        {uniformBuffer_.handle(), heads_.handle(), links_.handle(), counters_.handle(), tileDepth_.handle()});
 }
 
 void LightLinkedList::measureLists(FrameContext& frame) {
