@@ -232,7 +232,7 @@ TEST(ParticleSimulation, FloorsKillOrBounceWhatFallsOnThem) {
 TEST(BitonicSort, MatchesStdSortWithTies) {
   Context& context = test::gpuContext();
   std::mt19937 rng(5);
-  for (const uint32_t count : {1u, 5u, 1000u, 1024u, 1025u, 4096u, 70000u}) {
+  for (const uint32_t count : {1u, 5u, 1000u, 1024u, 1025u, 4096u, 70000u, gpu::kMaxParticles}) {
     BitonicSort sorter(context, count);
     const uint32_t n = sorter.paddedCount();
     ASSERT_GE(n, count);
