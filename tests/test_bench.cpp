@@ -251,7 +251,7 @@ TEST(BenchQuick, SmokeSuiteTimesTheParticlePasses) {
     double alive = 0.0;
     for (const auto& [key, value] : r.techniqueStats)
       if (key == "particles_alive") alive = value;
-    // Settled: the slots are in use (the smoke spawns count / 8 a second; its puffs live 5 to 8 s).
+    // Settled: the slots are in use (the smoke spawns count / 6 a second; its puffs live 4 to 6 s).
     EXPECT_GT(alive, 0.6 * r.scenario.settings.particleCount) << r.scenario.name;
     for (const auto& [key, value] : r.memory) EXPECT_FALSE(key.starts_with("particle")) << key;
   }

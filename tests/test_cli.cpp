@@ -484,9 +484,9 @@ TEST_F(CliTest, SmokeRendersWithTimedParticlePasses) {
   EXPECT_EQ(j.at("frames"), 1);
   EXPECT_EQ(j.at("technique_stats").at("particle_steps"), 30);
   EXPECT_EQ(j.at("technique_stats").at("particle_slots"), 300);
-  // The smoke spawns 300 / 8 (its longest lifetime) particles a second: 18.75 in half a second, so
-  // spawn ids 0 to 18 are alive, none old enough to have died.
-  EXPECT_EQ(j.at("technique_stats").at("particles_alive"), 19);
+  // The smoke spawns 300 / 6 (its longest lifetime) particles a second: 25 in half a second, so
+  // spawn ids 0 to 24 are alive, none old enough to have died.
+  EXPECT_EQ(j.at("technique_stats").at("particles_alive"), 25);
 }
 
 // ---- help and listings ----

@@ -11,9 +11,9 @@ LLL_NAMESPACE_BEGIN
 LLL_CONST(uint, kMaxParticles, 1000000u);
 // Keys of a curve over a particle's life (size, opacity, emission, colour), evenly spaced.
 LLL_CONST(uint, kMaxCurveKeys, 8u);
-// Fixed simulation step: --frames N advances the simulation N steps of this length, whatever the
+// Fixed simulation step: --frames N advances the simulation N steps of 1 / 60 s, whatever the
 // frame rate, so a seed always gives the same state.
-LLL_CONST(float, kParticleStepSeconds, 1.0f / 60.0f);
+LLL_CONST(uint, kParticleStepsPerSecond, 60u);
 // Invocations per group of the per-particle passes (simulate, keys, lighting): a multiple of every
 // subgroup size we meet (8 on lavapipe, 32 on NVIDIA, 64 on AMD).
 LLL_CONST(uint, kParticleGroupSize, 64u);

@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
 
   CLI::App* render = app.add_subcommand("render", "render a scene off-screen to PNG (and HDR, stats)");
   addRenderOptions(*render, job);
-  render->add_option("--out", job.outPng, "display image, tonemapped sRGB PNG");
+  render->add_option("-o,--out", job.outPng, "display image, tonemapped sRGB PNG");
   render->add_option("--hdr", job.outHdr, "linear HDR image, .exr or .pfm");
   render->add_option("--stats", job.outStats,
                      "JSON with per-pass GPU times, device, driver, resolution, lights");

@@ -64,7 +64,7 @@ ParticleSystem::ParticleSystem(Context& context, const ParticleSystemOptions& op
       capacity_(checkedCapacity(options)),
       // The emitter spawns capacity / lifetimeMax particles a second: a slot's previous particle
       // has always died when its next one is born.
-      spawnsPerStep_(double(capacity_) * gpu::kParticleStepSeconds / options.preset.lifetimeMax),
+      stepsPerLifetime_(double(options.preset.lifetimeMax) * gpu::kParticleStepsPerSecond),
       sorter_(context, capacity_),
       layout_(context, kParticleBindings, sizeof(gpu::ParticleStepPush), VK_SHADER_STAGE_COMPUTE_BIT) {
   createBuffers();
@@ -132,14 +132,17 @@ void ParticleSystem::uploadUniforms(const glm::vec3& source, uint32_t seed) {
   uniforms_.upload(&u, sizeof(u));
 }
 
-// Spawn id k is born at k * interval seconds; step s covers [s dt, (s + 1) dt), so its spawns are
-// ids ceil(s * spawnsPerStep) up to ceil((s + 1) * spawnsPerStep), computed in double precision so
-// the schedule never drifts.
+// Spawn id k is born at k * lifetimeMax / capacity seconds; step s covers [s dt, (s + 1) dt), so
+// its spawns are ids ceil(s * capacity / stepsPerLifetime) up to the same for s + 1. The product is
+// formed before the division so that whole numbers come out exact: no drift, no off-by-one.
+uint64_t ParticleSystem::spawnedBefore(uint64_t step) const {
+  return uint64_t(std::ceil(double(step) * double(capacity_) / stepsPerLifetime_));
+}
+
 gpu::ParticleStepPush ParticleSystem::stepPush(uint64_t step) const {
-  const double dt = gpu::kParticleStepSeconds;
-  const double interval = dt / spawnsPerStep_;
-  const uint64_t first = uint64_t(std::ceil(double(step) * spawnsPerStep_));
-  const uint64_t end = uint64_t(std::ceil(double(step + 1) * spawnsPerStep_));
+  const double dt = 1.0 / gpu::kParticleStepsPerSecond;
+  const double interval = stepsPerLifetime_ * dt / double(capacity_);
+  const uint64_t first = spawnedBefore(step), end = spawnedBefore(step + 1);
   gpu::ParticleStepPush push{};
   push.spawn =
       glm::uvec4(uint32_t(first % capacity_), uint32_t(end - first), uint32_t(first), uint32_t(step));

@@ -97,6 +97,7 @@ class ParticleSystem {
   };
   void createBuffers();
   void uploadUniforms(const glm::vec3& source, uint32_t seed);
+  uint64_t spawnedBefore(uint64_t step) const;
   gpu::ParticleStepPush stepPush(uint64_t step) const;
   void recordStep(VkCommandBuffer cmd);
   void sort(FrameContext& frame);
@@ -110,7 +111,7 @@ class ParticleSystem {
   ParticlePreset preset_;
   ParticleLighting lighting_;
   uint32_t capacity_ = 0;
-  double spawnsPerStep_ = 0.0;
+  double stepsPerLifetime_ = 0.0;  // the preset's longest lifetime, in steps
   uint64_t steps_ = 0;
   BitonicSort sorter_;
   Buffer uniforms_;

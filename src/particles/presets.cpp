@@ -218,7 +218,7 @@ ParticlePreset loadParticlePreset(const std::string& nameOrPath) {
 }
 
 uint32_t stepsToSteadyState(const ParticlePreset& preset) {
-  return uint32_t(std::ceil(preset.lifetimeMax / gpu::kParticleStepSeconds)) + 1;
+  return uint32_t(std::ceil(double(preset.lifetimeMax) * gpu::kParticleStepsPerSecond)) + 1;
 }
 
 }  // namespace lll

@@ -54,7 +54,7 @@ ParticlePreset loadParticlePreset(const std::string& nameOrPath);
 // Parses and checks preset JSON text; `source` names it in messages.
 ParticlePreset parseParticlePreset(const std::string& text, const std::string& source);
 
-// Steps of kParticleStepSeconds after which the emitter has filled its slots (every slot has
+// Steps (1 / kParticleStepsPerSecond each) after which the emitter has filled its slots (every slot has
 // been spawned once and the oldest particles have started dying): the plume's steady state.
 uint32_t stepsToSteadyState(const ParticlePreset& preset);
 

@@ -47,7 +47,7 @@ class Renderer {
   ~Renderer();
 
   // Renders one frame; with `capture` the HDR and display images are read back afterwards. With
-  // particles, each frame advances the simulation one fixed step (kParticleStepSeconds).
+  // particles, each frame advances the simulation one fixed step (1 / kParticleStepsPerSecond).
   FrameResult renderFrame(bool capture);
   // Advances the particle simulation `steps` fixed steps without drawing (no-op without particles):
   // `lll render --frames N` simulates N - 1 steps this way, then draws the N-th frame.
