@@ -182,7 +182,7 @@ TEST(ParticleSort, GpuDrawOrderIsTheCpuSortOfTheReadBack) {
   }
   const uint32_t visible = f.counters.dispatch.w;
   EXPECT_EQ(f.counters.alive.x, aliveCount);
-  EXPECT_EQ(f.counters.draw, glm::uvec4(6, visible, 0, 0));
+  EXPECT_EQ(f.counters.draw, glm::uvec4(6 * visible, 1, 0, 0));
   EXPECT_GT(visible, 1500u);
   EXPECT_GE(visible, surelyInside);
   EXPECT_LE(visible, aliveCount - surelyOutside);

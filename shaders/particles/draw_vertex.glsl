@@ -1,7 +1,9 @@
-// The particle draw's vertex shader: instance i is the i-th visible particle back to front (the
-// sorted draw order), its six vertices two triangles of a quad facing the camera, turned by the
-// particle's rotation. What does not vary across the quad (colour, opacity, emission, and with
-// vertex lighting the lit radiance) is computed here once per vertex and passed flat.
+// The particle draw's vertex shader: vertices 6i to 6i + 5 are the i-th visible particle back to
+// front (the sorted draw order), two triangles of a quad facing the camera, turned by the
+// particle's rotation. One instance of 6 x visible vertices rather than an instance per particle:
+// six-vertex instances leave most of a GPU's vertex batch empty. What does not vary across the quad (colour,
+// opacity, emission, and with vertex lighting the lit radiance) is computed here once per vertex and passed
+// flat.
 #include "particles/random.glsl"
 #include "particles/scattering.glsl"
 
@@ -16,12 +18,13 @@ const vec2 kCorners[6] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(1.0, 1.0
                                 vec2(1.0, 1.0), vec2(-1.0, 1.0));
 
 void main() {
-  uint slot = drawOrder[gl_InstanceIndex].y;
+  uint order = uint(gl_VertexIndex) / 6u;
+  uint slot = drawOrder[order].y;
   Particle p = particles[slot];
   float t = lifeFraction(p);
   float radius = sizeAt(t) * p.attributes.x;
   vec3 albedo = colorAt(t) * p.attributes.w;
-  vec2 corner = kCorners[gl_VertexIndex];
+  vec2 corner = kCorners[uint(gl_VertexIndex) % 6u];
   float c = cos(p.attributes.y), s = sin(p.attributes.y);
   vec2 offset = vec2(c * corner.x - s * corner.y, s * corner.x + c * corner.y);
   vec3 world = p.positionAge.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * radius;
@@ -32,7 +35,7 @@ void main() {
   outAlbedoOpacity = vec4(albedo, opacityAt(t));
   vec3 light = frame.ambient.rgb;
 #ifdef PARTICLE_VERTEX_LIGHTING
-  light += particleRadiance[gl_InstanceIndex].rgb;
+  light += particleRadiance[order].rgb;
 #endif
   outBaseRadiance = albedo * (light + emissionAt(t));
   gl_Position = frame.viewProj * vec4(world, 1.0);

@@ -68,7 +68,7 @@ LLL_CHECK_SIZE(ParticleStepPush, 32);
 
 // What the GPU counts while sorting and turns into indirect arguments (particles-indirect).
 struct ParticleCounters {
-  uvec4 draw;      // VkDrawIndirectCommand: 6 vertices, one instance per visible particle, 0, 0
+  uvec4 draw;      // VkDrawIndirectCommand: 6 vertices per visible particle, 1 instance, 0, 0
   uvec4 dispatch;  // VkDispatchIndirectCommand of the per-particle lighting pass; w visible particles
   uvec4 alive;     // x alive particles, yzw unused
 };

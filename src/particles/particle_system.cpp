@@ -260,7 +260,7 @@ std::vector<std::pair<std::string, double>> ParticleSystem::stats() const {
   const gpu::ParticleCounters counters = readCounters();
   return {{"particle_slots", double(capacity_)},
           {"particles_alive", double(counters.alive.x)},
-          {"particles_drawn", double(counters.draw.y)},
+          {"particles_drawn", double(counters.dispatch.w)},
           {"particle_steps", double(steps_)},
           {"particle_state_bytes", double(particles_.size())},
           {"particle_sort_bytes", double(drawOrder_.size())},
