@@ -60,7 +60,7 @@ LLL_CHECK_SIZE(ParticleUniforms, 8 * 16 + 14 * 16 + 2 * 16);
 // id k goes to slot k % capacity, and k is what the random numbers of its birth are hashed from.
 struct ParticleStepPush {
   uvec4 spawn;  // x slot of the step's first spawn, y spawns this step, z first spawn id (low 32
-                // bits), w step index (low 32 bits)
+                // bits), w unused
   vec4 time;    // x step length (s), y time at the step's start (s), z seconds between spawns,
                 // w time of the first spawn after the step's start (s)
 };

@@ -24,7 +24,6 @@ class BitonicSort {
   // A power of two, at least one block: the pairs the sorted buffer must hold. Callers fill the
   // padding with keys that sort after every real one.
   uint32_t paddedCount() const { return padded_; }
-  uint32_t groupSize() const { return threads_; }
 
   // Records the sort of the first paddedCount() pairs of `pairs`. The caller makes earlier writes
   // visible to compute shaders before, and the sorted pairs visible to their readers after.

@@ -144,8 +144,7 @@ gpu::ParticleStepPush ParticleSystem::stepPush(uint64_t step) const {
   const double interval = stepsPerLifetime_ * dt / double(capacity_);
   const uint64_t first = spawnedBefore(step), end = spawnedBefore(step + 1);
   gpu::ParticleStepPush push{};
-  push.spawn =
-      glm::uvec4(uint32_t(first % capacity_), uint32_t(end - first), uint32_t(first), uint32_t(step));
+  push.spawn = glm::uvec4(uint32_t(first % capacity_), uint32_t(end - first), uint32_t(first), 0);
   push.time = glm::vec4(float(dt), float(double(step) * dt), float(interval),
                         float(double(first) * interval - double(step) * dt));
   return push;

@@ -78,9 +78,7 @@ class ParticleSystem {
   // The technique's particle passes, inside its frame after its glass; hdr stays a colour attachment.
   void draw(FrameContext& frame, ParticleShading shading, const LightListBuffers& lists = {});
 
-  uint32_t capacity() const { return capacity_; }
   uint64_t steps() const { return steps_; }
-  ParticleLighting lighting() const { return lighting_; }
   const ParticlePreset& preset() const { return preset_; }
   std::vector<std::pair<std::string, double>> stats() const;
 
