@@ -99,6 +99,27 @@ TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {
   EXPECT_THROW(buildSuite("nope", SuiteOptions{}), InputError);
 }
 
+TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForward) {
+  const auto full = buildSuite("smoke", SuiteOptions{});
+  ASSERT_EQ(full.size(), 12u);
+  std::set<uint32_t> counts;
+  std::set<std::string> labels, lightings;
+  for (const Scenario& s : full) {
+    EXPECT_EQ(s.settings.particles, "smoke");
+    EXPECT_EQ(s.settings.width, 1920u);
+    EXPECT_EQ(s.settings.height, 1080u);
+    EXPECT_EQ(s.scene.scene, "atrium");
+    EXPECT_EQ(s.scene.extraLights, 256u);
+    counts.insert(s.settings.particleCount);
+    labels.insert(techniqueLabel(s.settings));
+    lightings.insert(s.settings.particleLighting);
+  }
+  EXPECT_EQ(counts, (std::set<uint32_t>{1024, 65536, 1000000}));
+  EXPECT_EQ(labels, (std::set<std::string>{"lll/compute", "forward"}));
+  EXPECT_EQ(lightings, (std::set<std::string>{"pixel", "vertex"}));
+  EXPECT_EQ(buildSuite("smoke", SuiteOptions{.quick = true}).size(), 8u);
+}
+
 // Splits one CSV line, honouring quoted fields (device names hold commas).
 std::vector<std::string> csvFields(const std::string& line) {
   std::vector<std::string> fields(1);
@@ -210,6 +231,33 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   const auto messages = context.validationMessages();
   for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
   fs::remove_all(dir);
+}
+
+// The smoke suite really runs: forward's quick scenarios draw the settled plume and time every
+// particle pass; the particle buffers are not counted as lighting memory.
+TEST(BenchQuick, SmokeSuiteTimesTheParticlePasses) {
+  Context& context = test::gpuContext();
+  const size_t before = context.validationMessages().size();
+  BenchOptions options;
+  options.suites = {"smoke"};
+  options.techniques = {"forward"};
+  options.quick = true;
+  const BenchReport report = runBench(context, options);
+  ASSERT_EQ(report.results.size(), 4u);
+  for (const ScenarioResult& r : report.results) {
+    ASSERT_EQ(r.status, Status::Ok) << r.scenario.name << ": " << r.message;
+    for (const char* pass : {"particles-simulate", "particles-sort", "particles-indirect", "particles-draw"})
+      EXPECT_NE(r.pass(pass), nullptr) << r.scenario.name << " has no " << pass;
+    EXPECT_EQ(r.pass("particles-light") != nullptr, r.scenario.settings.particleLighting == "vertex");
+    double alive = 0.0;
+    for (const auto& [key, value] : r.techniqueStats)
+      if (key == "particles_alive") alive = value;
+    // Settled: the slots are in use (the smoke spawns count / 6 a second; its puffs live 4 to 6 s).
+    EXPECT_GT(alive, 0.6 * r.scenario.settings.particleCount) << r.scenario.name;
+    for (const auto& [key, value] : r.memory) EXPECT_FALSE(key.starts_with("particle")) << key;
+  }
+  const auto messages = context.validationMessages();
+  for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
 }
 
 ScenarioResult fakeResult(const std::string& suite, const std::string& name, const std::string& technique,

@@ -8,11 +8,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -20,6 +22,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "test_presets_json.h"
 
 extern char** environ;
 
@@ -405,6 +409,90 @@ TEST_F(CliTest, RenderWritesPngPfmAndStats) {
   }
 }
 
+// ---- particles ----
+
+// The tests' still preset with one change, written as `name` in the test's folder.
+std::string bentPreset(const fs::path& dir, const std::string& name, const std::function<void(json&)>& bend) {
+  json preset = test::stillPreset();
+  bend(preset);
+  const fs::path path = dir / name;
+  std::ofstream(path) << preset.dump(2);
+  return path.string();
+}
+
+TEST_F(CliTest, ParticlePresetMissingField) {
+  const std::string preset = bentPreset(dir_, "nospeed.json", [](json& p) { p["velocity"].erase("speed"); });
+  expectBadInput(render("atrium", {"--particles", preset}),
+                 {"nospeed.json", "\"velocity.speed\"", "missing"});
+}
+
+TEST_F(CliTest, ParticlePresetIllTypedField) {
+  const std::string preset = bentPreset(dir_, "drag.json", [](json& p) { p["drag"] = "lots"; });
+  expectBadInput(render("atrium", {"--particles", preset}), {"drag.json", "\"drag\"", "must be a number"});
+}
+
+TEST_F(CliTest, ParticlePresetAbsurdCount) {
+  const std::string preset = bentPreset(dir_, "huge.json", [](json& p) { p["count"] = 50000000; });
+  expectBadInput(render("atrium", {"--particles", preset}), {"huge.json", "\"count\"", "1 to 1000000"});
+}
+
+TEST_F(CliTest, ParticlePresetZeroCount) {
+  const std::string preset = bentPreset(dir_, "none.json", [](json& p) { p["count"] = 0; });
+  expectBadInput(render("atrium", {"--particles", preset}), {"none.json", "\"count\"", "1 to 1000000"});
+}
+
+TEST_F(CliTest, ParticlePresetNotJson) {
+  const fs::path path = dir_ / "smoke.json";
+  std::ofstream(path) << "{ \"count\": 12,";
+  expectBadInput(render("atrium", {"--particles", path.string()}), {"smoke.json", "not valid JSON"});
+}
+
+TEST_F(CliTest, UnknownParticlePresetListsBuiltins) {
+  expectBadInput(render("atrium", {"--particles", "fog"}), {"--particles fog", "smoke", "sparks", "dust"});
+}
+
+TEST_F(CliTest, ParticleCountBeyondTheLimit) {
+  expectBadInput(render("atrium", {"--particles", "smoke", "--particle-count", "2000000"}),
+                 {"--particle-count", "2000000"});
+}
+
+TEST_F(CliTest, UnknownParticleLighting) {
+  expectBadInput(render("atrium", {"--particles", "smoke", "--particle-lighting", "texel"}),
+                 {"--particle-lighting", "texel"});
+}
+
+TEST_F(CliTest, ParticlesNeedASmokeSourceOrAnEmitter) {
+  expectBadInput(render("plane", {"--particles", "smoke"}),
+                 {"plane", "no smoke source", "--particle-emitter"});
+}
+
+TEST_F(CliTest, ParticleEmitterOfTwoNumbers) {
+  expectBadInput(render("plane", {"--particles", "smoke", "--particle-emitter", "1,2"}),
+                 {"--particle-emitter 1,2", "x,y,z"});
+}
+
+TEST_F(CliTest, SmokeRendersWithTimedParticlePasses) {
+  const fs::path stats = dir_ / "smoke.json";
+  const CliResult r =
+      runLll({"render", "atrium", "--width", "48", "--height", "27", "--out", outPng(), "--particles",
+              "smoke", "--particle-count", "300", "--frames", "30", "--stats", stats.string(), "--validate"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  EXPECT_TRUE(fs::exists(outPng()));
+  const json j = json::parse(readFile(stats));
+  std::vector<std::string> passes;
+  for (const json& pass : j.at("passes")) passes.push_back(pass.at("name"));
+  for (const char* name : {"particles-simulate", "particles-sort", "particles-indirect", "particles-draw"})
+    EXPECT_NE(std::find(passes.begin(), passes.end(), name), passes.end())
+        << name << " not timed: " << j.dump();
+  // --frames 30: thirty fixed steps, one frame drawn.
+  EXPECT_EQ(j.at("frames"), 1);
+  EXPECT_EQ(j.at("technique_stats").at("particle_steps"), 30);
+  EXPECT_EQ(j.at("technique_stats").at("particle_slots"), 300);
+  // The smoke spawns 300 / 6 (its longest lifetime) particles a second: 25 in half a second, so
+  // spawn ids 0 to 24 are alive, none old enough to have died.
+  EXPECT_EQ(j.at("technique_stats").at("particles_alive"), 25);
+}
+
 // ---- help and listings ----
 
 TEST_F(CliTest, HelpListsSubcommands) {
@@ -417,7 +505,8 @@ TEST_F(CliTest, HelpListsSubcommands) {
 TEST_F(CliTest, RenderHelpListsOptions) {
   const CliResult r = runLll({"render", "--help"});
   EXPECT_EQ(r.exitCode, 0) << r;
-  for (const char* option : {"--technique", "--width", "--lights", "--camera", "--out", "--hdr", "--stats"})
+  for (const char* option : {"--technique", "--width", "--lights", "--camera", "--out", "--hdr", "--stats",
+                             "--particles", "--particle-lighting", "--particle-count", "--particle-emitter"})
     EXPECT_TRUE(contains(r.output, option)) << option << " missing: " << r;
 }
 

@@ -9,6 +9,7 @@
 
 #include "lighting/lll_memory.h"
 #include "lighting/technique.h"
+#include "particles/particle_setup.h"
 #include "render/image_io.h"
 #include "render/renderer.h"
 #include "render/stats.h"
@@ -54,17 +55,25 @@ int runRender(const RenderJob& job) {
   std::vector<std::string> warnings;
   const Scene scene = loadScene(job.scene, &warnings);
   for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
+  particleOptions(scene, job.settings);  // a bad preset fails before Vulkan starts
   Context context(job.device);
   Renderer renderer(context, scene, job.settings);
   std::vector<FrameResult> frames;
-  for (uint32_t i = 0; i < job.settings.frames; ++i)
-    frames.push_back(renderer.renderFrame(i + 1 == job.settings.frames));
+  if (renderer.particles()) {
+    // --frames N: N fixed simulation steps, the last one in the drawn frame. Drawing the others
+    // would change nothing in the image and costs minutes on a CPU device.
+    renderer.advanceParticles(job.settings.frames - 1);
+    frames.push_back(renderer.renderFrame(true));
+  } else {
+    for (uint32_t i = 0; i < job.settings.frames; ++i)
+      frames.push_back(renderer.renderFrame(i + 1 == job.settings.frames));
+  }
   if (!job.outPng.empty()) writePng(job.outPng, renderer.ldrImage());
   if (!job.outHdr.empty()) writeHdr(job.outHdr, renderer.hdrImage());
   if (!job.outStats.empty()) {
     RunInfo run{scene.name,          job.settings.technique, job.settings.width,    job.settings.height,
                 scene.lights.size(), scene.triangleCount(),  renderer.camera().name};
-    writeStatsJson(job.outStats, context, run, frames, renderer.technique().stats());
+    writeStatsJson(job.outStats, context, run, frames, renderer.stats());
   }
   const auto summary = summarizePasses(frames);
   for (const PassSummary& s : summary) fmt::print(stderr, "lll: {:<24} {:9.3f} ms\n", s.name, s.medianMs);

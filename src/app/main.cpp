@@ -25,7 +25,9 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--seed", job.scene.seed, "seed for random lights and particles")
       ->each([&s](const std::string& v) { s.seed = uint32_t(std::stoul(v)); });
   cmd.add_option("--camera", s.camera, "camera name, or eye and target as \"ex,ey,ez,tx,ty,tz\"");
-  cmd.add_option("--frames", s.frames, "frames to render (timings are medians over them)")
+  cmd.add_option("--frames", s.frames,
+                 "frames to render (timings are medians over them); with --particles: fixed 1/60 s "
+                 "simulation steps, only the last frame is drawn")
       ->check(CLI::Range(1u, 100000u));
   cmd.add_option("--exposure", s.exposure, "exposure multiplier before tonemapping")
       ->check(CLI::Range(1e-6f, 1e6f));
@@ -50,6 +52,16 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(CLI::IsMember({"unlit", "forward"}));
   cmd.add_option("--aa", s.antiAliasing, "none | edge (deferred: edge-detect anti-aliasing)")
       ->check(CLI::IsMember({"none", "edge"}));
+  cmd.add_option("--particles", s.particles,
+                 "particle preset: a built-in name (smoke, sparks, dust) or a .json file; the emitter sits "
+                 "at the scene's smoke source");
+  cmd.add_option("--particle-lighting", s.particleLighting,
+                 "light particles per pixel, or once per particle at its centre (vertex)")
+      ->check(CLI::IsMember({"pixel", "vertex"}));
+  cmd.add_option("--particle-count", s.particleCount, "particle slots, overriding the preset's count")
+      ->check(CLI::Range(1u, 1000000u));
+  cmd.add_option("--particle-emitter", s.particleEmitter,
+                 "where the emitter sits, \"x,y,z\" (default: the scene's smoke source)");
 }
 
 void addBenchOptions(CLI::App& cmd, lll::bench::BenchOptions& options) {
@@ -104,7 +116,7 @@ int main(int argc, char** argv) {
 
   CLI::App* render = app.add_subcommand("render", "render a scene off-screen to PNG (and HDR, stats)");
   addRenderOptions(*render, job);
-  render->add_option("--out", job.outPng, "display image, tonemapped sRGB PNG");
+  render->add_option("-o,--out", job.outPng, "display image, tonemapped sRGB PNG");
   render->add_option("--hdr", job.outHdr, "linear HDR image, .exr or .pfm");
   render->add_option("--stats", job.outStats,
                      "JSON with per-pass GPU times, device, driver, resolution, lights");

@@ -68,8 +68,8 @@ struct BenchReport {
 };
 
 // Runs the suites on `context`, showing progress on stderr. Scenarios that cannot run here (an
-// unregistered technique, too many lights, particles not built) are recorded as skipped; those
-// that throw anything else are recorded as failed. Throws InputError for an unknown suite.
+// unregistered technique, too many lights, a technique that draws no particles) are recorded as skipped;
+// those that throw anything else are recorded as failed. Throws InputError for an unknown suite.
 BenchReport runBench(Context& context, const BenchOptions& options);
 
 // Writes results.json, results.csv, summary.md and, when gnuplot is installed, the PNG charts.

@@ -43,6 +43,7 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"tile", s.settings.tileSize},
       {"particles", s.settings.particles},
       {"particle_count", s.settings.particleCount},
+      {"particle_lighting", s.settings.particles.empty() ? "" : s.settings.particleLighting},
       {"status", statusName(r.status)},
       {"message", r.message},
       {"device", report.device.name},

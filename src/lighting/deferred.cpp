@@ -4,7 +4,8 @@
 //                         accumulation target
 //   deferred-lights       each visible light as a bounding volume, additively blended
 //   deferred-edge-aa      (--aa edge) blend pixels on depth or normal discontinuities
-//   deferred-translucent  glass and smoke, unlit or forward-lit (--deferred-translucent)
+//   deferred-translucent  glass, unlit or forward-lit (--deferred-translucent); then particles,
+//                         lit the same way
 // G-buffer 12 B/px (RGBA8 base colour + metallic, RGBA16F normal + roughness); with the D32 depth
 // and the RGBA16F accumulation that every technique has, 24 B/px. Infinity used four RGBA16F
 // targets, 32 B/px plus its Z buffer: depth again in a colour channel, velocity, extinction and a
@@ -16,6 +17,7 @@
 #include "lighting/technique.h"
 #include "lighting/volume_lights.h"
 #include "render/gbuffer.h"
+#include "particles/particle_system.h"
 #include "scene/errors.h"
 
 namespace lll {
@@ -70,7 +72,8 @@ class Deferred final : public Technique {
         volumes_(context, uint32_t(scene.scene().lights.size())),
         lightFragments_(context),
         pixels_(double(targets.width) * targets.height),
-        edgeAa_(edgeAntiAliasing(settings)) {
+        edgeAa_(edgeAntiAliasing(settings)),
+        litTranslucents_(forwardLitTranslucents(settings)) {
     if (edgeAa_) {
       const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
       // The edge filter reads neighbours, so it cannot work in place: lights accumulate here.
@@ -78,7 +81,7 @@ class Deferred final : public Technique {
       edgeAaLayout_ = PipelineLayout(context, kEdgeAaBindings);
       edgeAaPipeline_ = Pipeline(context, edgeAaLayout_, "lighting/deferred_edge_aa.comp");
     }
-    createScenePipelines(context, forwardLitTranslucents(settings));
+    createScenePipelines(context, litTranslucents_);
     createLightPipelines(context);
   }
 
@@ -87,6 +90,8 @@ class Deferred final : public Technique {
     lightPass(frame);
     if (edgeAa_) edgeAntiAliasingPass(frame);
     translucentPass(frame);
+    if (frame.particles)
+      frame.particles->draw(frame, litTranslucents_ ? ParticleShading::AllLights : ParticleShading::Unlit);
   }
 
   bool afterFrame() override {
@@ -246,6 +251,7 @@ class Deferred final : public Technique {
   double pixels_;
   double lastLightFragments_ = -1.0;
   bool edgeAa_;
+  bool litTranslucents_;
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "lighting/technique.h"
+#include "particles/particle_system.h"
 
 namespace lll {
 
@@ -39,15 +40,17 @@ class Forward final : public Technique {
       frame.scene.draw(frame.cmd, layout_.handle(), DrawFilter::Opaque, frame.eye);
       vkCmdEndRendering(frame.cmd);
     }
-    if (!frame.scene.hasBlendDraws()) return;
-    ScopedPass pass(frame.timer, frame.cmd, "forward-blend");
-    beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), false}}, t.depth.view(),
-                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-    blend_.bind(frame.cmd);
-    meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                    layout_.handle());
-    frame.scene.draw(frame.cmd, layout_.handle(), DrawFilter::Blend, frame.eye);
-    vkCmdEndRendering(frame.cmd);
+    if (frame.scene.hasBlendDraws()) {
+      ScopedPass pass(frame.timer, frame.cmd, "forward-blend");
+      beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), false}}, t.depth.view(),
+                     VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+      blend_.bind(frame.cmd);
+      meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                      layout_.handle());
+      frame.scene.draw(frame.cmd, layout_.handle(), DrawFilter::Blend, frame.eye);
+      vkCmdEndRendering(frame.cmd);
+    }
+    if (frame.particles) frame.particles->draw(frame, ParticleShading::AllLights);
   }
 
  private:

@@ -14,6 +14,7 @@
 #include "gpu/vk_check.h"
 #include "lighting/light_volumes.h"
 #include "render/gbuffer.h"
+#include "particles/particle_system.h"
 #include "scene/errors.h"
 #include "shared/lll_types.h"
 
@@ -429,6 +430,10 @@ void LightLinkedList::shade(FrameContext& frame) {
     frame.scene.draw(frame.cmd, shadeLayout_.handle(), p.filter, frame.eye);
     vkCmdEndRendering(frame.cmd);
   }
+  if (frame.particles)
+    frame.particles->draw(
+        frame, ParticleShading::LightList,
+        {uniformBuffer_.handle(), heads_.handle(), links_.handle(), counters_.handle(), tileDepth_.handle()});
 }
 
 // The G-buffer pass left ambient and emission in the HDR target; one invocation per pixel adds

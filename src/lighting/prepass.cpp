@@ -6,13 +6,15 @@
 //                        back faces shade where the stencil is set and clear it; lights covering
 //                        few pixels skip the stencil step and are drawn like deferred volumes
 //   prepass-combine      the scene again with its full material: C(material, buffers)
-//   prepass-translucent  glass and smoke forward-lit, as R2 did for what did not factor
+//   prepass-translucent  glass forward-lit, as R2 did for what did not factor; then particles,
+//                        forward-lit too
 // Per pixel: normal buffer 8 B + diffuse and specular buffers 16 B + depth-stencil 5 B (D32S8).
 // The approximation in C is explained in shaders/lighting/prepass_combine.frag.
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "lighting/technique.h"
 #include "lighting/volume_lights.h"
+#include "particles/particle_system.h"
 
 namespace lll {
 
@@ -142,6 +144,7 @@ class Prepass final : public Technique {
     lightPass(frame);
     combinePass(frame);
     translucentPass(frame);
+    if (frame.particles) frame.particles->draw(frame, ParticleShading::AllLights);
   }
 
   std::vector<std::pair<std::string, double>> stats() const override {

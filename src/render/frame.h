@@ -14,6 +14,7 @@
 namespace lll {
 
 class Context;
+class ParticleSystem;
 
 // Screen-sized targets. Layouts between passes: depth stays DEPTH_READ_ONLY_OPTIMAL after the
 // prepass (read-only depth attachment and sampled); hdr is COLOR_ATTACHMENT_OPTIMAL while the
@@ -37,6 +38,9 @@ struct FrameContext {
   const RenderSettings& settings;
   glm::vec3 eye;
   bool capture;  // the frame is read back: techniques may add diagnostic passes (stats)
+  // With --particles: sorted and ready to draw; each technique draws them after its glass with
+  // particles->draw(frame, its shading). Null without particles.
+  ParticleSystem* particles = nullptr;
 };
 
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "gpu/context.h"
+#include "particles/particle_setup.h"
 #include "scene/errors.h"
 #include "scene/lights.h"
 
@@ -19,6 +20,9 @@ namespace {
 constexpr uint32_t kMaxRerenders = 8;
 // Lights per tile shown as red in the heatmap view (ThreeL's Sponza peaks around 35).
 constexpr uint32_t kHeatmapScale = 32;
+// Particle steps per submission when advancing without drawing: a long run is split so that no one
+// command buffer keeps the GPU busy for long.
+constexpr uint32_t kParticleStepsPerSubmission = 256;
 
 }  // namespace
 
@@ -61,6 +65,8 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
                                {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
                                {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
   tonemap_ = Pipeline(context, tonemapLayout_, "post/tonemap.comp");
+  if (auto options = particleOptions(scene, settings))
+    particles_ = std::make_unique<ParticleSystem>(context, *options);
   technique_ = findTechnique(settings.technique).create(context, *gpuScene_, settings_, targets_);
 }
 
@@ -125,8 +131,9 @@ void Renderer::updateUniforms() {
 FrameResult Renderer::renderFrame(bool capture) {
   FrameResult result;
   updateUniforms();
-  for (;;) {
-    context_.submitAndWait([&](VkCommandBuffer cmd) { recordFrame(cmd, capture); });
+  // A frame recorded again (the technique asked for it) must not advance the particles twice.
+  for (bool advance = true;; advance = false) {
+    context_.submitAndWait([&](VkCommandBuffer cmd) { recordFrame(cmd, capture, advance); });
     if (!technique_->afterFrame()) break;
     if (++result.rerenders > kMaxRerenders)
       throw std::runtime_error(fmt::format("technique {} asked for more than {} re-renders of one frame",
@@ -136,11 +143,29 @@ FrameResult Renderer::renderFrame(bool capture) {
   return result;
 }
 
-void Renderer::recordFrame(VkCommandBuffer cmd, bool capture) {
+void Renderer::advanceParticles(uint32_t steps) {
+  if (!particles_) return;
+  for (uint32_t done = 0; done < steps; done += kParticleStepsPerSubmission) {
+    const uint32_t batch = std::min(kParticleStepsPerSubmission, steps - done);
+    context_.submitAndWait([&](VkCommandBuffer cmd) { particles_->recordSteps(cmd, batch); });
+  }
+}
+
+std::vector<std::pair<std::string, double>> Renderer::stats() const {
+  auto s = technique_->stats();
+  if (particles_) {
+    const auto p = particles_->stats();
+    s.insert(s.end(), p.begin(), p.end());
+  }
+  return s;
+}
+
+void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advanceParticles) {
   timer_.reset(cmd);
-  FrameContext frame{context_,       cmd,       timer_,    *gpuScene_,  targets_,
-                     uniformBuffer_, uniforms_, settings_, camera_.eye, capture};
+  FrameContext frame{context_,  cmd,       timer_,      *gpuScene_, targets_,        uniformBuffer_,
+                     uniforms_, settings_, camera_.eye, capture,    particles_.get()};
   depthPrepass(frame);
+  if (particles_) particles_->update(frame, advanceParticles);
   targets_.hdr.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                           VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,

@@ -1,11 +1,13 @@
 #pragma once
 // The frame: upload the scene once, then per frame a short list of named, GPU-timed passes:
-//   depth-prepass -> the technique's passes -> tonemap (-> readback when captured).
+//   depth-prepass -> (particles: simulate, sort, indirect) -> the technique's passes (drawing the
+//   particles after its glass) -> tonemap (-> readback when captured).
 #include <memory>
 #include <vector>
 
 #include "gpu/pass_timer.h"
 #include "lighting/technique.h"
+#include "particles/particle_system.h"
 #include "render/frame.h"
 #include "render/gpu_scene.h"
 #include "render/settings.h"
@@ -44,8 +46,12 @@ class Renderer {
   Renderer(Context& context, const Scene& scene, const RenderSettings& settings);
   ~Renderer();
 
-  // Renders one frame; with `capture` the HDR and display images are read back afterwards.
+  // Renders one frame; with `capture` the HDR and display images are read back afterwards. With
+  // particles, each frame advances the simulation one fixed step (1 / kParticleStepsPerSecond).
   FrameResult renderFrame(bool capture);
+  // Advances the particle simulation `steps` fixed steps without drawing (no-op without particles):
+  // `lll render --frames N` simulates N - 1 steps this way, then draws the N-th frame.
+  void advanceParticles(uint32_t steps);
   HdrImage hdrImage() const;
   LdrImage ldrImage() const;
 
@@ -53,11 +59,14 @@ class Renderer {
   const gpu::FrameUniforms& uniforms() const { return uniforms_; }
   Technique& technique() { return *technique_; }
   GpuScene& gpuScene() { return *gpuScene_; }
+  ParticleSystem* particles() { return particles_.get(); }
+  // The technique's numbers for --stats, then the particle system's.
+  std::vector<std::pair<std::string, double>> stats() const;
 
  private:
   void createTargets();
   void updateUniforms();
-  void recordFrame(VkCommandBuffer cmd, bool capture);
+  void recordFrame(VkCommandBuffer cmd, bool capture, bool advanceParticles);
   void depthPrepass(FrameContext& frame);
   void tonemap(FrameContext& frame);
   void captureImages(VkCommandBuffer cmd);
@@ -79,6 +88,7 @@ class Renderer {
   Pipeline depthMask_;
   PipelineLayout tonemapLayout_;
   Pipeline tonemap_;
+  std::unique_ptr<ParticleSystem> particles_;
   std::unique_ptr<Technique> technique_;
 };
 

@@ -1,0 +1,65 @@
+// How a particle scatters light: a puff of smoke or dust is not a surface, so instead of a BRDF
+// it has a wrapped diffuse term (light reaches `wrap` past the terminator of a sphere-like normal:
+// the soft, lit-through look of a volume) plus back lighting (light behind the particle shining
+// through towards the eye, narrowed by `focus`: the bright rim of smoke in front of a lamp).
+//   radiance = albedo / pi * E * (max(n.l + wrap, 0) / (1 + wrap) + back * max(-v.l, 0)^focus)
+// E is the light's intensity with KHR_lights_punctual attenuation, exactly as surfaces get it.
+// Pixel lighting uses the normal of a sphere under the quad; vertex lighting the normal facing the
+// camera. Define PARTICLE_LIGHT_LIST before including this to walk the tile's light list.
+#ifndef LLL_PARTICLE_SCATTERING_GLSL
+#define LLL_PARTICLE_SCATTERING_GLSL
+#include "common/brdf.glsl"
+#include "particles/particle_data.glsl"
+#ifdef PARTICLE_LIGHT_LIST
+#include "common/lll_data.glsl"
+#endif
+
+// Light one light sends towards the eye per unit albedo, from a particle at `position`.
+vec3 scatterLight(GpuLight light, vec3 position, vec3 normal, vec3 towardEye) {
+  vec3 toLight = light.positionRange.xyz - position;
+  float distance = length(toLight);
+  if (distance >= light.positionRange.w) return vec3(0.0);
+  vec3 l = toLight / max(distance, 1e-6);
+  float attenuation = rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
+  if (attenuation <= 0.0) return vec3(0.0);
+  float wrap = system.shading.x;
+  float diffuse = max(dot(normal, l) + wrap, 0.0) / (1.0 + wrap);
+  float back = system.shading.y * pow(max(dot(-towardEye, l), 0.0), system.shading.z);
+  return light.colorIntensity.rgb * (light.colorIntensity.w * attenuation * (diffuse + back) / kPi);
+}
+
+vec3 scatterAllLights(vec3 position, vec3 normal, vec3 towardEye) {
+  vec3 sum = vec3(0.0);
+  uint lightCount = frame.counts.x;
+  for (uint i = 0u; i < lightCount; ++i) sum += scatterLight(lights[i], position, normal, towardEye);
+  return sum;
+}
+
+#ifdef PARTICLE_LIGHT_LIST
+// The particle's own depth picks the lights, as glass's does (common/lll_walk.glsl's walk with the
+// particle's scattering in place of the BRDF).
+vec3 scatterFromLightList(vec3 position, vec3 normal, vec3 towardEye, uint tileIndex, float linearDepth) {
+  vec3 sum = vec3(0.0);
+  uint link = tileHeads[tileIndex];
+  for (uint guard = 0u; !isListEnd(link) && guard < lll.params.x; ++guard) {
+    LightLink l = readLink(link);
+    if (linearDepth >= l.minDepth && linearDepth <= l.maxDepth)
+      sum += scatterLight(lights[l.light], position, normal, towardEye);
+    link = l.next;
+  }
+  return sum;
+}
+#endif
+
+// The camera's axes in world space: quads lie in the plane of `right` and `up`, `back` faces the eye.
+vec3 cameraRight() {
+  return vec3(frame.view[0][0], frame.view[1][0], frame.view[2][0]);
+}
+vec3 cameraUp() {
+  return vec3(frame.view[0][1], frame.view[1][1], frame.view[2][1]);
+}
+vec3 cameraBack() {
+  return vec3(frame.view[0][2], frame.view[1][2], frame.view[2][2]);
+}
+
+#endif

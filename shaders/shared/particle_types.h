@@ -1,0 +1,84 @@
+// The GPU particle system's data, shared by C++ and GLSL (src/particles, shaders/particles).
+// Written once here; see shared.h for the rules.
+#ifndef LLL_PARTICLE_TYPES_H
+#define LLL_PARTICLE_TYPES_H
+#include "shared/limits.h"
+
+LLL_NAMESPACE_BEGIN
+
+// Most particles one system holds (the bar). At 48 bytes each the state is 48 MB, within
+// lavapipe's 128 MiB storage buffer cap, and the sort's padded pairs are 8 MiB.
+LLL_CONST(uint, kMaxParticles, 1000000u);
+// Keys of a curve over a particle's life (size, opacity, emission, colour), evenly spaced.
+LLL_CONST(uint, kMaxCurveKeys, 8u);
+// Fixed simulation step: --frames N advances the simulation N steps of 1 / 60 s, whatever the
+// frame rate, so a seed always gives the same state.
+LLL_CONST(uint, kParticleStepsPerSecond, 60u);
+// Invocations per group of the per-particle passes (simulate, keys, lighting): a multiple of every
+// subgroup size we meet (8 on lavapipe, 32 on NVIDIA, 64 on AMD).
+LLL_CONST(uint, kParticleGroupSize, 64u);
+// Sort key of a slot that is not drawn (dead or outside the view): after every visible particle.
+LLL_CONST(uint, kParticleHiddenKey, 0xFFFFFFFFu);
+
+// Emitter shapes (ParticleUniforms.modes.x) and floor modes (modes.y).
+LLL_CONST(uint, kEmitterPoint, 0u);
+LLL_CONST(uint, kEmitterDisc, 1u);
+LLL_CONST(uint, kEmitterSphere, 2u);
+LLL_CONST(uint, kFloorNone, 0u);
+LLL_CONST(uint, kFloorBounce, 1u);
+LLL_CONST(uint, kFloorKill, 2u);
+
+// One particle slot. Alive while 0 <= age < lifetime; a zero-filled slot (lifetime 0) is dead.
+struct Particle {
+  vec4 positionAge;       // xyz world position (m), w age (s)
+  vec4 velocityLifetime;  // xyz velocity (m/s), w lifetime (s)
+  vec4 attributes;        // x size scale, y rotation (rad), z spin (rad/s), w brightness scale
+};
+LLL_CHECK_SIZE(Particle, 48);
+
+// A preset on the GPU (src/particles/presets.h describes each field), written once per system.
+struct ParticleUniforms {
+  vec4 emitter;          // xyz position (world), w radius (m)
+  vec4 direction;        // xyz unit launch direction, w cos(spread half-angle)
+  vec4 speedLifetime;    // x min speed, y max speed (m/s), z min lifetime, w max lifetime (s)
+  vec4 forces;           // x drag (1/s), y buoyancy (m/s^2 up at birth, 0 at death), z turbulence
+                         // strength (m/s^2), w 1 / turbulence feature size (1/m)
+  vec4 gravity;          // xyz (m/s^2), w turbulence speed (1/s): how fast the noise field drifts
+  vec4 variation;        // x size variation, y brightness variation, z max spin (rad/s), w restitution
+  vec4 shading;          // x wrap, y back-light strength, z back-light focus, w softness (m)
+  vec4 blend;            // x additive share (0 alpha blending .. 1 additive), y floor height (m), zw unused
+  vec4 sizeKeys[2];      // radius over life (m), kMaxCurveKeys evenly spaced keys
+  vec4 opacityKeys[2];   // opacity over life
+  vec4 emissionKeys[2];  // emitted radiance over life, a multiple of the colour
+  vec4 colorKeys[8];     // rgb albedo over life
+  uvec4 keyCounts;       // x size, y opacity, z emission, w colour keys
+  uvec4 modes;           // x emitter shape, y floor mode, z capacity (slots), w seed
+};
+LLL_CHECK_SIZE(ParticleUniforms, 8 * 16 + 14 * 16 + 2 * 16);
+
+// Push constants of one simulation step. Spawn ids count every particle the emitter ever made:
+// id k goes to slot k % capacity, and k is what the random numbers of its birth are hashed from.
+struct ParticleStepPush {
+  uvec4 spawn;  // x slot of the step's first spawn, y spawns this step, z first spawn id (low 32
+                // bits), w unused
+  vec4 time;    // x step length (s), y time at the step's start (s), z seconds between spawns,
+                // w time of the first spawn after the step's start (s)
+};
+LLL_CHECK_SIZE(ParticleStepPush, 32);
+
+// What the GPU counts while sorting and turns into indirect arguments (particles-indirect).
+struct ParticleCounters {
+  uvec4 draw;      // VkDrawIndirectCommand: 6 vertices per visible particle, 1 instance, 0, 0
+  uvec4 dispatch;  // VkDispatchIndirectCommand of the per-particle lighting pass; w visible particles
+  uvec4 alive;     // x alive particles, yzw unused
+};
+LLL_CHECK_SIZE(ParticleCounters, 48);
+
+// One compare-exchange step of the bitonic sort (src/particles/bitonic_sort.h).
+struct SortPush {
+  uvec4 step;  // x k (size of the sequences being merged), y j (compare distance), z element count, w unused
+};
+LLL_CHECK_SIZE(SortPush, 16);
+
+LLL_NAMESPACE_END
+#endif

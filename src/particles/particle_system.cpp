@@ -1,0 +1,269 @@
+// The particle system's state and its per-frame compute passes: simulate, sort, indirect
+// arguments. Drawing is in particle_draw.cpp.
+#include "particles/particle_system.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "gpu/context.h"
+#include "gpu/vk_check.h"
+#include "render/frame.h"
+#include "scene/errors.h"
+
+namespace lll {
+
+namespace {
+
+constexpr VkShaderStageFlags kAllStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
+
+// Set 0 of every particle pass: frame.glsl's 0 and 1, lll_data.glsl's 3..7 (written only when the
+// technique walks light lists), particle_data.glsl's 11..15 and the scene depth (16).
+const std::initializer_list<Binding> kParticleBindings = {
+    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {11, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {13, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {14, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {15, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kAllStages},
+};
+
+uint32_t checkedCapacity(const ParticleSystemOptions& options) {
+  const uint32_t count = options.count ? options.count : options.preset.count;
+  if (count == 0 || count > gpu::kMaxParticles)
+    throw InputError(fmt::format("--particle-count {}: a particle system holds 1 to {} particles", count,
+                                 gpu::kMaxParticles));
+  return count;
+}
+
+void computeToCompute(VkCommandBuffer cmd) {
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
+
+void packCurve(const std::vector<float>& keys, glm::vec4 (&out)[2]) {
+  for (size_t i = 0; i < keys.size(); ++i) out[i / 4][int(i % 4)] = keys[i];
+}
+
+}  // namespace
+
+ParticleSystem::ParticleSystem(Context& context, const ParticleSystemOptions& options)
+    : context_(context),
+      preset_(options.preset),
+      lighting_(options.lighting),
+      capacity_(checkedCapacity(options)),
+      // The emitter spawns capacity / lifetimeMax particles a second: a slot's previous particle
+      // has always died when its next one is born.
+      stepsPerLifetime_(double(options.preset.lifetimeMax) * gpu::kParticleStepsPerSecond),
+      sorter_(context, capacity_),
+      layout_(context, kParticleBindings, sizeof(gpu::ParticleStepPush), VK_SHADER_STAGE_COMPUTE_BIT) {
+  createBuffers();
+  uploadUniforms(options.source, options.seed);
+  simulate_ = Pipeline(context, layout_, "particles/simulate.comp");
+  keys_ = Pipeline(context, layout_, "particles/sort_keys.comp");
+  indirect_ = Pipeline(context, layout_, "particles/indirect.comp");
+}
+
+ParticleSystem::~ParticleSystem() {
+  vkDestroySampler(context_.device(), depthSampler_, nullptr);
+}
+
+void ParticleSystem::createBuffers() {
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  const VkDeviceSize stateBytes = VkDeviceSize(capacity_) * sizeof(gpu::Particle);
+  const VkDeviceSize orderBytes = VkDeviceSize(sorter_.paddedCount()) * sizeof(glm::uvec2);
+  const VkDeviceSize largest = context_.properties().limits.maxStorageBufferRange;
+  if (stateBytes > largest || orderBytes > largest)
+    throw InputError(
+        fmt::format("{} particles need a {:.1f} MiB storage buffer; this device's largest is {:.1f} MiB",
+                    capacity_, double(stateBytes) / 1048576.0, double(largest) / 1048576.0));
+  uniforms_ =
+      Buffer(context_, sizeof(gpu::ParticleUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+  particles_ = Buffer(context_, stateBytes, storage, MemoryUse::Device);
+  drawOrder_ = Buffer(context_, orderBytes, storage, MemoryUse::Device);
+  counters_ = Buffer(context_, sizeof(gpu::ParticleCounters), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                     MemoryUse::Device);
+  if (lighting_ == ParticleLighting::Vertex)
+    radiance_ = Buffer(context_, VkDeviceSize(capacity_) * sizeof(glm::vec4), storage, MemoryUse::Device);
+  // Every slot starts dead: lifetime 0.
+  context_.submitAndWait([&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, particles_.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+  });
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &depthSampler_));
+}
+
+void ParticleSystem::uploadUniforms(const glm::vec3& source, uint32_t seed) {
+  const ParticlePreset& p = preset_;
+  gpu::ParticleUniforms u{};
+  u.emitter = glm::vec4(source + p.emitterOffset, p.emitterRadius);
+  u.direction = glm::vec4(p.direction, std::cos(glm::radians(p.spreadDegrees)));
+  u.speedLifetime = glm::vec4(p.speedMin, p.speedMax, p.lifetimeMin, p.lifetimeMax);
+  u.forces = glm::vec4(p.drag, p.buoyancy, p.turbulenceStrength, 1.0f / p.turbulenceSize);
+  u.gravity = glm::vec4(p.gravity, p.turbulenceSpeed);
+  u.variation = glm::vec4(p.sizeVariation, p.colorVariation, p.spin, p.restitution);
+  u.shading = glm::vec4(p.wrap, p.back, p.focus, p.softness);
+  u.blend = glm::vec4(p.additive, source.y, 0.0f, 0.0f);
+  packCurve(p.size, u.sizeKeys);
+  packCurve(p.opacity, u.opacityKeys);
+  packCurve(p.emission, u.emissionKeys);
+  for (size_t i = 0; i < p.color.size(); ++i) u.colorKeys[i] = glm::vec4(p.color[i], 0.0f);
+  u.keyCounts = glm::uvec4(p.size.size(), p.opacity.size(), p.emission.size(), p.color.size());
+  const uint32_t shape = p.shape == EmitterShape::Point  ? gpu::kEmitterPoint
+                         : p.shape == EmitterShape::Disc ? gpu::kEmitterDisc
+                                                         : gpu::kEmitterSphere;
+  const uint32_t floor = p.floor == FloorMode::None     ? gpu::kFloorNone
+                         : p.floor == FloorMode::Bounce ? gpu::kFloorBounce
+                                                        : gpu::kFloorKill;
+  u.modes = glm::uvec4(shape, floor, capacity_, seed);
+  uniforms_.upload(&u, sizeof(u));
+}
+
+// Spawn id k is born at k * lifetimeMax / capacity seconds; step s covers [s dt, (s + 1) dt), so
+// its spawns are ids ceil(s * capacity / stepsPerLifetime) up to the same for s + 1. The product is
+// formed before the division so that whole numbers come out exact: no drift, no off-by-one.
+uint64_t ParticleSystem::spawnedBefore(uint64_t step) const {
+  return uint64_t(std::ceil(double(step) * double(capacity_) / stepsPerLifetime_));
+}
+
+gpu::ParticleStepPush ParticleSystem::stepPush(uint64_t step) const {
+  const double dt = 1.0 / gpu::kParticleStepsPerSecond;
+  const double interval = stepsPerLifetime_ * dt / double(capacity_);
+  const uint64_t first = spawnedBefore(step), end = spawnedBefore(step + 1);
+  gpu::ParticleStepPush push{};
+  push.spawn = glm::uvec4(uint32_t(first % capacity_), uint32_t(end - first), uint32_t(first), 0);
+  push.time = glm::vec4(float(dt), float(double(step) * dt), float(interval),
+                        float(double(first) * interval - double(step) * dt));
+  return push;
+}
+
+void ParticleSystem::recordStep(VkCommandBuffer cmd) {
+  simulate_.bind(cmd);
+  DescriptorWriter()
+      .uniform(11, uniforms_.handle())
+      .storage(12, particles_.handle())
+      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+  const gpu::ParticleStepPush push = stepPush(steps_++);
+  vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+  vkCmdDispatch(cmd, divideRoundingUp(capacity_, gpu::kParticleGroupSize), 1, 1);
+  computeToCompute(cmd);
+}
+
+void ParticleSystem::recordSteps(VkCommandBuffer cmd, uint32_t steps) {
+  for (uint32_t i = 0; i < steps; ++i) recordStep(cmd);
+}
+
+void ParticleSystem::update(FrameContext& frame, bool advance) {
+  VkCommandBuffer cmd = frame.cmd;
+  if (advance) {
+    ScopedPass pass(frame.timer, cmd, "particles-simulate");
+    recordStep(cmd);
+  }
+  {
+    ScopedPass pass(frame.timer, cmd, "particles-sort");
+    sort(frame);
+  }
+  {
+    ScopedPass pass(frame.timer, cmd, "particles-indirect");
+    buildIndirect(frame);
+  }
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+}
+
+void ParticleSystem::sort(FrameContext& frame) {
+  VkCommandBuffer cmd = frame.cmd;
+  vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  keys_.bind(cmd);
+  DescriptorWriter()
+      .uniform(0, frame.uniformBuffer.handle())
+      .uniform(11, uniforms_.handle())
+      .storage(12, particles_.handle())
+      .storage(13, drawOrder_.handle())
+      .storage(14, counters_.handle())
+      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+  const gpu::SortPush push{glm::uvec4(0, 0, sorter_.paddedCount(), 0)};
+  vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+  vkCmdDispatch(cmd, divideRoundingUp(sorter_.paddedCount(), gpu::kParticleGroupSize), 1, 1);
+  computeToCompute(cmd);
+  sorter_.record(cmd, drawOrder_);
+}
+
+void ParticleSystem::buildIndirect(FrameContext& frame) {
+  VkCommandBuffer cmd = frame.cmd;
+  computeToCompute(cmd);
+  indirect_.bind(cmd);
+  DescriptorWriter()
+      .uniform(11, uniforms_.handle())
+      .storage(14, counters_.handle())
+      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+  vkCmdDispatch(cmd, 1, 1, 1);
+}
+
+std::vector<uint8_t> ParticleSystem::download(const Buffer& buffer, VkDeviceSize bytes) const {
+  Buffer staging(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
+  context_.submitAndWait([&](VkCommandBuffer cmd) {
+    // Whatever earlier submissions wrote is what is read.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    const VkBufferCopy region{0, 0, bytes};
+    vkCmdCopyBuffer(cmd, buffer.handle(), staging.handle(), 1, &region);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  });
+  std::vector<uint8_t> bytesOut(bytes);
+  std::memcpy(bytesOut.data(), staging.mapped(), bytes);
+  return bytesOut;
+}
+
+std::vector<gpu::Particle> ParticleSystem::readParticles() const {
+  const auto bytes = download(particles_, VkDeviceSize(capacity_) * sizeof(gpu::Particle));
+  std::vector<gpu::Particle> out(capacity_);
+  std::memcpy(out.data(), bytes.data(), bytes.size());
+  return out;
+}
+
+std::vector<glm::uvec2> ParticleSystem::readDrawOrder() const {
+  const auto bytes = download(drawOrder_, VkDeviceSize(sorter_.paddedCount()) * sizeof(glm::uvec2));
+  std::vector<glm::uvec2> out(sorter_.paddedCount());
+  std::memcpy(out.data(), bytes.data(), bytes.size());
+  return out;
+}
+
+gpu::ParticleCounters ParticleSystem::readCounters() const {
+  const auto bytes = download(counters_, sizeof(gpu::ParticleCounters));
+  gpu::ParticleCounters out;
+  std::memcpy(&out, bytes.data(), sizeof(out));
+  return out;
+}
+
+std::vector<std::pair<std::string, double>> ParticleSystem::stats() const {
+  const gpu::ParticleCounters counters = readCounters();
+  return {{"particle_slots", double(capacity_)},
+          {"particles_alive", double(counters.alive.x)},
+          {"particles_drawn", double(counters.dispatch.w)},
+          {"particle_steps", double(steps_)},
+          {"particle_state_bytes", double(particles_.size())},
+          {"particle_sort_bytes", double(drawOrder_.size())},
+          {"particle_radiance_bytes", double(radiance_ ? radiance_.size() : 0)}};
+}
+
+}  // namespace lll

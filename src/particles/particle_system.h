@@ -1,0 +1,128 @@
+#pragma once
+// A GPU particle system (issue 4): compute shaders spawn, simulate and kill particles in fixed
+// steps, sort them back to front and write indirect draw arguments; techniques then draw them as
+// camera-facing quads lit like their own surfaces (the light linked list's tile lists, every light,
+// or none). The renderer owns one system when --particles is given and records, each frame after
+// the depth prepass:
+//   particles-simulate  one fixed step (spawn, move, kill)
+//   particles-sort      keys (view depth, frustum culling), then the bitonic sort
+//   particles-indirect  visible count -> VkDrawIndirectCommand (+ the lighting pass's dispatch)
+// and each technique calls draw() after its glass: particles-light (--particle-lighting vertex),
+// particles-draw. Particles and glass are each sorted, but not against each other.
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "particles/bitonic_sort.h"
+#include "particles/presets.h"
+#include "shared/particle_types.h"
+
+namespace lll {
+
+class Context;
+struct FrameContext;
+struct FrameTargets;
+
+// How a technique lights its particles.
+enum class ParticleShading {
+  Unlit,      // ambient and emission only (deferred's unlit translucents, the seeds' Figure 1.1)
+  AllLights,  // every light (forward, and the forward-lit translucent passes)
+  LightList,  // the tile's light linked list at the particle's own depth (lll)
+};
+
+// Where lighting is evaluated (--particle-lighting).
+enum class ParticleLighting {
+  Pixel,   // every covered pixel, with a sphere-like normal across the quad
+  Vertex,  // once per particle at its centre, in compute (particles-light), facing the camera
+};
+
+// Throws InputError for anything but "pixel" or "vertex".
+ParticleLighting parseParticleLighting(const std::string& name);
+
+// The light linked list's buffers as shaders/common/lll_data.glsl binds them (3..7).
+struct LightListBuffers {
+  VkBuffer uniforms = VK_NULL_HANDLE;
+  VkBuffer heads = VK_NULL_HANDLE;
+  VkBuffer links = VK_NULL_HANDLE;
+  VkBuffer counters = VK_NULL_HANDLE;
+  VkBuffer tileDepth = VK_NULL_HANDLE;
+};
+
+struct ParticleSystemOptions {
+  ParticlePreset preset;
+  glm::vec3 source{0.0f};  // the emitter's point: the scene's smoke source or --particle-emitter
+  uint32_t count = 0;      // slots; 0: the preset's count
+  uint32_t seed = 1;
+  ParticleLighting lighting = ParticleLighting::Pixel;
+};
+
+class ParticleSystem {
+ public:
+  ParticleSystem(Context& context, const ParticleSystemOptions& options);
+  ~ParticleSystem();
+  ParticleSystem(const ParticleSystem&) = delete;
+  ParticleSystem& operator=(const ParticleSystem&) = delete;
+
+  // Records `steps` fixed steps without timing them (the steps before the drawn frame).
+  void recordSteps(VkCommandBuffer cmd, uint32_t steps);
+  // The frame's particle passes before the technique: simulate one step when `advance` (not when
+  // the renderer records the same frame again), then sort for the frame's camera and build the
+  // indirect arguments.
+  void update(FrameContext& frame, bool advance);
+  // The technique's particle passes, inside its frame after its glass; hdr stays a colour attachment.
+  void draw(FrameContext& frame, ParticleShading shading, const LightListBuffers& lists = {});
+
+  uint64_t steps() const { return steps_; }
+  const ParticlePreset& preset() const { return preset_; }
+  std::vector<std::pair<std::string, double>> stats() const;
+
+  // Read back after a frame (for tests and tools): every slot, the sorted (key, slot) pairs of the
+  // last frame (visible particles first, back to front), and the counters.
+  std::vector<gpu::Particle> readParticles() const;
+  std::vector<glm::uvec2> readDrawOrder() const;
+  gpu::ParticleCounters readCounters() const;
+
+ private:
+  struct DrawPipelines {
+    Pipeline draw;
+    Pipeline light;  // the per-particle lighting pass (vertex lighting); empty otherwise
+  };
+  void createBuffers();
+  void uploadUniforms(const glm::vec3& source, uint32_t seed);
+  uint64_t spawnedBefore(uint64_t step) const;
+  gpu::ParticleStepPush stepPush(uint64_t step) const;
+  void recordStep(VkCommandBuffer cmd);
+  void sort(FrameContext& frame);
+  void buildIndirect(FrameContext& frame);
+  const DrawPipelines& pipelinesFor(ParticleShading shading);
+  DescriptorWriter descriptors(const FrameContext& frame, const LightListBuffers& lists) const;
+  void lightParticles(FrameContext& frame, const DrawPipelines& pipelines, const LightListBuffers& lists);
+  std::vector<uint8_t> download(const Buffer& buffer, VkDeviceSize bytes) const;
+
+  Context& context_;
+  ParticlePreset preset_;
+  ParticleLighting lighting_;
+  uint32_t capacity_ = 0;
+  double stepsPerLifetime_ = 0.0;  // the preset's longest lifetime, in steps
+  uint64_t steps_ = 0;
+  BitonicSort sorter_;
+  Buffer uniforms_;
+  Buffer particles_;
+  Buffer drawOrder_;
+  Buffer counters_;
+  Buffer radiance_;
+  VkSampler depthSampler_ = VK_NULL_HANDLE;
+  PipelineLayout layout_;
+  Pipeline simulate_;
+  Pipeline keys_;
+  Pipeline indirect_;
+  std::map<ParticleShading, DrawPipelines> drawPipelines_;  // made on first use: each technique needs one
+};
+
+}  // namespace lll
