@@ -5,16 +5,30 @@
 #include "common/brdf.glsl"
 #include "common/lll_data.glsl"
 
-// Sum of the lights in the tile's list whose depth bounds contain `linearDepth`. The loop also stops
-// after longestPossibleList() links, so a corrupt list can never hang the GPU.
+// The walk itself, as an iterator: start with link = tileHeads[tile] and steps = 0; each call
+// yields the next listed light whose depth bounds contain `linearDepth`, false at the list's end.
+// It also stops after longestPossibleList() links, so a corrupt list can never hang the GPU.
+//   uint link = tileHeads[tile], steps = 0u, light;
+//   while (nextListedLight(link, steps, depth, light)) ... lights[light] ...
+bool nextListedLight(inout uint link, inout uint steps, float linearDepth, out uint light) {
+  light = 0u;
+  while (!isListEnd(link) && steps < longestPossibleList()) {
+    LightLink l = readLink(link);
+    link = l.next;
+    ++steps;
+    if (linearDepth >= l.minDepth && linearDepth <= l.maxDepth) {
+      light = l.light;
+      return true;
+    }
+  }
+  return false;
+}
+
+// Sum of the lights in the tile's list whose depth bounds contain `linearDepth`.
 vec3 shadeFromLightList(Surface s, uint tileIndex, float linearDepth) {
   vec3 color = vec3(0.0);
-  uint link = tileHeads[tileIndex];
-  for (uint guard = 0u; !isListEnd(link) && guard < longestPossibleList(); ++guard) {
-    LightLink l = readLink(link);
-    if (linearDepth >= l.minDepth && linearDepth <= l.maxDepth) color += evaluateLight(lights[l.light], s);
-    link = l.next;
-  }
+  uint link = tileHeads[tileIndex], steps = 0u, light;
+  while (nextListedLight(link, steps, linearDepth, light)) color += evaluateLight(lights[light], s);
   return color;
 }
 

@@ -11,7 +11,7 @@
 #include "common/brdf.glsl"
 #include "particles/particle_data.glsl"
 #ifdef PARTICLE_LIGHT_LIST
-#include "common/lll_data.glsl"
+#include "common/lll_walk.glsl"
 #endif
 
 // Light one light sends towards the eye per unit albedo, from a particle at `position`.
@@ -20,7 +20,7 @@ vec3 scatterLight(GpuLight light, vec3 position, vec3 normal, vec3 towardEye) {
   float distance = length(toLight);
   if (distance >= light.positionRange.w) return vec3(0.0);
   vec3 l = toLight / max(distance, 1e-6);
-  float attenuation = rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
+  float attenuation = lightAttenuation(light, toLight, distance);
   if (attenuation <= 0.0) return vec3(0.0);
   float wrap = system.shading.x;
   float diffuse = max(dot(normal, l) + wrap, 0.0) / (1.0 + wrap);
@@ -40,13 +40,9 @@ vec3 scatterAllLights(vec3 position, vec3 normal, vec3 towardEye) {
 // particle's scattering in place of the BRDF).
 vec3 scatterFromLightList(vec3 position, vec3 normal, vec3 towardEye, uint tileIndex, float linearDepth) {
   vec3 sum = vec3(0.0);
-  uint link = tileHeads[tileIndex];
-  for (uint guard = 0u; !isListEnd(link) && guard < lll.params.x; ++guard) {
-    LightLink l = readLink(link);
-    if (linearDepth >= l.minDepth && linearDepth <= l.maxDepth)
-      sum += scatterLight(lights[l.light], position, normal, towardEye);
-    link = l.next;
-  }
+  uint link = tileHeads[tileIndex], steps = 0u, light;
+  while (nextListedLight(link, steps, linearDepth, light))
+    sum += scatterLight(lights[light], position, normal, towardEye);
   return sum;
 }
 #endif

@@ -10,16 +10,11 @@
 vec3 boundsView(Surface s, uint tileIndex, float depth) {
   vec3 reached = vec3(0.0);
   bool listed = false;
-  uint link = tileHeads[tileIndex];
-  for (uint guard = 0u; !isListEnd(link) && guard < longestPossibleList(); ++guard) {
-    LightLink l = readLink(link);
-    if (depth >= l.minDepth && depth <= l.maxDepth) {
-      listed = true;
-      GpuLight light = lights[l.light];
-      if (any(greaterThan(evaluateLight(light, s), vec3(0.0))))
-        reached = max(reached, light.colorIntensity.rgb);
-    }
-    link = l.next;
+  uint link = tileHeads[tileIndex], steps = 0u, index;
+  while (nextListedLight(link, steps, depth, index)) {
+    listed = true;
+    GpuLight light = lights[index];
+    if (any(greaterThan(evaluateLight(light, s), vec3(0.0)))) reached = max(reached, light.colorIntensity.rgb);
   }
   return any(greaterThan(reached, vec3(0.0))) ? reached : (listed ? vec3(0.25) : vec3(0.0));
 }
