@@ -118,6 +118,10 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForward) {
   EXPECT_EQ(labels, (std::set<std::string>{"lll/compute", "forward"}));
   EXPECT_EQ(lightings, (std::set<std::string>{"pixel", "vertex"}));
   EXPECT_EQ(buildSuite("smoke", SuiteOptions{.quick = true}).size(), 8u);
+  // --particle-count picks the counts (the GPU runs take the million-slot case on its own).
+  const auto picked = buildSuite("smoke", SuiteOptions{.particleCounts = {2048}});
+  EXPECT_EQ(picked.size(), 4u);
+  for (const Scenario& s : picked) EXPECT_EQ(s.settings.particleCount, 2048u);
 }
 
 // Splits one CSV line, honouring quoted fields (device names hold commas).

@@ -75,6 +75,9 @@ void addBenchOptions(CLI::App& cmd, lll::bench::BenchOptions& options) {
                "on a CPU device, also run forward over more than 4096 lights (hours)");
   cmd.add_option("--out", options.outDir, "directory for results.json, results.csv, summary.md and charts")
       ->capture_default_str();
+  cmd.add_option("--particle-count", options.particleCounts,
+                 "smoke suite: only these particle counts, repeatable (default 1,024, 65,536, 1,000,000)")
+      ->check(CLI::Range(1u, 1000000u));
   cmd.add_option("--frames", options.timedFrames, "timed frames per scenario (default 30; 2 with --quick)")
       ->check(CLI::Range(1u, 100000u));
   cmd.add_option("--warmup", options.warmupFrames, "untimed frames first (default 5; 1 with --quick)")

@@ -186,7 +186,8 @@ BenchReport runBench(Context& context, const BenchOptions& options) {
   checkNames(options);
   BenchReport report = reportHeader(context, options);
   if (report.timedFrames == 0) throw InputError("--frames 0: at least one timed frame is needed");
-  const SuiteOptions suiteOptions{options.quick, options.fullForward, context.isCpuDevice()};
+  const SuiteOptions suiteOptions{options.quick, options.fullForward, context.isCpuDevice(),
+                                  options.particleCounts};
   const std::vector<Scenario> scenarios = chosenScenarios(report, suiteOptions);
   const FrameCounts counts{report.warmupFrames, report.timedFrames};
   SceneCache scenes;

@@ -19,6 +19,7 @@ struct BenchOptions {
   std::vector<std::string> techniques;  // only these techniques' scenarios; empty: all
   bool quick = false;
   bool fullForward = false;
+  std::vector<uint32_t> particleCounts;  // --particle-count: the smoke suite's counts (empty: its own)
   std::optional<uint32_t> warmupFrames;  // default kWarmupFrames (kQuickWarmupFrames with quick)
   std::optional<uint32_t> timedFrames;   // default kTimedFrames (kQuickTimedFrames with quick)
   std::filesystem::path outDir = "bench-out";

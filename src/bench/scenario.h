@@ -28,6 +28,7 @@ struct SuiteOptions {
   bool quick = false;        // tiny sizes and counts, so a suite runs on lavapipe in under a minute
   bool fullForward = false;  // forward with more than kForwardLightLimitOnCpu lights on a CPU device
   bool cpuDevice = false;    // lavapipe: hours per frame for brute force over tens of thousands of lights
+  std::vector<uint32_t> particleCounts;  // smoke: only these particle counts (empty: the suite's own)
 };
 
 // Brute-force forward over more lights than this is skipped on a CPU device unless --full-forward.

@@ -139,7 +139,9 @@ std::vector<Scenario> overdrawSuite(const SuiteOptions& options) {
 // (forward, the same frame brute force). The runner settles the plume first (bench.cpp).
 std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
   const std::vector<uint32_t> counts =
-      options.quick ? std::vector<uint32_t>{1024, 4096} : std::vector<uint32_t>{1024, 65536, 1000000};
+      !options.particleCounts.empty() ? options.particleCounts
+      : options.quick                 ? std::vector<uint32_t>{1024, 4096}
+                                      : std::vector<uint32_t>{1024, 65536, 1000000};
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   std::vector<Scenario> out;
   for (const uint32_t particles : counts) {
