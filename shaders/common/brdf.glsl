@@ -70,20 +70,29 @@ float spotAttenuation(GpuLight light, vec3 towardsLight) {
 
 // A box light's window: KHR's (1 - x^4)^2 along each of the box's axes, x the position over the half
 // extent, so the light fades to exactly zero at every face. `offset` is from the box's centre.
+// The light stores its axes over their half extents (gpu_types.h): three dot products.
 float boxWindow(GpuLight light, vec3 offset) {
-  vec3 x = light.directionType.xyz, y = light.spotParams.xyz;  // axes times half extents
-  vec3 z = normalize(cross(x, y));
-  vec3 q = vec3(dot(offset, x) / dot(x, x), dot(offset, y) / dot(y, y), dot(offset, z) / light.spotParams.w);
+  vec3 x = light.directionType.xyz, y = light.spotParams.xyz;
+  vec3 q = vec3(dot(offset, x), dot(offset, y), dot(offset, cross(x, y)) * light.spotParams.w);
   vec3 w = clamp(1.0 - q * q * q * q, 0.0, 1.0);
   w *= w;
   return w.x * w.y * w.z;
 }
 
-// How much of a light's intensity reaches a point `toLight` away from it (`distance` its length):
-// inverse square times the light's window (range sphere, spot cone or box).
-float lightAttenuation(GpuLight light, vec3 toLight, float distance) {
+// A box light's axes scaled by its half extents (its corners are centre +- x +- y +- z).
+void boxHalfAxes(GpuLight light, out vec3 x, out vec3 y, out vec3 z) {
+  vec3 ux = light.directionType.xyz, uy = light.spotParams.xyz;  // axes over half extents
+  float hx = 1.0 / length(ux), hy = 1.0 / length(uy);
+  x = ux * (hx * hx);
+  y = uy * (hy * hy);
+  z = cross(ux, uy) * (hx * hx * hy * hy / light.spotParams.w);
+}
+
+// How much of a light's intensity reaches a point `toLight` away from it (`distance` its length,
+// `l` its direction): inverse square times the light's window (range sphere, spot cone or box).
+float lightAttenuation(GpuLight light, vec3 toLight, vec3 l, float distance) {
   if (uint(light.directionType.w) == kLightBox) return boxWindow(light, -toLight) / max(distance * distance, 1e-4);
-  return rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, toLight / max(distance, 1e-6));
+  return rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
 }
 
 // Radiance one light reflects from the surface towards the eye.
@@ -92,7 +101,7 @@ vec3 evaluateLight(GpuLight light, Surface s) {
   float distance = length(toLight);
   if (distance >= light.positionRange.w) return vec3(0.0);
   vec3 l = toLight / max(distance, 1e-6);
-  float attenuation = lightAttenuation(light, toLight, distance);
+  float attenuation = lightAttenuation(light, toLight, l, distance);
   if (attenuation <= 0.0) return vec3(0.0);
   return brdfCosine(s, l) * light.colorIntensity.rgb * (light.colorIntensity.w * attenuation);
 }

@@ -33,7 +33,7 @@ bool lightTerms(LightVolume volume, ivec2 pixel, out vec4 diffuse, out vec4 spec
   vec3 l = toLight / max(distance, 1e-6);
   float nDotL = dot(n, l);
   if (distance >= light.positionRange.w || nDotL <= 0.0) return false;
-  float attenuation = lightAttenuation(light, toLight, distance);
+  float attenuation = lightAttenuation(light, toLight, l, distance);
   vec3 irradiance = light.colorIntensity.rgb * (light.colorIntensity.w * attenuation * nDotL);
   vec3 v = normalize(frame.cameraPosition.xyz - position);
   vec3 h = normalize(l + v);

@@ -10,10 +10,11 @@ struct GpuLight {
   vec4 positionRange;   // xyz position, w range (distance where the light is cut off; a box's
                         // bounding radius)
   vec4 colorIntensity;  // rgb linear colour, w intensity (candela)
-  vec4 directionType;   // xyz spot: direction it points to (unit); box: its x axis times its half
+  vec4 directionType;   // xyz spot: direction it points to (unit); box: its x axis over its half
                         // extent; w kLightPoint, kLightSpot or kLightBox
   vec4 spotParams;      // spot: x cos(outer cone), y cos(inner cone), z angle scale, w angle offset
-                        // box: xyz its y axis times its half extent, w its half extent along z
+                        // box: xyz its y axis over its half extent, w hx * hy / hz (so that
+                        // cross(x, y) * w is its z axis over its half extent)
 };
 LLL_CHECK_SIZE(GpuLight, 64);
 

@@ -62,8 +62,10 @@ gpu::GpuLight toGpuLight(const Light& light) {
   g.positionRange = glm::vec4(light.position, light.range);
   g.colorIntensity = glm::vec4(light.color, light.intensity);
   if (light.type == LightType::Box) {
-    g.directionType = glm::vec4(light.boxAxisX * light.halfExtents.x, float(gpu::kLightBox));
-    g.spotParams = glm::vec4(light.boxAxisY * light.halfExtents.y, light.halfExtents.z);
+    // Axes over half extents: the shading's box coordinates are plain dot products.
+    const glm::vec3 h = light.halfExtents;
+    g.directionType = glm::vec4(light.boxAxisX / h.x, float(gpu::kLightBox));
+    g.spotParams = glm::vec4(light.boxAxisY / h.y, h.x * h.y / h.z);
     return g;
   }
   const uint32_t type = light.type == LightType::Spot ? gpu::kLightSpot : gpu::kLightPoint;

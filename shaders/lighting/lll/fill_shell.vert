@@ -30,11 +30,11 @@ void main() {
   } else if (kShape == 2u) {
     // The unit cube onto the box, each half extent grown by the inflation; (x, y, cross(x, y)) is
     // right-handed, so the mesh keeps its winding.
-    vec3 x = light.directionType.xyz, y = light.spotParams.xyz;
-    vec3 z = normalize(cross(x, y));
-    float hx = length(x), hy = length(y), hz = light.spotParams.w;
+    vec3 x, y, z;
+    boxHalfAxes(light, x, y, z);
+    float hx = length(x), hy = length(y), hz = length(z);
     world = center + (x / hx) * (inPosition.x * (hx + inflation)) + (y / hy) * (inPosition.y * (hy + inflation)) +
-            z * (inPosition.z * (hz + inflation));
+            (z / hz) * (inPosition.z * (hz + inflation));
   } else {
     // Moving the apex back by inflation / sin(angle) widens the cone by `inflation` everywhere.
     vec3 axis = light.directionType.xyz;

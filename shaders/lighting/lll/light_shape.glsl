@@ -2,6 +2,7 @@
 // front of the eye), and how far a tile's footprint forces its shape to grow.
 #ifndef LLL_LIGHT_SHAPE_GLSL
 #define LLL_LIGHT_SHAPE_GLSL
+#include "common/brdf.glsl"
 #include "common/frame.glsl"
 #include "common/lll_data.glsl"
 
@@ -35,10 +36,11 @@ bool isBox(GpuLight light) {
 
 // A box light's axes in view-depth space, each scaled by its half extent.
 void boxAxes(GpuLight light, out vec3 x, out vec3 y, out vec3 z) {
-  vec3 worldX = light.directionType.xyz, worldY = light.spotParams.xyz;
+  vec3 worldX, worldY, worldZ;
+  boxHalfAxes(light, worldX, worldY, worldZ);
   x = directionToViewDepthSpace(worldX);
   y = directionToViewDepthSpace(worldY);
-  z = directionToViewDepthSpace(normalize(cross(worldX, worldY)) * light.spotParams.w);
+  z = directionToViewDepthSpace(worldZ);
 }
 
 // Half the light's extent along the view axis: a box's projection onto it, else its range.
