@@ -52,14 +52,6 @@ RenderSettings settingsFor(const std::string& technique) {
   return settings;
 }
 
-double stat(const test::Rendered& rendered, const std::string& name) {
-  for (const auto& [key, value] : rendered.stats) {
-    if (key == name) return value;
-  }
-  ADD_FAILURE() << "no stat " << name;
-  return -1.0;
-}
-
 // Largest difference of any 8-bit channel: a missing or doubled light shows here even when it
 // covers too few pixels to move the PSNR.
 int maxDifference(const LdrImage& a, const LdrImage& b) {
@@ -149,9 +141,9 @@ TEST(DeferredMatchesForward, DefaultSceneOpaque) {
   const Scene scene = withoutBlended(loadedScene("", 0));
   const Comparison c = compareWithForward(scene, settingsFor("deferred"), "deferred atrium opaque");
   EXPECT_GE(c.psnr, kDeferredMinPsnr);
-  EXPECT_EQ(stat(c.candidate, "gbuffer-bytes-per-pixel"), 12.0);
-  EXPECT_GT(stat(c.candidate, "lights-drawn"), 0.0);
-  EXPECT_LE(stat(c.candidate, "lights-drawn"), double(scene.lights.size()));
+  EXPECT_EQ(test::stat(c.candidate, "gbuffer-bytes-per-pixel"), 12.0);
+  EXPECT_GT(test::stat(c.candidate, "lights-drawn"), 0.0);
+  EXPECT_LE(test::stat(c.candidate, "lights-drawn"), double(scene.lights.size()));
 }
 
 TEST(DeferredMatchesForward, DefaultSceneWithGlassLitByForwardPass) {
@@ -348,15 +340,15 @@ TEST(DeferredLightVolumes, CameraInsidePointLight) {
   const Scene scene = roomWithCameraInsidePointLight();
   const Comparison c =
       expectMatchesForward("deferred", scene, "camera inside point light", int(kWidth * kHeight) / 2);
-  EXPECT_EQ(stat(c.candidate, "lights-drawn-camera-inside"), 1.0);
+  EXPECT_EQ(test::stat(c.candidate, "lights-drawn-camera-inside"), 1.0);
 }
 
 TEST(DeferredLightVolumes, CameraInsideSpotCone) {
   const Scene scene = roomWithCameraInsideSpotCone();
   const Comparison c =
       expectMatchesForward("deferred", scene, "camera inside spot cone", int(kWidth * kHeight) / 4);
-  EXPECT_EQ(stat(c.candidate, "lights-drawn-camera-inside"), 1.0);
-  EXPECT_EQ(stat(c.candidate, "lights-drawn-as-cones"), 1.0);
+  EXPECT_EQ(test::stat(c.candidate, "lights-drawn-camera-inside"), 1.0);
+  EXPECT_EQ(test::stat(c.candidate, "lights-drawn-as-cones"), 1.0);
 }
 
 TEST(DeferredLightVolumes, LightsCrossingTheNearPlane) {
@@ -364,7 +356,7 @@ TEST(DeferredLightVolumes, LightsCrossingTheNearPlane) {
   const Comparison c =
       expectMatchesForward("deferred", scene, "lights crossing the near plane", int(kWidth * kHeight) / 10);
   // All five come within the near-plane margin, so all are drawn from inside.
-  EXPECT_EQ(stat(c.candidate, "lights-drawn-camera-inside"), 5.0);
+  EXPECT_EQ(test::stat(c.candidate, "lights-drawn-camera-inside"), 5.0);
 }
 
 TEST(DeferredLightVolumes, LightsBehindTheCamera) {
@@ -372,8 +364,8 @@ TEST(DeferredLightVolumes, LightsBehindTheCamera) {
   const Scene scene = roomWithLightsBehindTheCamera(&reaching);
   const Comparison c =
       expectMatchesForward("deferred", scene, "lights behind the camera", int(kWidth * kHeight) / 4);
-  EXPECT_EQ(stat(c.candidate, "lights-drawn"), double(reaching));
-  EXPECT_EQ(stat(c.candidate, "lights-drawn-camera-inside"), double(reaching));
+  EXPECT_EQ(test::stat(c.candidate, "lights-drawn"), double(reaching));
+  EXPECT_EQ(test::stat(c.candidate, "lights-drawn-camera-inside"), double(reaching));
 }
 
 // Box lights are drawn as their bounding spheres; the shader's box window does the rest.
@@ -412,7 +404,7 @@ TEST(DeferredEdgeAa, BlendsSilhouettesAndCreasesOnly) {
   // The room's silhouettes and wall creases are a few percent of the frame, the rest is flat.
   EXPECT_GT(changed, int(kWidth * kHeight) / 100);
   EXPECT_LT(changed, int(kWidth * kHeight) / 4);
-  EXPECT_EQ(stat(smoothed, "gbuffer-bytes-per-pixel"), 12.0);
+  EXPECT_EQ(test::stat(smoothed, "gbuffer-bytes-per-pixel"), 12.0);
 }
 
 TEST(DeferredEdgeAa, LeavesAFlatPlaneUntouched) {
@@ -432,9 +424,9 @@ TEST(PrepassMatchesForward, DefaultScene) {
   const Comparison c = compareWithForward(loadedScene("", 0), settingsFor("prepass"), "prepass atrium");
   EXPECT_GE(c.psnr, kPrepassMinPsnr);
   EXPECT_LE(c.maxDifference, kPrepassMaxDifference);
-  EXPECT_EQ(stat(c.candidate, "gbuffer-bytes-per-pixel"), 8.0);
-  EXPECT_EQ(stat(c.candidate, "light-buffer-bytes-per-pixel"), 16.0);
-  EXPECT_GT(stat(c.candidate, "lights-stencil-marked"), 0.0);
+  EXPECT_EQ(test::stat(c.candidate, "gbuffer-bytes-per-pixel"), 8.0);
+  EXPECT_EQ(test::stat(c.candidate, "light-buffer-bytes-per-pixel"), 16.0);
+  EXPECT_GT(test::stat(c.candidate, "lights-stencil-marked"), 0.0);
 }
 
 class PrepassAssets : public ::testing::TestWithParam<AssetCase> {};
@@ -446,8 +438,8 @@ TEST_P(PrepassAssets, MatchesForwardOpaque) {
                                           std::string("prepass ") + p.scene + " " + std::to_string(p.lights));
   EXPECT_GE(c.psnr, kPrepassMinPsnr);
   EXPECT_LE(c.maxDifference, kPrepassMaxDifference);
-  const double drawn = stat(c.candidate, "lights-drawn");
-  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked") + stat(c.candidate, "lights-small-unstenciled"),
+  const double drawn = test::stat(c.candidate, "lights-drawn");
+  EXPECT_EQ(test::stat(c.candidate, "lights-stencil-marked") + test::stat(c.candidate, "lights-small-unstenciled"),
             drawn);
 }
 
@@ -465,27 +457,27 @@ INSTANTIATE_TEST_SUITE_P(PrepassScenes, PrepassAssets,
 TEST(PrepassStencilVolumes, CameraInsidePointLight) {
   const Comparison c = expectMatchesForward("prepass", roomWithCameraInsidePointLight(),
                                             "camera inside point light", int(kWidth * kHeight) / 2);
-  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked-z-fail"), 1.0);
+  EXPECT_EQ(test::stat(c.candidate, "lights-stencil-marked-z-fail"), 1.0);
 }
 
 TEST(PrepassStencilVolumes, CameraInsideSpotCone) {
   const Comparison c = expectMatchesForward("prepass", roomWithCameraInsideSpotCone(),
                                             "camera inside spot cone", int(kWidth * kHeight) / 4);
-  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked-z-fail"), 1.0);
+  EXPECT_EQ(test::stat(c.candidate, "lights-stencil-marked-z-fail"), 1.0);
 }
 
 TEST(PrepassStencilVolumes, LightsCrossingTheNearPlane) {
   const Comparison c = expectMatchesForward("prepass", roomWithLightsCrossingTheNearPlane(),
                                             "lights crossing the near plane", int(kWidth * kHeight) / 10);
-  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked-z-fail"), 5.0);
+  EXPECT_EQ(test::stat(c.candidate, "lights-stencil-marked-z-fail"), 5.0);
 }
 
 TEST(PrepassStencilVolumes, LightsBehindTheCamera) {
   uint32_t reaching = 0;
   const Comparison c = expectMatchesForward("prepass", roomWithLightsBehindTheCamera(&reaching),
                                             "lights behind the camera", int(kWidth * kHeight) / 4);
-  EXPECT_EQ(stat(c.candidate, "lights-drawn"), double(reaching));
-  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked-z-fail"), double(reaching));
+  EXPECT_EQ(test::stat(c.candidate, "lights-drawn"), double(reaching));
+  EXPECT_EQ(test::stat(c.candidate, "lights-stencil-marked-z-fail"), double(reaching));
 }
 
 // Lights in front of the camera, large on screen and partly hidden behind the box, sphere and
@@ -499,9 +491,9 @@ TEST(PrepassStencilVolumes, ZPassAndSmallLights) {
     scene.lights.push_back(pointLight({-5.0f + 2.0f * float(i), 0.3f, -8.6f}, 0.6f, {1, 1, 1}, 2.0f));
   const Comparison c =
       expectMatchesForward("prepass", scene, "z-pass and small lights", int(kWidth * kHeight) / 6);
-  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked"), 3.0);
-  EXPECT_EQ(stat(c.candidate, "lights-stencil-marked-z-fail"), 0.0);
-  EXPECT_EQ(stat(c.candidate, "lights-small-unstenciled"), 6.0);
+  EXPECT_EQ(test::stat(c.candidate, "lights-stencil-marked"), 3.0);
+  EXPECT_EQ(test::stat(c.candidate, "lights-stencil-marked-z-fail"), 0.0);
+  EXPECT_EQ(test::stat(c.candidate, "lights-small-unstenciled"), 6.0);
 }
 
 }  // namespace

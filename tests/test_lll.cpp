@@ -266,13 +266,6 @@ Scene loadCase(const ImageCase& c) {
   return loadScene(SceneRequest{path, c.lights, 3});
 }
 
-double statOf(const test::Rendered& r, const std::string& name) {
-  for (const auto& [key, value] : r.stats)
-    if (key == name) return value;
-  ADD_FAILURE() << "no stat " << name;
-  return 0.0;
-}
-
 // Each fill with the default compute shading, and the chapter's fragment shading with one fill
 // (fill and shading are independent: the lists are the same).
 struct Variant {
@@ -302,8 +295,8 @@ TEST_P(LllImages, EveryFillMatchesForward) {
     const double psnr = test::psnr(lll.ldr, reference.ldr);
     EXPECT_GE(psnr, 45.0) << variantName(v);
     RecordProperty("psnr_" + std::string(v.fill) + "_" + v.shade, std::to_string(psnr));
-    EXPECT_GT(statOf(lll, "links_used"), 0.0) << variantName(v);
-    EXPECT_EQ(statOf(lll, "link_bytes_each"), scene.lights.size() > 256 ? 16.0 : 8.0) << variantName(v);
+    EXPECT_GT(test::stat(lll, "links_used"), 0.0) << variantName(v);
+    EXPECT_EQ(test::stat(lll, "link_bytes_each"), scene.lights.size() > 256 ? 16.0 : 8.0) << variantName(v);
   }
 }
 
@@ -344,8 +337,8 @@ TEST(LllImages, TinyPoolGrowsAndStillMatches) {
     settings.lllFill = fill;
     const test::Rendered lll = test::render(scene, settings);
     EXPECT_GE(lll.frame.rerenders, 1u) << fill;
-    EXPECT_GE(statOf(lll, "overflows"), 1.0) << fill;
-    EXPECT_GE(statOf(lll, "link_pool_capacity"), statOf(lll, "links_used")) << fill;
+    EXPECT_GE(test::stat(lll, "overflows"), 1.0) << fill;
+    EXPECT_GE(test::stat(lll, "link_pool_capacity"), test::stat(lll, "links_used")) << fill;
     EXPECT_GE(test::psnr(lll.ldr, reference.ldr), 45.0) << fill;
   }
 }

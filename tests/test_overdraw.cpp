@@ -11,13 +11,6 @@
 namespace lll {
 namespace {
 
-double statOf(const test::Rendered& r, const std::string& name) {
-  for (const auto& [key, value] : r.stats)
-    if (key == name) return value;
-  ADD_FAILURE() << "no stat " << name;
-  return -1.0;
-}
-
 TEST(LightVolumeOverdraw, FollowsTheLightsRange) {
   if (!test::gpuContext().pipelineStatistics()) GTEST_FAIL() << "the test device lacks pipeline statistics";
   RenderSettings settings;
@@ -30,11 +23,11 @@ TEST(LightVolumeOverdraw, FollowsTheLightsRange) {
     SceneRequest request{"atrium", 128, 7};
     request.lightRangeScale = i == 0 ? 0.5f : 2.0f;
     const test::Rendered r = test::render(loadScene(request), settings);
-    fragments[i] = statOf(r, "light-volume-fragments");
-    EXPECT_DOUBLE_EQ(statOf(r, "light-volume-overdraw"), fragments[i] / pixels);
+    fragments[i] = test::stat(r, "light-volume-fragments");
+    EXPECT_DOUBLE_EQ(test::stat(r, "light-volume-overdraw"), fragments[i] / pixels);
     // A convex volume covers a pixel at most once: one fragment per drawn light and pixel at most.
     EXPECT_GT(fragments[i], 0.0);
-    EXPECT_LE(fragments[i], statOf(r, "lights-drawn") * pixels);
+    EXPECT_LE(fragments[i], test::stat(r, "lights-drawn") * pixels);
   }
   // Four times the range: the 128 added lights cover far more of the screen (the atrium's own 110
   // lights keep their ranges, so less than the 16x of the areas).

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <string>
 
 #include "gpu/context.h"
 #include "render/renderer.h"
@@ -43,6 +44,14 @@ inline Rendered render(const Scene& scene, const RenderSettings& settings) {
   const auto messages = context.validationMessages();
   for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
   return out;
+}
+
+// A technique statistic of a rendered frame (Technique::stats); a missing one fails the test.
+inline double stat(const Rendered& rendered, const std::string& name) {
+  for (const auto& [key, value] : rendered.stats)
+    if (key == name) return value;
+  ADD_FAILURE() << "no stat " << name;
+  return -1.0;
 }
 
 // Peak signal-to-noise ratio of two 8-bit images over RGB, in dB (infinity when identical).

@@ -26,17 +26,6 @@ namespace {
 
 constexpr double kDepthAndAccumulationBytesPerPixel = 4 + 8;
 
-constexpr VkShaderStageFlags kGraphicsStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-
-const std::initializer_list<Binding> kLightBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGraphicsStages},
-    {5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-};
-
 const std::initializer_list<Binding> kEdgeAaBindings = {
     {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
@@ -65,9 +54,8 @@ class Deferred final : public Technique {
  public:
   Deferred(Context& context, const GpuScene& scene, const RenderSettings& settings,
            const FrameTargets& targets)
-      : meshLayout_(context, kMeshPassBindings, sizeof(gpu::DrawPush), kGraphicsStages,
-                    {scene.materialSetLayout()}),
-        lightLayout_(context, kLightBindings),
+      : meshLayout_(meshPassLayout(context, scene)),
+        lightLayout_(context, kLightVolumeBindings),
         gbuffer_(context, scene, targets),
         volumes_(context, uint32_t(scene.scene().lights.size())),
         lightFragments_(context),

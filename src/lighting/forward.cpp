@@ -13,8 +13,7 @@ namespace {
 class Forward final : public Technique {
  public:
   Forward(Context& context, const GpuScene& scene)
-      : layout_(context, kMeshPassBindings, sizeof(gpu::DrawPush),
-                VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, {scene.materialSetLayout()}) {
+      : layout_(meshPassLayout(context, scene)) {
     GraphicsPipelineDesc desc;
     desc.vertexShader = "common/mesh.vert";
     desc.fragmentShader = "lighting/forward.frag";

@@ -129,7 +129,6 @@ class LightLinkedList final : public Technique {
 
   Context& context_;
   LllFill fill_;
-  bool computeShading_;
   uint32_t linkFormat_;
   uint32_t linkBytes_;
   bool autoLinkFormat_;
@@ -169,14 +168,13 @@ class LightLinkedList final : public Technique {
   Pipeline shadeOpaque_;
   Pipeline shadeBlend_;
   Pipeline shadeCompute_;
-  std::unique_ptr<GBuffer> gbuffer_;  // --lll-shade compute only
+  std::unique_ptr<GBuffer> gbuffer_;  // --lll-shade compute only: its presence selects compute shading
 };
 
 LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const RenderSettings& settings,
                                  const FrameTargets& targets)
     : context_(context),
       fill_(parseFill(settings.lllFill)),
-      computeShading_(parseComputeShading(settings.lllShade)),
       linkFormat_(parseLinkFormat(settings.lllLink, scene.lightCount())),
       linkBytes_(linkFormat_ == gpu::kLinkCompact ? 8 : 16),
       autoLinkFormat_(settings.lllLink == "auto") {
@@ -196,8 +194,8 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   if (linkFormat_ == gpu::kLinkCompact)
     maxPoolLinks_ = std::min<uint64_t>(maxPoolLinks_, gpu::kCompactLinkEnd);
   createBuffers();
+  if (parseComputeShading(settings.lllShade)) gbuffer_ = std::make_unique<GBuffer>(context, scene, targets);
   createPipelines(scene);
-  if (computeShading_) gbuffer_ = std::make_unique<GBuffer>(context, scene, targets);
   if (fill_ != LllFill::Compute) createShells(scene);
   allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile));
 }
@@ -238,11 +236,11 @@ void LightLinkedList::createPipelines(const GpuScene& scene) {
   fillLayout_ = PipelineLayout(context_, kBindings, sizeof(gpu::FillPush), VK_SHADER_STAGE_VERTEX_BIT);
   shadeLayout_ =
       PipelineLayout(context_, kBindings, sizeof(gpu::DrawPush),
-                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, {scene.materialSetLayout()});
+                     kGraphicsStages, {scene.materialSetLayout()});
   tileDepthPipeline_ = Pipeline(context_, layout_, "lighting/lll/tile_depth.comp");
   statsPipeline_ = Pipeline(context_, layout_, "lighting/lll/stats.comp");
   if (fill_ == LllFill::Compute) computeFill_ = Pipeline(context_, layout_, "lighting/lll/fill_compute.comp");
-  if (computeShading_) shadeCompute_ = Pipeline(context_, layout_, "lighting/lll/shade.comp");
+  if (gbuffer_) shadeCompute_ = Pipeline(context_, layout_, "lighting/lll/shade.comp");
 
   GraphicsPipelineDesc fill;
   fill.vertexShader = "lighting/lll/fill_shell.vert";
@@ -406,12 +404,12 @@ void LightLinkedList::drawShellBatch(FrameContext& frame, uint32_t first, uint32
 }
 
 void LightLinkedList::shade(FrameContext& frame) {
-  if (computeShading_) gbuffer_->record(frame, "lll-gbuffer", frame.targets.hdr.view());
+  if (gbuffer_) gbuffer_->record(frame, "lll-gbuffer", frame.targets.hdr.view());
   memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-  if (computeShading_) shadeOpaqueInCompute(frame);
+  if (gbuffer_) shadeOpaqueInCompute(frame);
   const FrameTargets& t = frame.targets;
   const struct {
     const char* name;
@@ -420,7 +418,7 @@ void LightLinkedList::shade(FrameContext& frame) {
   } passes[2] = {{"lll-shade-opaque", shadeOpaque_, DrawFilter::Opaque},
                  {"lll-shade-blend", shadeBlend_, DrawFilter::Blend}};
   for (const auto& p : passes) {
-    if (p.filter == DrawFilter::Opaque && computeShading_) continue;
+    if (p.filter == DrawFilter::Opaque && gbuffer_) continue;
     if (p.filter == DrawFilter::Blend && !frame.scene.hasBlendDraws()) continue;
     ScopedPass pass(frame.timer, frame.cmd, p.name);
     beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), p.filter == DrawFilter::Opaque}},

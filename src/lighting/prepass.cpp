@@ -35,22 +35,12 @@ constexpr uint32_t kSmall = 0;         // no stencil: front faces against depth,
 constexpr uint32_t kStencilZPass = 1;  // camera outside: count the faces in front of the scene
 constexpr uint32_t kStencilZFail = 2;  // camera may be inside: count the faces behind the scene
 
-constexpr VkShaderStageFlags kGraphicsStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-
 const std::initializer_list<Binding> kMeshBindings = {
     {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
     {4, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-};
-
-const std::initializer_list<Binding> kLightBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGraphicsStages},
-    {5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
 };
 
 VkFormat depthStencilFormat(Context& context) {
@@ -125,7 +115,7 @@ class Prepass final : public Technique {
   Prepass(Context& context, const GpuScene& scene, const FrameTargets& targets)
       : meshLayout_(context, kMeshBindings, sizeof(gpu::DrawPush), kGraphicsStages,
                     {scene.materialSetLayout()}),
-        lightLayout_(context, kLightBindings),
+        lightLayout_(context, kLightVolumeBindings),
         depthStencilFormat_(depthStencilFormat(context)),
         volumes_(context, uint32_t(scene.scene().lights.size())),
         pixels_(double(targets.width) * targets.height) {

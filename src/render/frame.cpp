@@ -46,6 +46,11 @@ DescriptorWriter meshPassDescriptors(const FrameContext& frame) {
   return writer;
 }
 
+PipelineLayout meshPassLayout(Context& context, const GpuScene& scene) {
+  return PipelineLayout(context, kMeshPassBindings, sizeof(gpu::DrawPush), kGraphicsStages,
+                        {scene.materialSetLayout()});
+}
+
 void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets) {
   vkCmdDispatch(cmd, divideRoundingUp(targets.width, gpu::kTileGroupSize),
                 divideRoundingUp(targets.height, gpu::kTileGroupSize), 1);

@@ -58,13 +58,18 @@ void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
                     std::initializer_list<ColorTarget> colors, VkImageView depth, VkImageLayout depthLayout,
                     bool clearDepth);
 
+inline constexpr VkShaderStageFlags kGraphicsStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
 // Set 0 of a mesh pass: frame uniforms (0), lights (1), materials (2); meshPassDescriptors writes it.
 inline const std::initializer_list<Binding> kMeshPassBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
 };
 DescriptorWriter meshPassDescriptors(const FrameContext& frame);
+// The layout of a pass that draws the scene with kMeshPassBindings: set 0 pushed, set 1 the
+// material's textures, the per-draw push constants.
+PipelineLayout meshPassLayout(Context& context, const GpuScene& scene);
 
 inline uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) {
   return (value + divisor - 1) / divisor;

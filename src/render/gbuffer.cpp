@@ -3,8 +3,7 @@
 namespace lll {
 
 GBuffer::GBuffer(Context& context, const GpuScene& scene, const FrameTargets& targets)
-    : layout_(context, kMeshPassBindings, sizeof(gpu::DrawPush),
-              VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, {scene.materialSetLayout()}) {
+    : layout_(meshPassLayout(context, scene)) {
   const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
   target0_ = Image(context, targets.width, targets.height, kFormat0, usage, "gbuffer0");
   target1_ = Image(context, targets.width, targets.height, kFormat1, usage, "gbuffer1");

@@ -50,9 +50,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
       Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
   updateUniforms();
 
-  depthLayout_ = PipelineLayout(context, kMeshPassBindings, sizeof(gpu::DrawPush),
-                                VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                                {gpuScene_->materialSetLayout()});
+  depthLayout_ = meshPassLayout(context, *gpuScene_);
   GraphicsPipelineDesc depth;
   depth.vertexShader = "common/mesh.vert";
   depth.depthFormat = kDepthFormat;

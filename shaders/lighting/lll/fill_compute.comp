@@ -53,7 +53,7 @@ bool spotMayTouch(GpuLight light, vec3 center, vec4 slopes, float zNear, float z
 bool boxMayTouch(GpuLight light, vec3 center, vec4 slopes, float zNear, float zFar) {
   vec3 x, y, z;
   boxAxes(light, x, y, z);
-  float halfDepth = abs(x.z) + abs(y.z) + abs(z.z);
+  float halfDepth = boxDepthHalfExtent(x, y, z);
   float z0 = max(zNear, center.z - halfDepth), z1 = min(zFar, center.z + halfDepth);
   if (z0 > z1) return false;
   vec3 lo = vec3(min(slopes.x * z0, slopes.x * z1), min(slopes.z * z0, slopes.z * z1), z0);

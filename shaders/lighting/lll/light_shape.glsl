@@ -43,12 +43,17 @@ void boxAxes(GpuLight light, out vec3 x, out vec3 y, out vec3 z) {
   z = directionToViewDepthSpace(worldZ);
 }
 
+// Half a box's extent along the view axis, from its view-space half axes.
+float boxDepthHalfExtent(vec3 x, vec3 y, vec3 z) {
+  return abs(x.z) + abs(y.z) + abs(z.z);
+}
+
 // Half the light's extent along the view axis: a box's projection onto it, else its range.
 float depthHalfExtent(GpuLight light) {
   if (!isBox(light)) return light.positionRange.w;
   vec3 x, y, z;
   boxAxes(light, x, y, z);
-  return abs(x.z) + abs(y.z) + abs(z.z);
+  return boxDepthHalfExtent(x, y, z);
 }
 
 #endif
