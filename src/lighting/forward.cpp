@@ -28,26 +28,13 @@ class Forward final : public Technique {
   }
 
   void render(FrameContext& frame) override {
-    const FrameTargets& t = frame.targets;
     {
       ScopedPass pass(frame.timer, frame.cmd, "forward-opaque");
-      beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), true}}, t.depth.view(),
-                     VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-      opaque_.bind(frame.cmd);
-      meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                      layout_.handle());
-      frame.scene.draw(frame.cmd, layout_.handle(), DrawFilter::Opaque, frame.eye);
-      vkCmdEndRendering(frame.cmd);
+      drawSceneIntoHdr(frame, opaque_, layout_, DrawFilter::Opaque, true);
     }
     if (frame.scene.hasBlendDraws()) {
       ScopedPass pass(frame.timer, frame.cmd, "forward-blend");
-      beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), false}}, t.depth.view(),
-                     VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-      blend_.bind(frame.cmd);
-      meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                      layout_.handle());
-      frame.scene.draw(frame.cmd, layout_.handle(), DrawFilter::Blend, frame.eye);
-      vkCmdEndRendering(frame.cmd);
+      drawSceneIntoHdr(frame, blend_, layout_, DrawFilter::Blend, false);
     }
     if (frame.particles) frame.particles->draw(frame, ParticleShading::AllLights);
   }

@@ -308,18 +308,11 @@ class Prepass final : public Technique {
 
   void translucentPass(FrameContext& frame) {
     if (!frame.scene.hasBlendDraws()) return;
-    const FrameTargets& t = frame.targets;
     ScopedPass pass(frame.timer, frame.cmd, "prepass-translucent");
     memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                   VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), false}}, t.depth.view(),
-                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-    translucentPipeline_.bind(frame.cmd);
-    meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                    meshLayout_.handle());
-    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Blend, frame.eye);
-    vkCmdEndRendering(frame.cmd);
+    drawSceneIntoHdr(frame, translucentPipeline_, meshLayout_, DrawFilter::Blend, false);
   }
 
   static void toShaderRead(VkCommandBuffer cmd, const Image& image) {

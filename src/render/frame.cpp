@@ -51,6 +51,17 @@ PipelineLayout meshPassLayout(Context& context, const GpuScene& scene) {
                         {scene.materialSetLayout()});
 }
 
+void drawSceneIntoHdr(FrameContext& frame, const Pipeline& pipeline, const PipelineLayout& layout,
+                      DrawFilter filter, bool clearHdr) {
+  const FrameTargets& t = frame.targets;
+  beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), clearHdr}}, t.depth.view(),
+                 VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+  pipeline.bind(frame.cmd);
+  meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout.handle());
+  frame.scene.draw(frame.cmd, layout.handle(), filter, frame.eye);
+  vkCmdEndRendering(frame.cmd);
+}
+
 void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets) {
   vkCmdDispatch(cmd, divideRoundingUp(targets.width, gpu::kTileGroupSize),
                 divideRoundingUp(targets.height, gpu::kTileGroupSize), 1);

@@ -75,6 +75,11 @@ inline uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) {
   return (value + divisor - 1) / divisor;
 }
 
+// A mesh pass onto the HDR target (cleared first when `clearHdr`), depth-tested read-only against
+// the prepass: binds `pipeline`, pushes meshPassDescriptors and draws the scene's `filter` draws.
+void drawSceneIntoHdr(FrameContext& frame, const Pipeline& pipeline, const PipelineLayout& layout,
+                      DrawFilter filter, bool clearHdr);
+
 // One invocation per pixel of the frame, in kTileGroupSize x kTileGroupSize groups.
 void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets);
 
