@@ -149,8 +149,8 @@ TEST(Analytic, SpotLightConeAndRange) {
 TEST(Analytic, BoxLightFootprint) {
   Scene scene = planeScene();
   const float turn = 30.0f * kPi / 180.0f;
-  const Light light = makeBoxLight({0.5f, 1.0f, 0.0f}, {std::cos(turn), 0.0f, std::sin(turn)}, {0.0f, 1.0f, 0.0f},
-                                   {4.0f, 1.5f, 1.5f}, {1.0f, 0.9f, 0.8f}, 6.0f);
+  const Light light = makeBoxLight({0.5f, 1.0f, 0.0f}, {std::cos(turn), 0.0f, std::sin(turn)},
+                                   {0.0f, 1.0f, 0.0f}, {4.0f, 1.5f, 1.5f}, {1.0f, 0.9f, 0.8f}, 6.0f);
   scene.lights = {light};
   for (const char* fill : {"", "compute", "ray", "shells"}) {
     SCOPED_TRACE(*fill ? fill : "forward");

@@ -92,8 +92,8 @@ TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {
     names.insert(s.name);
     EXPECT_EQ(s.settings.tileSize, 8u);
   }
-  EXPECT_EQ(labels, (std::set<std::string>{"lll/shells", "lll/ray", "lll/compute", "lll/compute/fragment-shade",
-                                           "forward"}));
+  EXPECT_EQ(labels, (std::set<std::string>{"lll/shells", "lll/ray", "lll/compute",
+                                           "lll/compute/fragment-shade", "forward"}));
   EXPECT_EQ(names, (std::set<std::string>{"threel16 32x18", "threel16 64x36", "threel256 32x18",
                                           "threel256 64x36"}));
   EXPECT_THROW(buildSuite("nope", SuiteOptions{}), InputError);

@@ -288,7 +288,8 @@ TEST_F(CliTest, LightsBeyondTheLightBuffer) {
 }
 
 TEST_F(CliTest, AbsurdLightRangeScale) {
-  expectBadInput(render("plane", {"--lights", "4", "--light-range-scale", "0"}), {"--light-range-scale", "0"});
+  expectBadInput(render("plane", {"--lights", "4", "--light-range-scale", "0"}),
+                 {"--light-range-scale", "0"});
 }
 
 TEST_F(CliTest, UnknownTechniqueListsTechniques) {

@@ -9,8 +9,8 @@
 #include <map>
 #include <string>
 
-#include "scene/mesh_builder.h"
 #include "scene/builtin_scenes.h"
+#include "scene/mesh_builder.h"
 #include "scene/scene_source.h"
 #include "test_support.h"
 
@@ -372,7 +372,8 @@ TEST(DeferredLightVolumes, LightsBehindTheCamera) {
 TEST(DeferredLightVolumes, BoxLights) {
   const Scene scene = *makeBuiltinScene("box-plane");
   for (const char* technique : {"deferred", "prepass"})
-    expectMatchesForward(technique, scene, std::string("box lights, ") + technique, int(kWidth * kHeight) / 20);
+    expectMatchesForward(technique, scene, std::string("box lights, ") + technique,
+                         int(kWidth * kHeight) / 20);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -439,8 +440,9 @@ TEST_P(PrepassAssets, MatchesForwardOpaque) {
   EXPECT_GE(c.psnr, kPrepassMinPsnr);
   EXPECT_LE(c.maxDifference, kPrepassMaxDifference);
   const double drawn = test::stat(c.candidate, "lights-drawn");
-  EXPECT_EQ(test::stat(c.candidate, "lights-stencil-marked") + test::stat(c.candidate, "lights-small-unstenciled"),
-            drawn);
+  EXPECT_EQ(
+      test::stat(c.candidate, "lights-stencil-marked") + test::stat(c.candidate, "lights-small-unstenciled"),
+      drawn);
 }
 
 INSTANTIATE_TEST_SUITE_P(PrepassScenes, PrepassAssets,

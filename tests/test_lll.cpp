@@ -59,13 +59,16 @@ Scene awkwardLightsScene(uint32_t extraPoints) {
     scene.lights.push_back(spot);
   }
   for (int i = 0; i < 8; ++i) {
-    const glm::vec3 x(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)), y(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+    const glm::vec3 x(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)),
+        y(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
     scene.lights.push_back(makeBoxLight({uniform(-8, 8), uniform(-0.5f, 3), uniform(-8, 8)}, x, y,
                                         {uniform(0.3f, 4), uniform(0.3f, 2), uniform(0.3f, 1.5f)},
                                         {uniform(0.2f, 1), uniform(0.2f, 1), uniform(0.2f, 1)}, 6.0f));
   }
-  scene.lights.push_back(makeBoxLight({0.0f, 7.0f, 0.5f}, {1, 0, 0}, {0, 1, 1}, {3, 2, 2}, glm::vec3(1.0f), 8.0f));
-  scene.lights.push_back(makeBoxLight({2.0f, -1.5f, 0.0f}, {1, 0, 0}, {0, 1, 0}, {2, 1, 2}, glm::vec3(1.0f), 8.0f));
+  scene.lights.push_back(
+      makeBoxLight({0.0f, 7.0f, 0.5f}, {1, 0, 0}, {0, 1, 1}, {3, 2, 2}, glm::vec3(1.0f), 8.0f));
+  scene.lights.push_back(
+      makeBoxLight({2.0f, -1.5f, 0.0f}, {1, 0, 0}, {0, 1, 0}, {2, 1, 2}, glm::vec3(1.0f), 8.0f));
   return scene;
 }
 

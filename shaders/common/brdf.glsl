@@ -91,7 +91,8 @@ void boxHalfAxes(GpuLight light, out vec3 x, out vec3 y, out vec3 z) {
 // How much of a light's intensity reaches a point `toLight` away from it (`distance` its length,
 // `l` its direction): inverse square times the light's window (range sphere, spot cone or box).
 float lightAttenuation(GpuLight light, vec3 toLight, vec3 l, float distance) {
-  if (uint(light.directionType.w) == kLightBox) return boxWindow(light, -toLight) / max(distance * distance, 1e-4);
+  if (uint(light.directionType.w) == kLightBox)
+    return boxWindow(light, -toLight) / max(distance * distance, 1e-4);
   return rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
 }
 

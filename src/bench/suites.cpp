@@ -138,10 +138,9 @@ std::vector<Scenario> overdrawSuite(const SuiteOptions& options) {
 // particles, lit per pixel or once per particle, by the light lists (lll) or by every light
 // (forward, the same frame brute force). The runner settles the plume first (bench.cpp).
 std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
-  const std::vector<uint32_t> counts =
-      !options.particleCounts.empty() ? options.particleCounts
-      : options.quick                 ? std::vector<uint32_t>{1024, 4096}
-                                      : std::vector<uint32_t>{1024, 65536, 1000000};
+  const std::vector<uint32_t> counts = !options.particleCounts.empty() ? options.particleCounts
+                                       : options.quick                 ? std::vector<uint32_t>{1024, 4096}
+                                                       : std::vector<uint32_t>{1024, 65536, 1000000};
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   std::vector<Scenario> out;
   for (const uint32_t particles : counts) {

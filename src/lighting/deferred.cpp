@@ -16,8 +16,8 @@
 #include "gpu/pipeline.h"
 #include "lighting/technique.h"
 #include "lighting/volume_lights.h"
-#include "render/gbuffer.h"
 #include "particles/particle_system.h"
+#include "render/gbuffer.h"
 #include "scene/errors.h"
 
 namespace lll {

@@ -12,8 +12,7 @@ namespace {
 
 class Forward final : public Technique {
  public:
-  Forward(Context& context, const GpuScene& scene)
-      : layout_(meshPassLayout(context, scene)) {
+  Forward(Context& context, const GpuScene& scene) : layout_(meshPassLayout(context, scene)) {
     GraphicsPipelineDesc desc;
     desc.vertexShader = "common/mesh.vert";
     desc.fragmentShader = "lighting/forward.frag";

@@ -13,8 +13,8 @@
 #include "gpu/pipeline.h"
 #include "gpu/vk_check.h"
 #include "lighting/light_volumes.h"
-#include "render/gbuffer.h"
 #include "particles/particle_system.h"
+#include "render/gbuffer.h"
 #include "scene/errors.h"
 #include "shared/lll_types.h"
 
@@ -234,9 +234,8 @@ void LightLinkedList::allocatePool(uint64_t links) {
 void LightLinkedList::createPipelines(const GpuScene& scene) {
   layout_ = PipelineLayout(context_, kBindings);
   fillLayout_ = PipelineLayout(context_, kBindings, sizeof(gpu::FillPush), VK_SHADER_STAGE_VERTEX_BIT);
-  shadeLayout_ =
-      PipelineLayout(context_, kBindings, sizeof(gpu::DrawPush),
-                     kGraphicsStages, {scene.materialSetLayout()});
+  shadeLayout_ = PipelineLayout(context_, kBindings, sizeof(gpu::DrawPush), kGraphicsStages,
+                                {scene.materialSetLayout()});
   tileDepthPipeline_ = Pipeline(context_, layout_, "lighting/lll/tile_depth.comp");
   statsPipeline_ = Pipeline(context_, layout_, "lighting/lll/stats.comp");
   if (fill_ == LllFill::Compute) computeFill_ = Pipeline(context_, layout_, "lighting/lll/fill_compute.comp");
@@ -446,8 +445,8 @@ void LightLinkedList::shadeOpaqueInCompute(FrameContext& frame) {
                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   shadeCompute_.bind(frame.cmd);
   descriptors(frame)
-      .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
-             depthSampler_)
+      .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(),
+             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
       .image(11, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target0().view(),
              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
       .image(12, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target1().view(),
@@ -497,8 +496,8 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
   };
   if (bounds_) s.push_back({"bounds_bytes", double(bounds_.size())});
   if (gbuffer_)
-    s.push_back({"gbuffer_bytes", GBuffer::kBytesPerPixel * gbuffer_->target0().width() *
-                                      gbuffer_->target0().height()});
+    s.push_back({"gbuffer_bytes",
+                 GBuffer::kBytesPerPixel * gbuffer_->target0().width() * gbuffer_->target0().height()});
   if (measured_ && countersValid_) {
     s.push_back({"longest_list", double(lastCounters_.longestList)});
     s.push_back({"mean_list", double(lastCounters_.totalListLength) /

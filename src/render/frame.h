@@ -58,7 +58,8 @@ void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
                     std::initializer_list<ColorTarget> colors, VkImageView depth, VkImageLayout depthLayout,
                     bool clearDepth);
 
-inline constexpr VkShaderStageFlags kGraphicsStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+inline constexpr VkShaderStageFlags kGraphicsStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
 // Set 0 of a mesh pass: frame uniforms (0), lights (1), materials (2); meshPassDescriptors writes it.
 inline const std::initializer_list<Binding> kMeshPassBindings = {

@@ -15,8 +15,8 @@ struct RenderSettings {
   float exposure = 1.0f;
   float ambient = 0.02f;  // constant ambient radiance, so unlit corners are not pitch black
   // Light Linked List options (technique "lll").
-  std::string lllFill = "compute";  // shells | ray | compute
-  std::string lllLink = "auto";     // compact | wide | auto
+  std::string lllFill = "compute";   // shells | ray | compute
+  std::string lllLink = "auto";      // compact | wide | auto
   std::string lllShade = "compute";  // compute (thin G-buffer + compute pass) | fragment
   uint32_t tileSize = 8;
   uint32_t linksPerTile = 32;      // initial link pool: tiles * this, grown on overflow

@@ -99,8 +99,8 @@ Scene makeSpotPlane() {
 Scene makeBoxPlane() {
   Scene scene = makePlane("box-plane");
   const float turn = glm::radians(30.0f);
-  scene.lights.push_back(makeBoxLight({0.5f, 1.0f, 0.0f}, {std::cos(turn), 0.0f, std::sin(turn)}, {0.0f, 1.0f, 0.0f},
-                                      {4.0f, 1.5f, 1.5f}, {1.0f, 0.9f, 0.8f}, 6.0f));
+  scene.lights.push_back(makeBoxLight({0.5f, 1.0f, 0.0f}, {std::cos(turn), 0.0f, std::sin(turn)},
+                                      {0.0f, 1.0f, 0.0f}, {4.0f, 1.5f, 1.5f}, {1.0f, 0.9f, 0.8f}, 6.0f));
   scene.lights.push_back(makeBoxLight({-5.0f, 0.5f, -4.0f}, {1.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f},
                                       {1.0f, 1.0f, 2.5f}, {1.0f, 0.2f, 0.1f}, 3.0f));
   scene.lights.push_back(makeBoxLight({5.0f, 0.8f, -5.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, -1.0f},
@@ -129,7 +129,8 @@ const BuiltinEntry kBuiltinScenes[] = {
      makePointPlane},
     {"spot-plane", "analytic test: the same plane under one spot light 3 m above it, pointing down",
      makeSpotPlane},
-    {"box-plane", "the same plane with four box lights of different sizes and orientations (Bezrati's box volumes)",
+    {"box-plane",
+     "the same plane with four box lights of different sizes and orientations (Bezrati's box volumes)",
      makeBoxPlane},
 };
 

@@ -35,8 +35,8 @@ Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings)
                                  request.extraLights, scene.lights.size() + request.extraLights,
                                  gpu::kMaxLights));
   if (!(request.lightRangeScale > 0.0f && request.lightRangeScale <= kMaxLightRangeScale))
-    throw InputError(fmt::format("--light-range-scale {}: expected a factor in (0, {}]", request.lightRangeScale,
-                                 kMaxLightRangeScale));
+    throw InputError(fmt::format("--light-range-scale {}: expected a factor in (0, {}]",
+                                 request.lightRangeScale, kMaxLightRangeScale));
   if (request.extraLights > 0) {
     const Bounds bounds = scene.worldBounds();
     if (!bounds.valid())

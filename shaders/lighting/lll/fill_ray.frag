@@ -1,9 +1,9 @@
 #version 460
 #define LLL_FILL_PASS
 // ThreeL's refinement: back faces only. The eye ray through the tile centre is intersected with the
-// light's exact sphere (and cone, for spots; box, for box lights), each grown by the tile inflation; a ray that misses
-// adds no link, so the shell's corners cost nothing. The ray is rebuilt from the fragment position
-// rather than interpolated from the vertices: the same ray, and it stays valid when shell vertices
+// light's exact sphere (and cone, for spots; box, for box lights), each grown by the tile inflation; a ray
+// that misses adds no link, so the shell's corners cost nothing. The ray is rebuilt from the fragment
+// position rather than interpolated from the vertices: the same ray, and it stays valid when shell vertices
 // lie behind the eye (camera inside a light).
 #include "lighting/lll/light_shape.glsl"
 

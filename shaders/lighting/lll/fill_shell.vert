@@ -1,7 +1,8 @@
 #version 460
 #define LLL_FILL_PASS
 // Light shells for the raster fills: a coarse sphere or cone mesh that contains the light's exact
-// volume (a box light is its own exact shell), grown by the tile inflation, drawn into the tile grid (one fragment per tile centre).
+// volume (a box light is its own exact shell), grown by the tile inflation, drawn into the tile grid (one
+// fragment per tile centre).
 #include "lighting/lll/light_shape.glsl"
 
 layout(location = 0) in vec3 inPosition;
@@ -33,8 +34,8 @@ void main() {
     vec3 x, y, z;
     boxHalfAxes(light, x, y, z);
     float hx = length(x), hy = length(y), hz = length(z);
-    world = center + (x / hx) * (inPosition.x * (hx + inflation)) + (y / hy) * (inPosition.y * (hy + inflation)) +
-            (z / hz) * (inPosition.z * (hz + inflation));
+    world = center + (x / hx) * (inPosition.x * (hx + inflation)) +
+            (y / hy) * (inPosition.y * (hy + inflation)) + (z / hz) * (inPosition.z * (hz + inflation));
   } else {
     // Moving the apex back by inflation / sin(angle) widens the cone by `inflation` everywhere.
     vec3 axis = light.directionType.xyz;

@@ -16,7 +16,8 @@ void main() {
   Surface s = sampleSurface(m, inWorldPosition, inNormal, inUv, gl_FrontFacing);
   if (m.flags.x == kAlphaMask && s.alpha < m.alpha.x) discard;
   bool opaque;
-  vec3 color = shadeSurface(s, uvec2(gl_FragCoord.xy), linearizeDepth(gl_FragCoord.z), ambientAndEmissive(s), opaque);
+  vec3 color =
+      shadeSurface(s, uvec2(gl_FragCoord.xy), linearizeDepth(gl_FragCoord.z), ambientAndEmissive(s), opaque);
   float alpha = m.flags.x == kAlphaBlend && !opaque ? s.alpha : 1.0;
   outColor = vec4(color * alpha, alpha);
 }
