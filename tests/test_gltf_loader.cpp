@@ -649,7 +649,7 @@ TEST_F(GltfLoaderTest, BadReferencesAreInputErrors) {
 // The shared CC-BY scenes load whole and consistent.
 struct AssetScene {
   const char* name;
-  uint64_t triangles;  // from ../shared/assets/README.md
+  uint64_t triangles;  // from assets/README.md
 };
 
 class GltfAssetsTest : public ::testing::TestWithParam<AssetScene> {};
