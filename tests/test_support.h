@@ -1,7 +1,9 @@
 #pragma once
-// Shared by the GPU tests: one Vulkan context per test binary on the device `auto` picks
-// (lavapipe in CI), validation on when LLL_TEST_VALIDATION is set (ctest sets it), and helpers to
-// render a scene and compare images.
+// Shared by the GPU tests: one Vulkan context per test binary on the device LLL_TEST_DEVICE names
+// (auto | gpu | cpu | INDEX as `--device`; default cpu, lavapipe, so CI and a GPU machine run the
+// same thing unless asked), validation on when LLL_TEST_VALIDATION is set (ctest sets it; it
+// includes synchronization validation, and GPU-assisted validation with LLL_TEST_GPU_ASSISTED),
+// and helpers to render a scene and compare images (image_compare.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +12,7 @@
 #include <string>
 
 #include "gpu/context.h"
+#include "image_compare.h"
 #include "render/renderer.h"
 
 namespace lll::test {
@@ -17,7 +20,10 @@ namespace lll::test {
 inline Context& gpuContext() {
   static std::unique_ptr<Context> context = [] {
     ContextOptions options;
+    const char* device = std::getenv("LLL_TEST_DEVICE");
+    options.device = device != nullptr && *device ? device : "cpu";
     options.validation = std::getenv("LLL_TEST_VALIDATION") != nullptr;
+    options.gpuAssisted = options.validation && std::getenv("LLL_TEST_GPU_ASSISTED") != nullptr;
     options.quiet = true;
     return std::make_unique<Context>(options);
   }();
@@ -52,22 +58,6 @@ inline double stat(const Rendered& rendered, const std::string& name) {
     if (key == name) return value;
   ADD_FAILURE() << "no stat " << name;
   return -1.0;
-}
-
-// Peak signal-to-noise ratio of two 8-bit images over RGB, in dB (infinity when identical).
-inline double psnr(const LdrImage& a, const LdrImage& b) {
-  EXPECT_EQ(a.width, b.width);
-  EXPECT_EQ(a.height, b.height);
-  double sum = 0.0;
-  size_t count = 0;
-  for (size_t i = 0; i < a.rgba.size() && i < b.rgba.size(); ++i) {
-    if (i % 4 == 3) continue;
-    const double d = double(a.rgba[i]) - double(b.rgba[i]);
-    sum += d * d;
-    ++count;
-  }
-  const double mse = sum / double(std::max<size_t>(count, 1));
-  return mse == 0.0 ? INFINITY : 10.0 * std::log10(255.0 * 255.0 / mse);
 }
 
 }  // namespace lll::test

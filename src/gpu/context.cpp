@@ -128,7 +128,24 @@ DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
   return info;
 }
 
-VkInstance createBareInstance(bool validation, bool debugUtils) {
+bool hasInstanceExtension(const char* layer, const char* name) {
+  uint32_t count = 0;
+  vkEnumerateInstanceExtensionProperties(layer, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateInstanceExtensionProperties(layer, &count, extensions.data());
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+// What the validation layer checks beyond its defaults: synchronization always (hazards between
+// passes are the bugs lavapipe's serial execution hides), GPU-assisted validation on request.
+struct ValidationFeatures {
+  std::vector<VkValidationFeatureEnableEXT> enabled;
+  VkValidationFeaturesEXT info{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+};
+
+VkInstance createBareInstance(bool validation, bool debugUtils,
+                              const ValidationFeatures* features = nullptr) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "lll";
   app.apiVersion = VK_API_VERSION_1_3;
@@ -137,6 +154,10 @@ VkInstance createBareInstance(bool validation, bool debugUtils) {
   if (validation) layers.push_back(kValidationLayer);
   if (debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  if (features != nullptr) {
+    extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+    info.pNext = &features->info;
+  }
   info.pApplicationInfo = &app;
   info.enabledLayerCount = uint32_t(layers.size());
   info.ppEnabledLayerNames = layers.data();
@@ -172,7 +193,7 @@ std::vector<DeviceInfo> listDevices() {
 }
 
 Context::Context(const ContextOptions& options) {
-  createInstance(options.validation);
+  createInstance(options.validation, options.gpuAssisted);
   pickPhysicalDevice(options.device);
   createDevice();
   if (!options.quiet)
@@ -208,7 +229,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onValidationMessage(VkDebugUtilsMessageS
   return VK_FALSE;
 }
 
-void Context::createInstance(bool validation) {
+void Context::createInstance(bool validation, bool gpuAssisted) {
   validation_ = validation;
   if (validation) {
     uint32_t count = 0;
@@ -223,8 +244,23 @@ void Context::createInstance(bool validation) {
           "--validate needs the Khronos validation layer, which is not installed "
           "(on Debian: apt-get install vulkan-validationlayers)");
   }
-  instance_ = createBareInstance(validation, validation);
-  if (!validation) return;
+  if (!validation) {
+    instance_ = createBareInstance(false, false);
+    return;
+  }
+  if (!hasInstanceExtension(kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME))
+    throw InputError(
+        "--validate: the installed validation layer lacks " VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME
+        ", which synchronization validation needs; update vulkan-validationlayers");
+  ValidationFeatures features;
+  features.enabled.push_back(VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT);
+  if (gpuAssisted) {
+    features.enabled.push_back(VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_EXT);
+    features.enabled.push_back(VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_RESERVE_BINDING_SLOT_EXT);
+  }
+  features.info.enabledValidationFeatureCount = uint32_t(features.enabled.size());
+  features.info.pEnabledValidationFeatures = features.enabled.data();
+  instance_ = createBareInstance(true, true, &features);
   VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
   info.messageSeverity =
       VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;

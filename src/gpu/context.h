@@ -12,7 +12,10 @@ namespace lll {
 
 struct ContextOptions {
   std::string device = "auto";  // auto | gpu | cpu | INDEX (position in `lll devices`)
-  bool validation = false;      // Khronos validation layers; every message is recorded
+  bool validation = false;      // Khronos validation layers, synchronization validation included;
+                                // every message is recorded
+  bool gpuAssisted = false;     // with validation: GPU-assisted validation (out-of-bounds
+                                // descriptor and buffer accesses inside shaders) as well
   bool quiet = false;           // do not print the chosen device
 };
 
@@ -67,7 +70,7 @@ class Context {
                                                             VkDebugUtilsMessageTypeFlagsEXT types,
                                                             const VkDebugUtilsMessengerCallbackDataEXT* data,
                                                             void* user);
-  void createInstance(bool validation);
+  void createInstance(bool validation, bool gpuAssisted);
   void pickPhysicalDevice(const std::string& selector);
   void createDevice();
 

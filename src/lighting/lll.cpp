@@ -328,7 +328,7 @@ void LightLinkedList::clear(FrameContext& frame) {
   vkCmdFillBuffer(frame.cmd, heads_.handle(), 0, VK_WHOLE_SIZE, gpu::kLinkEnd);
   vkCmdFillBuffer(frame.cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
   if (bounds_) vkCmdFillBuffer(frame.cmd, bounds_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
-  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 }
@@ -364,9 +364,9 @@ void LightLinkedList::fillRaster(FrameContext& frame) {
     if (fill_ == LllFill::Shells) {
       if (first > 0) {  // a new batch reuses the ids: forget the previous batch's bounds
         memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
-                      VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+                      VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
         vkCmdFillBuffer(frame.cmd, bounds_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
-        memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+        memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
       }
       drawShellBatch(frame, first, end, false);

@@ -1,0 +1,116 @@
+#include "image_compare.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <vector>
+
+#include "test_support.h"
+
+namespace lll::test {
+
+ImageDifference compareImages(const LdrImage& candidate, const LdrImage& reference, int typical) {
+  EXPECT_EQ(candidate.width, reference.width);
+  EXPECT_EQ(candidate.height, reference.height);
+  ImageDifference d;
+  const size_t pixels = std::min(candidate.rgba.size(), reference.rgba.size()) / 4;
+  std::vector<int> perPixel(pixels);
+  double squares = 0.0;
+  size_t within = 0;
+  for (size_t i = 0; i < pixels; ++i) {
+    int largest = 0;
+    for (size_t c = 0; c < 3; ++c) {
+      const int diff = std::abs(int(candidate.rgba[i * 4 + c]) - int(reference.rgba[i * 4 + c]));
+      squares += double(diff) * diff;
+      largest = std::max(largest, diff);
+    }
+    perPixel[i] = largest;
+    if (largest <= typical) ++within;
+    if (largest > d.worst) {
+      d.worst = largest;
+      d.worstX = i % std::max(candidate.width, 1u);
+      d.worstY = i / std::max(candidate.width, 1u);
+    }
+  }
+  d.pixels = pixels;
+  const double mse = squares / double(std::max<size_t>(pixels * 3, 1));
+  d.psnr = mse == 0.0 ? INFINITY : 10.0 * std::log10(255.0 * 255.0 / mse);
+  d.typicalShare = double(within) / double(std::max<size_t>(pixels, 1));
+  if (pixels > 0) {
+    const size_t rank = std::min(pixels - 1, size_t(std::ceil(0.999 * double(pixels))) - 1);
+    std::nth_element(perPixel.begin(), perPixel.begin() + long(rank), perPixel.end());
+    d.p999 = perPixel[rank];
+  }
+  return d;
+}
+
+namespace {
+
+void appendToReport(const std::string& label, const ImageDifference& d, const ImageBound& bound) {
+  const char* path = std::getenv("LLL_TEST_IMAGE_REPORT");
+  if (path == nullptr || *path == '\0') return;
+  const bool fresh = !std::ifstream(path).good();
+  std::ofstream out(path, std::ios::app);
+  if (fresh) out << "test,label,device,psnr_db,p999,max,share_within_typical,bound_typical,bound_worst\n";
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  char line[512];
+  std::snprintf(line, sizeof(line), "%s.%s,%s,%s,%.2f,%d,%d,%.5f,%d,%d\n",
+                test ? test->test_suite_name() : "", test ? test->name() : "", label.c_str(),
+                gpuContext().info().name.c_str(), d.psnr, d.p999, d.worst, d.typicalShare, bound.typical,
+                bound.worst);
+  out << line;
+}
+
+}  // namespace
+
+ImageDifference expectWithinBound(const LdrImage& candidate, const LdrImage& reference,
+                                  const ImageBound& bound, const std::string& label) {
+  const ImageDifference d = compareImages(candidate, reference, bound.typical);
+  std::printf("[ image    ] %s: %.2f dB, 99.9th percentile %d, max %d at (%zu, %zu), %.3f%% within %d\n",
+              label.c_str(), d.psnr, d.p999, d.worst, d.worstX, d.worstY, 100.0 * d.typicalShare,
+              bound.typical);
+  ::testing::Test::RecordProperty(label + " psnr", std::to_string(d.psnr));
+  ::testing::Test::RecordProperty(label + " max", std::to_string(d.worst));
+  appendToReport(label, d, bound);
+  EXPECT_GE(d.psnr, bound.minPsnr) << label;
+  EXPECT_GE(d.typicalShare, bound.typicalShare)
+      << label << ": too many pixels differ by more than " << bound.typical << " of 255";
+  EXPECT_LE(d.worst, bound.worst) << label << ": pixel (" << d.worstX << ", " << d.worstY << ")";
+  return d;
+}
+
+double psnr(const LdrImage& a, const LdrImage& b) {
+  return compareImages(a, b).psnr;
+}
+
+HdrSummary summarize(const HdrImage& image) {
+  HdrSummary s;
+  const size_t pixels = size_t(image.width) * image.height;
+  double luminance = 0.0;
+  for (size_t i = 0; i < pixels && i * 4 + 3 < image.rgba.size(); ++i) {
+    const float* p = &image.rgba[i * 4];
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) || !std::isfinite(p[3])) {
+      ++s.nonFinite;
+      continue;
+    }
+    luminance += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+  }
+  s.meanLuminance = luminance / double(std::max<size_t>(pixels, 1));
+  return s;
+}
+
+double shareAboveBlack(const LdrImage& image) {
+  const size_t pixels = image.rgba.size() / 4;
+  size_t lit = 0;
+  for (size_t i = 0; i < pixels; ++i) {
+    const uint8_t* p = &image.rgba[i * 4];
+    if (std::max({p[0], p[1], p[2]}) > 2) ++lit;
+  }
+  return double(lit) / double(std::max<size_t>(pixels, 1));
+}
+
+}  // namespace lll::test

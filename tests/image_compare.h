@@ -1,0 +1,53 @@
+#pragma once
+// Image comparisons for the tests: a candidate against its reference (usually `forward`, the
+// brute-force renderer) under a per-pixel bound, not PSNR alone: a light missing from one tile
+// moves a few hundred pixels by a lot and the PSNR hardly at all. Differences are of 8-bit display
+// values, per pixel the largest over R, G and B.
+#include <cstddef>
+#include <string>
+
+#include "render/renderer.h"
+
+namespace lll::test {
+
+struct ImageBound {
+  double minPsnr = 45.0;
+  int typical = 2;              // at least `typicalShare` of the pixels differ by at most this...
+  double typicalShare = 0.999;  // ...
+  int worst = 16;               // ...and none by more than this
+};
+
+// Same BRDF and lights, different order of summation, storage rounding (G-buffer, fp16 targets):
+// the bound of the issue "trust on the GPU".
+inline constexpr ImageBound kSameImage{};
+
+struct ImageDifference {
+  double psnr = 0.0;          // over RGB, infinity when identical
+  int worst = 0;              // largest difference of any pixel
+  int p999 = 0;               // 99.9th percentile of the per-pixel differences
+  double typicalShare = 0.0;  // share of pixels within the bound's `typical`
+  size_t worstX = 0, worstY = 0;
+  size_t pixels = 0;
+};
+
+ImageDifference compareImages(const LdrImage& candidate, const LdrImage& reference, int typical = 2);
+
+// Compares and fails the current test where the candidate leaves `bound`; prints and records the
+// numbers and appends them to the CSV file $LLL_TEST_IMAGE_REPORT when that is set (how the GPU
+// results in tests/README.md were collected).
+ImageDifference expectWithinBound(const LdrImage& candidate, const LdrImage& reference,
+                                  const ImageBound& bound, const std::string& label);
+
+// Peak signal-to-noise ratio of two 8-bit images over RGB, in dB (infinity when identical).
+double psnr(const LdrImage& a, const LdrImage& b);
+
+struct HdrSummary {
+  size_t nonFinite = 0;        // pixels with a NaN or infinite channel (alpha included)
+  double meanLuminance = 0.0;  // of the finite pixels
+};
+HdrSummary summarize(const HdrImage& image);
+
+// Share of pixels whose displayed colour has a channel above 2 of 255 (so rounding is not light).
+double shareAboveBlack(const LdrImage& image);
+
+}  // namespace lll::test
