@@ -58,10 +58,12 @@ void appendToReport(const std::string& label, const ImageDifference& d, const Im
   if (fresh) out << "test,label,device,psnr_db,p999,max,share_within_typical,bound_typical,bound_worst\n";
   const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
   char line[512];
+  std::string name = label, device = gpuContext().info().name;  // one CSV field each
+  std::replace(name.begin(), name.end(), ',', ';');
+  std::replace(device.begin(), device.end(), ',', ';');
   std::snprintf(line, sizeof(line), "%s.%s,%s,%s,%.2f,%d,%d,%.5f,%d,%d\n",
-                test ? test->test_suite_name() : "", test ? test->name() : "", label.c_str(),
-                gpuContext().info().name.c_str(), d.psnr, d.p999, d.worst, d.typicalShare, bound.typical,
-                bound.worst);
+                test ? test->test_suite_name() : "", test ? test->name() : "", name.c_str(), device.c_str(),
+                d.psnr, d.p999, d.worst, d.typicalShare, bound.typical, bound.worst);
   out << line;
 }
 

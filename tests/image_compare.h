@@ -20,6 +20,12 @@ struct ImageBound {
 // Same BRDF and lights, different order of summation, storage rounding (G-buffer, fp16 targets):
 // the bound of the issue "trust on the GPU".
 inline constexpr ImageBound kSameImage{};
+// Smoke blends many translucent layers, each rounded to fp16 in the HDR target.
+inline constexpr ImageBound kSmokeBound{40.0, 2, 0.999, 16};
+// The light pre-pass takes the colour of the Fresnel-weighted highlights from the unweighted ones
+// (shaders/lighting/prepass_combine.frag): pixels where differently coloured lights overlap on a
+// highlight move.
+inline constexpr ImageBound kPrepassBound{35.0, 8, 0.99, 32};
 
 struct ImageDifference {
   double psnr = 0.0;          // over RGB, infinity when identical

@@ -111,9 +111,8 @@ TEST_P(SmokeMatchesForward, InLll) {
   const ParticleFrame forward = smokeFrame("forward", GetParam());
   const ParticleFrame lll = smokeFrame("lll", GetParam());
   EXPECT_GT(forward.counters.dispatch.w, 600u);  // 1024 / 6 spawns a second for 5 s, less the dead
-  const double psnr = test::psnr(lll.image.ldr, forward.image.ldr);
-  RecordProperty("psnr", std::to_string(psnr));
-  EXPECT_GE(psnr, 40.0);
+  test::expectWithinBound(lll.image.ldr, forward.image.ldr, test::kSmokeBound,
+                          std::string("lll smoke ") + GetParam() + "-lit");
   // The smoke is really in the picture: forward without it differs.
   RenderSettings clear = settingsFor("forward", 128, 72);
   const test::Rendered noSmoke = test::render(loadScene(SceneRequest{"atrium", 0, 1}), clear);
@@ -134,8 +133,10 @@ TEST(SmokeInOtherTechniques, DeferredAndPrepassLightItForwardDeferredUnlitLeaves
   const ParticleFrame forward = smokeFrame("forward", "pixel");
   const ParticleFrame deferred = smokeFrame("deferred", "pixel");
   const ParticleFrame prepass = smokeFrame("prepass", "pixel");
-  EXPECT_GE(test::psnr(deferred.image.ldr, forward.image.ldr), 40.0);
-  EXPECT_GE(test::psnr(prepass.image.ldr, forward.image.ldr), 35.0);  // prepass's own bar (test_deferred)
+  test::expectWithinBound(deferred.image.ldr, forward.image.ldr, test::kSmokeBound,
+                          "deferred smoke pixel-lit");
+  test::expectWithinBound(prepass.image.ldr, forward.image.ldr, test::kPrepassBound,
+                          "prepass smoke pixel-lit");
   static const Scene scene = loadScene(SceneRequest{"atrium", 0, 1});
   RenderSettings settings = settingsFor("deferred", 128, 72);
   settings.particles = "smoke";
@@ -212,12 +213,15 @@ TEST(Glass, LitByTheLightInFrontOfItNotByTheOneBehindTheWall) {
   EXPECT_GT(glassLit.g, 1.5f * glassUnlit.g) << "the glass took no light from the light in front of it";
   const glm::vec3 wallBesideGlass = meanColor(front.hdr, 117, 43, 4), wallFar = meanColor(front.hdr, 2, 2, 4);
   EXPECT_GT(wallBesideGlass.g, 3.0f * wallFar.g) << "the wall is not lit";
-  // The light behind the wall changes no pixel in front of it, on the glass or anywhere else.
-  EXPECT_EQ(test::psnr(both.ldr, front.ldr), INFINITY);
-  EXPECT_EQ(meanColor(both.hdr, 76, 41, 8), glassLit);
+  // The light behind the wall changes no pixel in front of it, on the glass or anywhere else (up to
+  // rounding: on a GPU the lights of a list are summed in the order atomics made it).
+  test::expectWithinBound(both.ldr, front.ldr, test::ImageBound{55.0, 1, 1.0, 1},
+                          "glass, light behind the wall");
+  const glm::vec3 glassBoth = meanColor(both.hdr, 76, 41, 8);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(glassBoth[c], glassLit[c], 1e-3f * glassLit[c]);
   // And lll gives forward's image.
   const test::Rendered reference = test::render(glassScene(true, true), settingsFor("forward", 160, 90));
-  EXPECT_GE(test::psnr(both.ldr, reference.ldr), 45.0);
+  test::expectWithinBound(both.ldr, reference.ldr, test::kSameImage, "lll glass");
 }
 
 }  // namespace
