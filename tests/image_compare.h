@@ -22,10 +22,11 @@ struct ImageBound {
 inline constexpr ImageBound kSameImage{};
 // Smoke blends many translucent layers, each rounded to fp16 in the HDR target.
 inline constexpr ImageBound kSmokeBound{40.0, 2, 0.999, 16};
-// The light pre-pass takes the colour of the Fresnel-weighted highlights from the unweighted ones
-// (shaders/lighting/prepass_combine.frag): pixels where differently coloured lights overlap on a
-// highlight move.
-inline constexpr ImageBound kPrepassBound{35.0, 8, 0.99, 32};
+// The light pre-pass is exact for non-metals; a metal's correction for its own f0 takes the colour
+// of the Fresnel-weighted highlights (shaders/lighting/prepass_combine.frag), so pixels where
+// differently coloured lights overlap on a coloured metal move: camp, all metal, at 1,024
+// coloured lights reaches 14 of 255 on lavapipe.
+inline constexpr ImageBound kPrepassBound{45.0, 2, 0.999, 24};
 
 struct ImageDifference {
   double psnr = 0.0;          // over RGB, infinity when identical

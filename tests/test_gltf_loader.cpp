@@ -215,6 +215,24 @@ TEST_F(GltfLoaderTest, LoadsQuadGeometry) {
   EXPECT_EQ(scene.materials[0].name, "Painted");
 }
 
+// TANGENT (xyz and the bitangent's handedness w) reaches the vertices; without it w is 0, which
+// tells the shaders to build the frame from derivatives; a w that is not +-1 is an error.
+TEST_F(GltfLoaderTest, TangentsAreReadAndChecked) {
+  EXPECT_EQ(loadGltf(quadScene().writeGltf(dir_, "plain")).vertices[0].tangent, glm::vec4(0.0f));
+  GltfBuilder b = quadScene();
+  const int tangent =
+      b.addAccessor<float>({1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, -1, 0, 1, 0, -1}, kFloat, "VEC4");
+  b.doc["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = tangent;
+  const Scene scene = loadGltf(b.writeGltf(dir_, "tangents"));
+  ASSERT_EQ(scene.vertices.size(), 4u);
+  EXPECT_EQ(scene.vertices[1].tangent, glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(scene.vertices[3].tangent, glm::vec4(0, 1, 0, -1));
+  const size_t w = b.accessorByteOffset[size_t(tangent)] + 3 * sizeof(float);
+  const float half = 0.5f;
+  std::memcpy(b.bin.data() + w, &half, sizeof(half));
+  expectInputError(b.writeGltf(dir_, "bad-tangent"), "TANGENT 0");
+}
+
 TEST_F(GltfLoaderTest, SecondPrimitiveIndicesAreRelativeToItsFirstVertex) {
   GltfBuilder b = quadScene();
   const int position = b.addPositions({5, 0, 0, 6, 0, 0, 5, 1, 0});

@@ -36,7 +36,14 @@ vec3 fresnelSchlick(vec3 f0, float vDotH) {
   return f0 + (1.0 - f0) * pow(1.0 - vDotH, 5.0);
 }
 
-// BRDF * cos(theta_l) for light arriving from unit direction l.
+// Dielectric specular reflectance at normal incidence (IOR 1.5), glTF's f0 for non-metals.
+const float kDielectricF0 = 0.04;
+
+// BRDF * cos(theta_l) for light arriving from unit direction l. glTF's material is
+// mix(dielectric_brdf, metal_brdf, metallic): the dielectric's diffuse is weighted by its own
+// Fresnel term (f0 = 0.04), the metal has none, and the two specular lobes blend into one with
+// f0 = mix(0.04, baseColor, metallic). Weighting the diffuse by 1 - F of that blended f0 instead
+// darkens partly metallic surfaces (0.86x the specification at metallic 0.5).
 vec3 brdfCosine(Surface s, vec3 l) {
   float nDotL = dot(s.normal, l);
   if (nDotL <= 0.0) return vec3(0.0);
@@ -45,12 +52,11 @@ vec3 brdfCosine(Surface s, vec3 l) {
   float nDotH = max(dot(s.normal, h), 0.0);
   float vDotH = clamp(dot(s.view, h), 0.0, 1.0);  // rounding can exceed 1 when l == v: pow(<0) is NaN
   float alphaRoughness = max(s.roughness * s.roughness, 1e-3);
-  vec3 f0 = mix(vec3(0.04), s.baseColor, s.metallic);
-  vec3 diffuseColor = mix(s.baseColor, vec3(0.0), s.metallic);
-  vec3 f = fresnelSchlick(f0, vDotH);
-  vec3 diffuse = (1.0 - f) * diffuseColor / kPi;
-  vec3 specular =
-      f * distributionGgx(nDotH, alphaRoughness) * visibilitySmithGgxCorrelated(nDotL, nDotV, alphaRoughness);
+  vec3 f0 = mix(vec3(kDielectricF0), s.baseColor, s.metallic);
+  float dielectricFresnel = fresnelSchlick(vec3(kDielectricF0), vDotH).x;
+  vec3 diffuse = (1.0 - s.metallic) * (1.0 - dielectricFresnel) * s.baseColor / kPi;
+  vec3 specular = fresnelSchlick(f0, vDotH) * distributionGgx(nDotH, alphaRoughness) *
+                  visibilitySmithGgxCorrelated(nDotL, nDotV, alphaRoughness);
   return (diffuse + specular) * nDotL;
 }
 

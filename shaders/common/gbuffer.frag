@@ -3,18 +3,15 @@
 // the prepass). Ambient and emission need no light, so they go straight into the accumulation
 // target, as Infinity's forward-lit "FL" channels do; the G-buffer keeps only what lighting reads.
 // Layout and decoding: common/gbuffer.glsl.
-#include "common/material.glsl"
+#include "common/mesh_fragment.glsl"
 
-layout(location = 0) in vec3 inWorldPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
 layout(location = 0) out vec4 outAccumulation;
 layout(location = 1) out vec4 outGbuffer0;
 layout(location = 2) out vec4 outGbuffer1;
 
 void main() {
   GpuMaterial m = materials[draw.ids.x];
-  Surface s = sampleSurface(m, inWorldPosition, inNormal, inUv, gl_FrontFacing);
+  Surface s = surfaceAtFragment(m);
   if (m.flags.x == kAlphaMask && s.alpha < m.alpha.x) discard;
   outAccumulation = vec4(ambientAndEmissive(s), 1.0);
   outGbuffer0 = vec4(s.baseColor, s.metallic);

@@ -1,6 +1,6 @@
 // Material sampling for mesh passes: textures in set 1 (neutral 1x1 textures where a material has
-// none), factors from the material buffer, normal mapping with a screen-space cotangent frame so
-// meshes need no tangents.
+// none), factors from the material buffer, normal mapping in the file's tangent frame (glTF's
+// TANGENT) or, where the mesh has none, in a frame built from screen-space derivatives.
 #ifndef LLL_MATERIAL_GLSL
 #define LLL_MATERIAL_GLSL
 #include "common/brdf.glsl"
@@ -13,34 +13,60 @@ layout(set = 1, binding = 2) uniform sampler2D normalTexture;
 layout(set = 1, binding = 3) uniform sampler2D emissiveTexture;
 layout(set = 1, binding = 4) uniform sampler2D occlusionTexture;
 
-vec3 perturbNormal(vec3 n, vec3 position, vec2 uv, vec3 tangentNormal) {
-  vec3 dp1 = dFdx(position);
-  vec3 dp2 = dFdy(position);
-  vec2 duv1 = dFdx(uv);
-  vec2 duv2 = dFdy(uv);
-  vec3 dp2perp = cross(dp2, n);
-  vec3 dp1perp = cross(n, dp1);
-  vec3 t = dp2perp * duv1.x + dp1perp * duv2.x;
-  vec3 b = dp2perp * duv1.y + dp1perp * duv2.y;
-  float scale = max(dot(t, t), dot(b, b));
-  if (scale <= 1e-20) return n;  // no UV variation: keep the geometric normal
-  float invmax = inversesqrt(scale);
-  return normalize(mat3(t * invmax, b * invmax, n) * tangentNormal);
+// The tangent frame where the file gives none: T along grad(u) and B along -grad(v) in the plane of
+// n (glTF's bitangent: texture v runs down the image, the normal map's green up), from the
+// screen-space derivatives. grad(u) solves dot(g, dp/dx) = du/dx, dot(g, dp/dy) = du/dy; the
+// cross products below give it times the determinant n . (dp/dx x dp/dy), whose sign depends on
+// which way the framebuffer's y points (down in Vulkan with lll's projection), so it is divided
+// out. T and B keep their relative lengths (a cotangent frame); the caller normalizes the result.
+// False where the UVs do not vary across the pixel.
+bool derivativeTangentFrame(vec3 n, vec3 position, vec2 uv, out vec3 t, out vec3 b) {
+  vec3 dpx = dFdx(position), dpy = dFdy(position);
+  vec2 duvx = dFdx(uv), duvy = dFdy(uv);
+  vec3 dpyPerp = cross(dpy, n), dpxPerp = cross(n, dpx);
+  vec3 gradU = dpyPerp * duvx.x + dpxPerp * duvy.x;
+  vec3 gradV = dpyPerp * duvx.y + dpxPerp * duvy.y;
+  float determinantSign = dot(dpx, dpyPerp) < 0.0 ? -1.0 : 1.0;
+  float scale = max(dot(gradU, gradU), dot(gradV, gradV));
+  t = vec3(0.0);
+  b = vec3(0.0);
+  if (!(scale > 1e-20)) return false;
+  float unit = determinantSign * inversesqrt(scale);
+  t = gradU * unit;
+  b = -gradV * unit;
+  return true;
+}
+
+// The shading normal from the material's normal map, for a surface whose front-facing geometric
+// normal is `n`. `tangent` is glTF's (w = 0 when the mesh has none).
+vec3 perturbNormal(GpuMaterial m, vec3 n, vec3 position, vec2 uv, vec4 tangent) {
+  // No normal map: the default 1x1 texel (128, 128, 255) would decode to (1/255, 1/255, 1), a
+  // 0.32 degree tilt of every surface.
+  if ((m.flags.z & kMaterialNormalTexture) == 0u) return n;
+  vec3 t, b;
+  if (tangent.w != 0.0 && dot(tangent.xyz, tangent.xyz) > 0.0) {
+    t = normalize(tangent.xyz - n * dot(n, tangent.xyz));  // interpolation bends it off the plane
+    b = cross(n, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
+  } else if (!derivativeTangentFrame(n, position, uv, t, b)) {
+    return n;  // no UV variation: keep the geometric normal
+  }
+  vec3 tangentNormal = texture(normalTexture, uv).xyz * 2.0 - 1.0;
+  tangentNormal.xy *= m.params.z;
+  return normalize(mat3(t, b, n) * tangentNormal);
 }
 
 float materialAlpha(GpuMaterial m, vec2 uv) {
   return m.baseColorFactor.a * texture(baseColorTexture, uv).a;
 }
 
-Surface sampleSurface(GpuMaterial m, vec3 position, vec3 normal, vec2 uv, bool frontFacing) {
+Surface sampleSurface(GpuMaterial m, vec3 position, vec3 normal, vec4 tangent, vec2 uv, bool frontFacing) {
   Surface s;
   s.position = position;
   s.view = normalize(frame.cameraPosition.xyz - position);
-  vec3 n = normalize(normal);
-  if (!frontFacing) n = -n;
-  vec3 tangentNormal = texture(normalTexture, uv).xyz * 2.0 - 1.0;
-  tangentNormal.xy *= m.params.z;
-  s.normal = perturbNormal(n, position, uv, normalize(tangentNormal));
+  // A back face (double-sided material) turns its whole tangent frame: its normal is the front's
+  // perturbed normal reversed.
+  s.normal = perturbNormal(m, normalize(normal), position, uv, tangent);
+  if (!frontFacing) s.normal = -s.normal;
   vec4 base = m.baseColorFactor * texture(baseColorTexture, uv);
   s.baseColor = base.rgb;
   s.alpha = base.a;

@@ -1,15 +1,12 @@
 #version 460
 // Brute-force forward shading: every pixel evaluates every light. The reference for all techniques.
-#include "common/material.glsl"
+#include "common/mesh_fragment.glsl"
 
-layout(location = 0) in vec3 inWorldPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 
 void main() {
   GpuMaterial m = materials[draw.ids.x];
-  Surface s = sampleSurface(m, inWorldPosition, inNormal, inUv, gl_FrontFacing);
+  Surface s = surfaceAtFragment(m);
   if (m.flags.x == kAlphaMask && s.alpha < m.alpha.x) discard;
   vec3 color = ambientAndEmissive(s);
   uint lightCount = frame.counts.x;

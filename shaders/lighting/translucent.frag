@@ -3,18 +3,15 @@
 // buffers, which hold one surface per pixel and so cannot light what lies over it.
 // kDynamicLights false: ambient and emission only, the deferred renderer's unlit glass (the
 // seeds' Figure 1.1); true: the separate forward pass engines add to fix it, every light per pixel.
-#include "common/material.glsl"
+#include "common/mesh_fragment.glsl"
 
 layout(constant_id = 0) const bool kDynamicLights = true;
 
-layout(location = 0) in vec3 inWorldPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 
 void main() {
   GpuMaterial m = materials[draw.ids.x];
-  Surface s = sampleSurface(m, inWorldPosition, inNormal, inUv, gl_FrontFacing);
+  Surface s = surfaceAtFragment(m);
   vec3 color = ambientAndEmissive(s);
   if (kDynamicLights) {
     uint lightCount = frame.counts.x;

@@ -38,7 +38,7 @@ struct GpuMaterial {
   vec4 baseColorFactor;
   vec4 emissive;  // rgb emissive factor * KHR_materials_emissive_strength, w unused
   vec4 params;    // x metallic, y roughness, z normal scale, w occlusion strength
-  uvec4 flags;    // x alpha mode, y double sided, z texture mask (bit per MaterialTexture), w unused
+  uvec4 flags;    // x alpha mode, y double sided, z kMaterial*Texture bits, w unused
   vec4 alpha;     // x alpha cutoff, yzw unused
 };
 LLL_CHECK_SIZE(GpuMaterial, 80);

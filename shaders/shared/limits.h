@@ -30,6 +30,8 @@ LLL_CONST(uint, kLightBox, 2u);
 LLL_CONST(uint, kAlphaOpaque, 0u);
 LLL_CONST(uint, kAlphaMask, 1u);
 LLL_CONST(uint, kAlphaBlend, 2u);
+// GpuMaterial.flags.z bits: which of the material's textures the file gave.
+LLL_CONST(uint, kMaterialNormalTexture, 1u);
 
 // FrameUniforms.display.x: how the tonemap pass treats the HDR image.
 LLL_CONST(uint, kDisplayFilmic, 0u);

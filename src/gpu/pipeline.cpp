@@ -121,13 +121,14 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
       {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
+      {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
   };
   VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   if (desc.vertexInput != VertexInput::None) {
     const bool mesh = desc.vertexInput == VertexInput::Mesh;
     vertexInput.vertexBindingDescriptionCount = 1;
     vertexInput.pVertexBindingDescriptions = mesh ? &meshBinding : &positionBinding;
-    vertexInput.vertexAttributeDescriptionCount = mesh ? 3 : 1;
+    vertexInput.vertexAttributeDescriptionCount = mesh ? 4 : 1;
     vertexInput.pVertexAttributeDescriptions = attributes;
   }
   VkPipelineInputAssemblyStateCreateInfo inputAssembly{

@@ -1,6 +1,7 @@
 // Technique "prepass": Resistance 2's light pre-pass (seeds/resistance2-prelighting.txt).
 //   prepass-normals      depth again, into a depth-stencil target, and view-space normals with
-//                        roughness (the seed's step 1: written with the early depth pass)
+//                        roughness and metallic (the seed's step 1: written with the early depth
+//                        pass)
 //   prepass-lights       every visible light into a diffuse and a specular buffer: a stencil volume
 //                        marks its pixels (z-pass; z-fail when the camera may be inside), then its
 //                        back faces shade where the stencil is set and clear it; lights covering
@@ -20,7 +21,7 @@ namespace lll {
 
 namespace {
 
-constexpr VkFormat kNormalFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kNormalFormat = VK_FORMAT_R32G32_UINT;  // lighting/prepass_terms.glsl
 constexpr VkFormat kLightBufferFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 constexpr double kNormalBytesPerPixel = 8;
 constexpr double kLightBufferBytesPerPixel = 8 + 8;

@@ -137,7 +137,8 @@ void GpuScene::uploadMaterials() {
     g.baseColorFactor = m.baseColorFactor;
     g.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
     g.params = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
-    g.flags = glm::uvec4(uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, 0u, 0u);
+    const uint32_t textures = m.normalTexture >= 0 ? gpu::kMaterialNormalTexture : 0u;
+    g.flags = glm::uvec4(uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, textures, 0u);
     g.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
     materials.push_back(g);
   }

@@ -481,9 +481,12 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
   }
   std::vector<float> normals;
   std::vector<float> uvs;
+  std::vector<float> tangents;
   for (const auto& [attribute, accessor] : primitive.attributes) {
     if (attribute == "NORMAL") {
       normals = readAccessor<float>(accessor, where + " NORMAL", TINYGLTF_TYPE_VEC3, Components::Float);
+    } else if (attribute == "TANGENT") {
+      tangents = readAccessor<float>(accessor, where + " TANGENT", TINYGLTF_TYPE_VEC4, Components::Float);
     } else if (attribute == "TEXCOORD_0") {
       uvs = readAccessor<float>(accessor, where + " TEXCOORD_0", TINYGLTF_TYPE_VEC2,
                                 Components::FloatOrNormalizedUnsigned);
@@ -492,9 +495,20 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
     }
   }
   if ((!normals.empty() && normals.size() / 3 != vertexCount) ||
-      (!uvs.empty() && uvs.size() / 2 != vertexCount)) {
-    fail(where + " has NORMAL or TEXCOORD_0 with a different count than POSITION (" +
+      (!uvs.empty() && uvs.size() / 2 != vertexCount) ||
+      (!tangents.empty() && tangents.size() / 4 != vertexCount)) {
+    fail(where + " has NORMAL, TANGENT or TEXCOORD_0 with a different count than POSITION (" +
          std::to_string(vertexCount) + "); all attributes of a primitive must have the same count");
+  }
+  // glTF: tangents are ignored where normals are not given (flat shading builds its own frame).
+  if (normals.empty()) tangents.clear();
+  for (size_t i = 0; i < tangents.size(); i += 4) {
+    const glm::vec4 t = glm::make_vec4(&tangents[i]);
+    if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z) ||
+        std::abs(std::abs(t.w) - 1.0f) > 1e-3f)
+      fail(where + " has TANGENT " + std::to_string(i / 4) + " = (" + std::to_string(t.x) + ", " +
+           std::to_string(t.y) + ", " + std::to_string(t.z) + ", " + std::to_string(t.w) +
+           "); glTF needs a finite xyz and w = 1 or -1 (the bitangent's handedness)");
   }
   if (!primitive.targets.empty()) hasMorphTargets_ = true;
 
@@ -534,6 +548,7 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
     v.position = glm::make_vec3(&positions[size_t(i) * 3]);
     if (!normals.empty()) v.normal = glm::make_vec3(&normals[size_t(i) * 3]);
     if (!uvs.empty()) v.uv = glm::make_vec2(&uvs[size_t(i) * 2]);
+    if (!tangents.empty()) v.tangent = glm::make_vec4(&tangents[size_t(i) * 4]);
     return v;
   };
   if (!normals.empty()) {
@@ -755,7 +770,7 @@ void GltfImporter::addCamera(int cameraIndex, int nodeIndex, const glm::dmat4& w
 void GltfImporter::warnAboutIgnoredData() {
   if (!ignoredAttributes_.empty()) {
     warn("vertex attribute(s) " + describeList(ignoredAttributes_) +
-         " are ignored; only POSITION, NORMAL and TEXCOORD_0 are used");
+         " are ignored; only POSITION, NORMAL, TANGENT and TEXCOORD_0 are used");
   }
   if (usesOtherTexCoords_)
     warn("some textures use a texCoord other than 0; TEXCOORD_0 is used for all of them");

@@ -15,8 +15,11 @@ struct Vertex {
   glm::vec3 position;
   glm::vec3 normal;
   glm::vec2 uv;
+  // glTF's TANGENT: xyz the unit tangent (along +u), w the bitangent's handedness (+1 or -1);
+  // w = 0 where the file gives none, and shaders build the frame from screen derivatives.
+  glm::vec4 tangent{0.0f};
 };
-static_assert(sizeof(Vertex) == 32);
+static_assert(sizeof(Vertex) == 48);
 
 enum class AlphaMode : uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
 

@@ -1,19 +1,16 @@
 #version 460
 // Shading with the light linked list on the geometry: each fragment walks its tile's list. Used for
 // glass (blended, at its own depth) always, and for opaque surfaces with --lll-shade fragment.
-#include "common/material.glsl"
+#include "common/mesh_fragment.glsl"
 #include "lighting/lll/shade.glsl"
 
-layout(location = 0) in vec3 inWorldPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 // No depth writes and no side effects: shade only what the prepass left visible.
 layout(early_fragment_tests) in;
 
 void main() {
   GpuMaterial m = materials[draw.ids.x];
-  Surface s = sampleSurface(m, inWorldPosition, inNormal, inUv, gl_FrontFacing);
+  Surface s = surfaceAtFragment(m);
   if (m.flags.x == kAlphaMask && s.alpha < m.alpha.x) discard;
   bool opaque;
   vec3 color =

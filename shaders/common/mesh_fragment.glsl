@@ -1,0 +1,16 @@
+// The fragment stage of a mesh pass: what common/mesh.vert interpolates, and the material's surface
+// at the fragment.
+#ifndef LLL_MESH_FRAGMENT_GLSL
+#define LLL_MESH_FRAGMENT_GLSL
+#include "common/material.glsl"
+
+layout(location = 0) in vec3 inWorldPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inTangent;
+
+Surface surfaceAtFragment(GpuMaterial m) {
+  return sampleSurface(m, inWorldPosition, inNormal, inTangent, inUv, gl_FrontFacing);
+}
+
+#endif
