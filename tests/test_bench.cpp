@@ -172,17 +172,22 @@ std::map<std::string, size_t> checkCsv(const fs::path& path, const Context& cont
   std::getline(in, line);
   EXPECT_EQ(line,
             "suite,scenario,scene,lights,width,height,technique,fill,tile,pass,median_ms,min_ms,max_ms,"
-            "memory_bytes,device,driver,commit,date");
+            "memory_bytes,psnr_vs_forward_db,p999_vs_forward,max_vs_forward,device,driver,commit,date");
   std::map<std::string, size_t> rows;
   while (std::getline(in, line)) {
     const auto f = csvFields(line);
-    EXPECT_EQ(f.size(), 18u) << line;
-    if (f.size() != 18) continue;
+    EXPECT_EQ(f.size(), 21u) << line;
+    if (f.size() != 21) continue;
     const double median = std::stod(f[10]), min = std::stod(f[11]), max = std::stod(f[12]);
     EXPECT_TRUE(std::isfinite(median) && min > 0.0 && min <= median && median <= max) << line;
     EXPECT_GE(std::stod(f[13]), 4.0 * std::stod(f[4]) * std::stod(f[5])) << "memory holds the depth";
-    EXPECT_EQ(f[14], context.info().name);
-    EXPECT_EQ(f[16], gitCommit());
+    // Every technique but forward itself is compared with forward's frame of the same scenario.
+    if (f[6] == "forward")
+      EXPECT_EQ(f[14], "") << line;
+    else
+      EXPECT_GE(std::stod(f[14]), 45.0) << line;
+    EXPECT_EQ(f[17], context.info().name);
+    EXPECT_EQ(f[19], gitCommit());
     ++rows[f[1] + "|" + f[6] + "|" + f[7]];
   }
   return rows;
@@ -226,11 +231,20 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
     EXPECT_FALSE(r["date"].get<std::string>().empty());
     if (r["status"] == "ok") {
       EXPECT_GE(r["memory"]["depth_bytes"].get<double>(), 4.0 * 32 * 18);
+      // Every technique but forward is compared with forward's frame of the same scenario.
+      if (r["technique"] == "forward") {
+        EXPECT_TRUE(r["vs_forward"].is_null());
+        continue;
+      }
+      ASSERT_TRUE(r["vs_forward"].is_object()) << r["label"];
+      if (r["vs_forward"]["psnr_db"].is_number()) EXPECT_GE(r["vs_forward"]["psnr_db"].get<double>(), 45.0);
+      EXPECT_LE(r["vs_forward"]["max"].get<int>(), 16) << r["label"];
     }
   }
   const std::string summary = readText(dir / "summary.md");
   EXPECT_NE(summary.find(context.info().name), std::string::npos);
   EXPECT_NE(summary.find("| forward |"), std::string::npos);
+  EXPECT_NE(summary.find("Image against forward's frame"), std::string::npos);
   if (gnuplotInstalled()) expectPng(dir / "threel.png");
   const auto messages = context.validationMessages();
   for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];

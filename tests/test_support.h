@@ -3,7 +3,7 @@
 // (auto | gpu | cpu | INDEX as `--device`; default cpu, lavapipe, so CI and a GPU machine run the
 // same thing unless asked), validation on when LLL_TEST_VALIDATION is set (ctest sets it; it
 // includes synchronization validation, and GPU-assisted validation with LLL_TEST_GPU_ASSISTED),
-// and helpers to render a scene and compare images (image_compare.h).
+// and helpers to render a scene and compare images (image_bound.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@
 #include <string>
 
 #include "gpu/context.h"
-#include "image_compare.h"
+#include "image_bound.h"
 #include "render/renderer.h"
 
 namespace lll::test {

@@ -13,20 +13,25 @@ layout(set = 1, binding = 2) uniform sampler2D normalTexture;
 layout(set = 1, binding = 3) uniform sampler2D emissiveTexture;
 layout(set = 1, binding = 4) uniform sampler2D occlusionTexture;
 
+// Screen-space derivatives of the surface at the fragment. Taken before any branch: derivatives
+// (and implicit-LOD texture reads) are undefined in control flow that differs across a 2x2 quad.
+struct SurfaceDerivatives {
+  vec3 dpx, dpy;
+  vec2 duvx, duvy;
+};
+
 // The tangent frame where the file gives none: T along grad(u) and B along -grad(v) in the plane of
-// n (glTF's bitangent: texture v runs down the image, the normal map's green up), from the
-// screen-space derivatives. grad(u) solves dot(g, dp/dx) = du/dx, dot(g, dp/dy) = du/dy; the
-// cross products below give it times the determinant n . (dp/dx x dp/dy), whose sign depends on
-// which way the framebuffer's y points (down in Vulkan with lll's projection), so it is divided
-// out. T and B keep their relative lengths (a cotangent frame); the caller normalizes the result.
-// False where the UVs do not vary across the pixel.
-bool derivativeTangentFrame(vec3 n, vec3 position, vec2 uv, out vec3 t, out vec3 b) {
-  vec3 dpx = dFdx(position), dpy = dFdy(position);
-  vec2 duvx = dFdx(uv), duvy = dFdy(uv);
-  vec3 dpyPerp = cross(dpy, n), dpxPerp = cross(n, dpx);
-  vec3 gradU = dpyPerp * duvx.x + dpxPerp * duvy.x;
-  vec3 gradV = dpyPerp * duvx.y + dpxPerp * duvy.y;
-  float determinantSign = dot(dpx, dpyPerp) < 0.0 ? -1.0 : 1.0;
+// n (glTF's bitangent: texture v runs down the image, the normal map's green up). grad(u) solves
+// dot(g, dp/dx) = du/dx, dot(g, dp/dy) = du/dy; the cross products below give it times the
+// determinant n . (dp/dx x dp/dy), whose sign depends on which way the framebuffer's y points
+// (down in Vulkan with lll's projection), so it is divided out. T and B keep their relative
+// lengths (a cotangent frame); the caller normalizes the result. False where the UVs do not vary
+// across the pixel.
+bool derivativeTangentFrame(vec3 n, SurfaceDerivatives d, out vec3 t, out vec3 b) {
+  vec3 dpyPerp = cross(d.dpy, n), dpxPerp = cross(n, d.dpx);
+  vec3 gradU = dpyPerp * d.duvx.x + dpxPerp * d.duvy.x;
+  vec3 gradV = dpyPerp * d.duvx.y + dpxPerp * d.duvy.y;
+  float determinantSign = dot(d.dpx, dpyPerp) < 0.0 ? -1.0 : 1.0;
   float scale = max(dot(gradU, gradU), dot(gradV, gradV));
   t = vec3(0.0);
   b = vec3(0.0);
@@ -37,9 +42,9 @@ bool derivativeTangentFrame(vec3 n, vec3 position, vec2 uv, out vec3 t, out vec3
   return true;
 }
 
-// The shading normal from the material's normal map, for a surface whose front-facing geometric
-// normal is `n`. `tangent` is glTF's (w = 0 when the mesh has none).
-vec3 perturbNormal(GpuMaterial m, vec3 n, vec3 position, vec2 uv, vec4 tangent) {
+// The shading normal for a surface whose front-facing geometric normal is `n`, given the normal
+// map's texel (`mapped`, 0..1). `tangent` is glTF's (w = 0 when the mesh has none).
+vec3 perturbNormal(GpuMaterial m, vec3 n, vec3 mapped, vec4 tangent, SurfaceDerivatives d) {
   // No normal map: the default 1x1 texel (128, 128, 255) would decode to (1/255, 1/255, 1), a
   // 0.32 degree tilt of every surface.
   if ((m.flags.z & kMaterialNormalTexture) == 0u) return n;
@@ -47,10 +52,10 @@ vec3 perturbNormal(GpuMaterial m, vec3 n, vec3 position, vec2 uv, vec4 tangent) 
   if (tangent.w != 0.0 && dot(tangent.xyz, tangent.xyz) > 0.0) {
     t = normalize(tangent.xyz - n * dot(n, tangent.xyz));  // interpolation bends it off the plane
     b = cross(n, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
-  } else if (!derivativeTangentFrame(n, position, uv, t, b)) {
+  } else if (!derivativeTangentFrame(n, d, t, b)) {
     return n;  // no UV variation: keep the geometric normal
   }
-  vec3 tangentNormal = texture(normalTexture, uv).xyz * 2.0 - 1.0;
+  vec3 tangentNormal = mapped * 2.0 - 1.0;
   tangentNormal.xy *= m.params.z;
   return normalize(mat3(t, b, n) * tangentNormal);
 }
@@ -60,12 +65,14 @@ float materialAlpha(GpuMaterial m, vec2 uv) {
 }
 
 Surface sampleSurface(GpuMaterial m, vec3 position, vec3 normal, vec4 tangent, vec2 uv, bool frontFacing) {
+  SurfaceDerivatives d = SurfaceDerivatives(dFdx(position), dFdy(position), dFdx(uv), dFdy(uv));
+  vec3 mapped = texture(normalTexture, uv).xyz;
   Surface s;
   s.position = position;
   s.view = normalize(frame.cameraPosition.xyz - position);
   // A back face (double-sided material) turns its whole tangent frame: its normal is the front's
   // perturbed normal reversed.
-  s.normal = perturbNormal(m, normalize(normal), position, uv, tangent);
+  s.normal = perturbNormal(m, normalize(normal), mapped, tangent, d);
   if (!frontFacing) s.normal = -s.normal;
   vec4 base = m.baseColorFactor * texture(baseColorTexture, uv);
   s.baseColor = base.rgb;

@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <map>
 #include <optional>
 
 #include "bench/progress.h"
@@ -71,8 +72,16 @@ NamedValues lightingMemory(const RenderSettings& settings, const NamedValues& te
   return memory;
 }
 
-ScenarioResult measure(Context& context, const Scene& scene, const Scenario& s, FrameCounts counts) {
-  ScenarioResult r;
+// A scenario's result and the frame it rendered after the timed ones (for the comparison with
+// forward's).
+struct Measured {
+  ScenarioResult result;
+  LdrImage image;
+};
+
+Measured measure(Context& context, const Scene& scene, const Scenario& s, FrameCounts counts) {
+  Measured m;
+  ScenarioResult& r = m.result;
   r.scenario = s;
   r.lightCount = scene.lights.size();
   Renderer renderer(context, scene, s.settings);
@@ -88,16 +97,19 @@ ScenarioResult measure(Context& context, const Scene& scene, const Scenario& s, 
   for (const FrameResult& frame : timed) r.rerenders += frame.rerenders;
   r.techniqueStats = renderer.stats();
   r.memory = lightingMemory(s.settings, r.techniqueStats);
-  return r;
+  renderer.renderFrame(true);  // untimed: the image every technique's is compared on
+  m.image = renderer.ldrImage();
+  return m;
 }
 
-ScenarioResult runScenario(Context& context, SceneCache& scenes, const Scenario& s, FrameCounts counts) {
-  ScenarioResult r;
+Measured runScenario(Context& context, SceneCache& scenes, const Scenario& s, FrameCounts counts) {
+  Measured m;
+  ScenarioResult& r = m.result;
   r.scenario = s;
   try {
     if (!s.skip.empty()) throw NotAvailable(s.skip);
     requireRegistered(s.settings.technique);
-    r = measure(context, scenes.get(s.scene), s, counts);
+    m = measure(context, scenes.get(s.scene), s, counts);
   } catch (const NotAvailable& e) {
     r.status = Status::Skipped;
     r.message = e.what();
@@ -109,8 +121,40 @@ ScenarioResult runScenario(Context& context, SceneCache& scenes, const Scenario&
     r.message = e.what();
   }
   r.date = isoDate();
-  return r;
+  return m;
 }
+
+// Pairs each technique's frame with forward's frame of the same scenario, whichever ran first:
+// forward's frames are kept for the rest of the run, the others only until forward's arrives.
+class ForwardComparisons {
+ public:
+  void add(BenchReport& report, size_t index, LdrImage image) {
+    const ScenarioResult& r = report.results[index];
+    if (r.status != Status::Ok) return;
+    const std::string key = r.scenario.suite + '\n' + r.scenario.name;
+    if (r.scenario.settings.technique != "forward") {
+      const auto forward = forward_.find(key);
+      if (forward != forward_.end())
+        compare(report.results[index], image, forward->second);
+      else
+        waiting_[key].emplace_back(index, std::move(image));
+      return;
+    }
+    for (auto& [waitingIndex, waitingImage] : waiting_[key])
+      compare(report.results[waitingIndex], waitingImage, image);
+    waiting_.erase(key);
+    forward_[key] = std::move(image);
+  }
+
+ private:
+  static void compare(ScenarioResult& r, const LdrImage& image, const LdrImage& forward) {
+    if (image.width == forward.width && image.height == forward.height)
+      r.vsForward = compareImages(image, forward);
+  }
+
+  std::map<std::string, LdrImage> forward_;
+  std::map<std::string, std::vector<std::pair<size_t, LdrImage>>> waiting_;
+};
 
 // The suites asked for, each once, in the order given; every suite when none is named.
 std::vector<std::string> chosenSuites(const BenchOptions& options) {
@@ -191,12 +235,15 @@ BenchReport runBench(Context& context, const BenchOptions& options) {
   const std::vector<Scenario> scenarios = chosenScenarios(report, suiteOptions);
   const FrameCounts counts{report.warmupFrames, report.timedFrames};
   SceneCache scenes;
+  ForwardComparisons comparisons;
   ProgressBar progress(scenarios.size());
   for (size_t i = 0; i < scenarios.size(); ++i) {
     const Scenario& s = scenarios[i];
     const std::string label = fmt::format("{} {} {}", s.suite, techniqueLabel(s.settings), s.name);
     progress.start(i, label);
-    report.results.push_back(runScenario(context, scenes, s, counts));
+    Measured measured = runScenario(context, scenes, s, counts);
+    report.results.push_back(std::move(measured.result));
+    comparisons.add(report, report.results.size() - 1, std::move(measured.image));
     const ScenarioResult& r = report.results.back();
     if (r.status != Status::Ok)
       progress.note(fmt::format("lll: bench: {} {}: {}", label, statusName(r.status), r.message));

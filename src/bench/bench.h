@@ -10,6 +10,7 @@
 
 #include "bench/scenario.h"
 #include "gpu/context.h"
+#include "render/image_compare.h"
 #include "render/stats.h"
 
 namespace lll::bench {
@@ -48,6 +49,10 @@ struct ScenarioResult {
   NamedValues techniqueStats;       // everything Technique::stats() reported
   uint32_t rerenders = 0;           // over the timed frames
   std::string date;                 // when it finished, ISO 8601 UTC
+  // The frame after the timed ones against forward's frame of the same scenario (same scene,
+  // size, camera and particle step), when forward ran in the suite: a fast but wrong technique
+  // shows here.
+  std::optional<ImageDifference> vsForward;
 
   double memoryBytes() const;
   // The named pass, or nullptr when the scenario has none of that name.

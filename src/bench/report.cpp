@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -59,6 +60,12 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
   j["memory"] = namedValues(r.memory);
   j["technique_stats"] = namedValues(r.techniqueStats);
   j["rerenders"] = r.rerenders;
+  j["vs_forward"] = nullptr;
+  if (r.vsForward)
+    j["vs_forward"] = {{"psnr_db", std::isinf(r.vsForward->psnr) ? nlohmann::json("inf")
+                                                                 : nlohmann::json(r.vsForward->psnr)},
+                       {"p999", r.vsForward->p999},
+                       {"max", r.vsForward->worst}};
   return j;
 }
 
@@ -112,16 +119,19 @@ void writeResultsJson(const BenchReport& report, const std::filesystem::path& pa
 void writeResultsCsv(const BenchReport& report, const std::filesystem::path& path) {
   std::ofstream out = openForWriting(path);
   out << "suite,scenario,scene,lights,width,height,technique,fill,tile,pass,median_ms,min_ms,max_ms,"
-         "memory_bytes,device,driver,commit,date\n";
+         "memory_bytes,psnr_vs_forward_db,p999_vs_forward,max_vs_forward,device,driver,commit,date\n";
   for (const ScenarioResult& r : report.results) {
     const Scenario& s = r.scenario;
     const std::string fill = lllVariant(s.settings);  // "compute/fragment-shade" for fragment shading
+    const std::string vsForward =
+        r.vsForward ? fmt::format("{:.2f},{},{}", r.vsForward->psnr, r.vsForward->p999, r.vsForward->worst)
+                    : ",,";
     for (const PassSummary& p : r.passes)
-      out << fmt::format("{},{},{},{},{},{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.0f},{},{},{},{}\n", s.suite,
-                         csvField(s.name), csvField(s.scene.scene), r.lightCount, s.settings.width,
+      out << fmt::format("{},{},{},{},{},{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.0f},{},{},{},{},{}\n",
+                         s.suite, csvField(s.name), csvField(s.scene.scene), r.lightCount, s.settings.width,
                          s.settings.height, s.settings.technique, fill, s.settings.tileSize, csvField(p.name),
-                         p.medianMs, p.minMs, p.maxMs, r.memoryBytes(), csvField(report.device.name),
-                         csvField(report.device.driver), report.commit, r.date);
+                         p.medianMs, p.minMs, p.maxMs, r.memoryBytes(), vsForward,
+                         csvField(report.device.name), csvField(report.device.driver), report.commit, r.date);
   }
 }
 

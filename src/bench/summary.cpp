@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -125,12 +126,31 @@ std::string overdrawTable(const Results& results) {
          pivot(volumes, overdrawCell);
 }
 
+// The frame against forward's of the same scenario: PSNR and the largest pixel difference.
+std::string forwardCell(const ScenarioResult& r) {
+  if (!r.vsForward) return "";
+  return fmt::format("{} ({})",
+                     std::isinf(r.vsForward->psnr) ? "identical" : fmt::format("{:.1f}", r.vsForward->psnr),
+                     r.vsForward->worst);
+}
+
+std::string forwardTable(const Results& results) {
+  Results compared;
+  for (const ScenarioResult* r : results)
+    if (r->vsForward && r->scenario.settings.technique != "forward") compared.push_back(r);
+  if (compared.empty()) return "";
+  return "\nImage against forward's frame of the same scenario: PSNR, dB (largest pixel difference of "
+         "255)\n\n" +
+         pivot(compared, forwardCell);
+}
+
 std::string suiteSection(const std::string& suite, const Results& results, uint32_t frames) {
   std::string md = fmt::format("## {}\n\n", suite);
   md += fmt::format("Frame time, ms: median of {} timed frames (min–max)\n\n", frames) +
         pivot(results, frameCell);
   md += "\nGPU memory of the lighting data, MiB (depth + the technique's buffers)\n\n" +
         pivot(results, memoryCell);
+  md += forwardTable(results);
   md += overdrawTable(results);
   md += "\nPer-pass GPU time, ms (median)\n\n" + passTable(results);
   const std::string skipped = notRun(results);

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <string>
 
+#include "render/image_compare.h"
 #include "render/renderer.h"
 
 namespace lll::test {
@@ -27,17 +28,6 @@ inline constexpr ImageBound kSmokeBound{40.0, 2, 0.999, 16};
 // differently coloured lights overlap on a coloured metal move: camp, all metal, at 1,024
 // coloured lights reaches 14 of 255 on lavapipe.
 inline constexpr ImageBound kPrepassBound{45.0, 2, 0.999, 24};
-
-struct ImageDifference {
-  double psnr = 0.0;          // over RGB, infinity when identical
-  int worst = 0;              // largest difference of any pixel
-  int p999 = 0;               // 99.9th percentile of the per-pixel differences
-  double typicalShare = 0.0;  // share of pixels within the bound's `typical`
-  size_t worstX = 0, worstY = 0;
-  size_t pixels = 0;
-};
-
-ImageDifference compareImages(const LdrImage& candidate, const LdrImage& reference, int typical = 2);
 
 // Compares and fails the current test where the candidate leaves `bound`; prints and records the
 // numbers and appends them to the CSV file $LLL_TEST_IMAGE_REPORT when that is set (how the GPU

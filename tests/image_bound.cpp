@@ -1,4 +1,4 @@
-#include "image_compare.h"
+#include "image_bound.h"
 
 #include <gtest/gtest.h>
 
@@ -12,41 +12,6 @@
 #include "test_support.h"
 
 namespace lll::test {
-
-ImageDifference compareImages(const LdrImage& candidate, const LdrImage& reference, int typical) {
-  EXPECT_EQ(candidate.width, reference.width);
-  EXPECT_EQ(candidate.height, reference.height);
-  ImageDifference d;
-  const size_t pixels = std::min(candidate.rgba.size(), reference.rgba.size()) / 4;
-  std::vector<int> perPixel(pixels);
-  double squares = 0.0;
-  size_t within = 0;
-  for (size_t i = 0; i < pixels; ++i) {
-    int largest = 0;
-    for (size_t c = 0; c < 3; ++c) {
-      const int diff = std::abs(int(candidate.rgba[i * 4 + c]) - int(reference.rgba[i * 4 + c]));
-      squares += double(diff) * diff;
-      largest = std::max(largest, diff);
-    }
-    perPixel[i] = largest;
-    if (largest <= typical) ++within;
-    if (largest > d.worst) {
-      d.worst = largest;
-      d.worstX = i % std::max(candidate.width, 1u);
-      d.worstY = i / std::max(candidate.width, 1u);
-    }
-  }
-  d.pixels = pixels;
-  const double mse = squares / double(std::max<size_t>(pixels * 3, 1));
-  d.psnr = mse == 0.0 ? INFINITY : 10.0 * std::log10(255.0 * 255.0 / mse);
-  d.typicalShare = double(within) / double(std::max<size_t>(pixels, 1));
-  if (pixels > 0) {
-    const size_t rank = std::min(pixels - 1, size_t(std::ceil(0.999 * double(pixels))) - 1);
-    std::nth_element(perPixel.begin(), perPixel.begin() + long(rank), perPixel.end());
-    d.p999 = perPixel[rank];
-  }
-  return d;
-}
 
 namespace {
 
@@ -71,6 +36,8 @@ void appendToReport(const std::string& label, const ImageDifference& d, const Im
 
 ImageDifference expectWithinBound(const LdrImage& candidate, const LdrImage& reference,
                                   const ImageBound& bound, const std::string& label) {
+  EXPECT_EQ(candidate.width, reference.width) << label;
+  EXPECT_EQ(candidate.height, reference.height) << label;
   const ImageDifference d = compareImages(candidate, reference, bound.typical);
   std::printf("[ image    ] %s: %.2f dB, 99.9th percentile %d, max %d at (%zu, %zu), %.3f%% within %d\n",
               label.c_str(), d.psnr, d.p999, d.worst, d.worstX, d.worstY, 100.0 * d.typicalShare,
@@ -86,6 +53,8 @@ ImageDifference expectWithinBound(const LdrImage& candidate, const LdrImage& ref
 }
 
 double psnr(const LdrImage& a, const LdrImage& b) {
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.height, b.height);
   return compareImages(a, b).psnr;
 }
 
