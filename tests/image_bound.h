@@ -26,8 +26,8 @@ inline constexpr ImageBound kSmokeBound{40.0, 2, 0.999, 16};
 // The light pre-pass is exact for non-metals; a metal's correction for its own f0 takes the colour
 // of the Fresnel-weighted highlights (shaders/lighting/prepass_combine.frag), so pixels where
 // differently coloured lights overlap on a coloured metal move: camp, all metal, at 1,024
-// coloured lights reaches 14 of 255 on lavapipe.
-inline constexpr ImageBound kPrepassBound{45.0, 2, 0.999, 24};
+// coloured lights: 14 of 255 at worst, 99.90% of pixels within 2 (lavapipe and H200).
+inline constexpr ImageBound kPrepassBound{45.0, 2, 0.995, 24};
 
 // Compares and fails the current test where the candidate leaves `bound`; prints and records the
 // numbers and appends them to the CSV file $LLL_TEST_IMAGE_REPORT when that is set (how the GPU

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
@@ -315,6 +316,26 @@ TEST_P(Analytic, SharpHighlightUnderAStrongLight) {
   scene.lights = {light};
   const Counts c = checkAgainstFormula(scene, pm, light, GetParam());
   EXPECT_GT(c.lit, 8000);
+}
+
+// Past fp16's range: the plane right under a 10^6 cd light reflects ~2.4 x 10^5. Vulkan lets a
+// device store that in the RGBA16F target as infinity or as 65504 (lavapipe clamps); either way
+// the display shows the brightest white. The filmic curve of infinity would be Inf / Inf, a NaN,
+// and a black pixel.
+TEST(AnalyticDisplay, OverflowedRadianceShowsWhite) {
+  Scene scene = planeScene();
+  scene.lights = {pointLight({0.0f, 1.0f, 0.0f}, 1e6f, 30.0f)};
+  RenderSettings settings;
+  settings.width = 96;
+  settings.height = 96;
+  const test::Rendered out = test::render(scene, settings);
+  size_t overflowed = 0;
+  for (size_t i = 0; i < out.hdr.rgba.size(); i += 4) {
+    if (!(out.hdr.rgba[i] >= 65504.0f)) continue;  // infinity or the largest finite half
+    ++overflowed;
+    EXPECT_EQ(out.ldr.rgba[i], 255) << "pixel " << i / 4;
+  }
+  EXPECT_GT(overflowed, 0u) << "nothing reached fp16's limit: the test checks nothing";
 }
 
 INSTANTIATE_TEST_SUITE_P(ShadingPaths, Analytic, ::testing::ValuesIn(kShadingPaths),

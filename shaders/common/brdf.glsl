@@ -18,6 +18,12 @@ struct Surface {
   vec3 emissive;
 };
 
+// normalize(l + v), defined also where l = -v exactly (grazing light and view, opposite).
+vec3 halfVector(vec3 l, vec3 v) {
+  vec3 h = l + v;
+  return h * inversesqrt(max(dot(h, h), 1e-12));
+}
+
 float distributionGgx(float nDotH, float alphaRoughness) {
   float a2 = alphaRoughness * alphaRoughness;
   float d = nDotH * nDotH * (a2 - 1.0) + 1.0;
@@ -48,7 +54,7 @@ vec3 brdfCosine(Surface s, vec3 l) {
   float nDotL = dot(s.normal, l);
   if (nDotL <= 0.0) return vec3(0.0);
   float nDotV = max(dot(s.normal, s.view), 1e-4);
-  vec3 h = normalize(l + s.view);
+  vec3 h = halfVector(l, s.view);
   float nDotH = max(dot(s.normal, h), 0.0);
   float vDotH = clamp(dot(s.view, h), 0.0, 1.0);  // rounding can exceed 1 when l == v: pow(<0) is NaN
   float alphaRoughness = max(s.roughness * s.roughness, 1e-3);

@@ -3,6 +3,7 @@
 // GPU Gems 3 ch. 19): a pixel on a depth or normal discontinuity of the G-buffer is blended with
 // its four neighbours; elsewhere the lit colour passes through unchanged.
 #extension GL_EXT_samplerless_texture_functions : require
+#include "common/finite.glsl"
 #include "shared/gpu_types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -29,7 +30,7 @@ void main() {
   float depth = texelFetch(depthImage, p, 0).r;
   vec3 normal = texelFetch(gbuffer1, p, 0).xyz;
   vec4 center = texelFetch(accumulation, p, 0);
-  vec3 color = center.rgb;
+  vec3 color = finiteRadiance(center.rgb);  // Inf * (1 - edge) + ... would be NaN where edge is 0
   float depths[4];
   float normalDelta = 0.0;
   vec3 sum = color;
@@ -41,7 +42,7 @@ void main() {
     float delta =
         bothSurfaces ? 1.0 - dot(normal, texelFetch(gbuffer1, q, 0).xyz) : float(depth != depths[i]);
     normalDelta = max(normalDelta, delta);
-    sum += texelFetch(accumulation, q, 0).rgb;
+    sum += finiteRadiance(texelFetch(accumulation, q, 0).rgb);
   }
   float secondDifference =
       abs(depths[0] + depths[1] - 2.0 * depth) + abs(depths[2] + depths[3] - 2.0 * depth);
@@ -49,5 +50,5 @@ void main() {
   float relative = secondDifference / max(nearest, 1e-30);  // all background: no edge
   float edge = max(smoothstep(kDepthEdge.x, kDepthEdge.y, relative),
                    smoothstep(kNormalEdge.x, kNormalEdge.y, normalDelta));
-  imageStore(hdrImage, p, vec4(mix(color, sum / 5.0, edge), center.a));
+  imageStore(hdrImage, p, vec4(edge > 0.0 ? mix(color, sum / 5.0, edge) : color, center.a));
 }

@@ -11,6 +11,10 @@ layout(location = 0) in vec3 inPosition;  // unit shell vertex
 
 layout(location = 0) flat out uint outVolume;
 
+// The pre-pass draws each volume twice, in a stencil-marking pipeline and in the shading pipeline
+// that clears exactly those marks: both must rasterize the same pixels.
+invariant gl_Position;
+
 void main() {
   vec4 world = volumes[gl_InstanceIndex].model * vec4(inPosition, 1.0);
   gl_Position = frame.viewProj * world;

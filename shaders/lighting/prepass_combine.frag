@@ -28,8 +28,9 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   // An fp16 sum that overflowed reads as infinity; keep it the largest finite value so the ratio
   // below cannot become Inf / Inf.
-  vec3 diffuseSum = min(texelFetch(diffuseLight, pixel, 0).rgb, vec3(kHalfMax));
-  vec4 specularSums = min(texelFetch(specularLight, pixel, 0), vec4(kHalfMax));
+  vec3 diffuseSum = finiteRadiance(texelFetch(diffuseLight, pixel, 0).rgb);
+  vec4 specularSums = texelFetch(specularLight, pixel, 0);
+  specularSums = vec4(finiteRadiance(specularSums.rgb), notFinite(specularSums.a) ? kHalfMax : specularSums.a);
   vec3 diffuse = (1.0 - s.metallic) * (1.0 - kDielectricF0) * s.baseColor / kPi * diffuseSum;
   float specularMean = (specularSums.r + specularSums.g + specularSums.b) / 3.0;
   vec3 metalCorrection = specularMean > 0.0

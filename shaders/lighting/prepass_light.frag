@@ -46,7 +46,7 @@ LightTerms lightTerms(LightVolume volume, ivec2 pixel) {
   float attenuation = lightAttenuation(light, toLight, l, distance);
   vec3 irradiance = light.colorIntensity.rgb * (light.colorIntensity.w * attenuation * nDotL);
   vec3 v = normalize(frame.cameraPosition.xyz - position);
-  vec3 h = normalize(l + v);
+  vec3 h = halfVector(l, v);
   float nDotV = max(dot(n, v), 1e-4);
   float nDotH = max(dot(n, h), 0.0);
   float fresnelWeight = pow(1.0 - clamp(dot(v, h), 0.0, 1.0), 5.0);

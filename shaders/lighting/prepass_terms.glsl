@@ -3,6 +3,7 @@
 // prepass_combine.frag reads.
 #ifndef LLL_PREPASS_TERMS_GLSL
 #define LLL_PREPASS_TERMS_GLSL
+#include "common/finite.glsl"
 
 // Normal buffer, RG32UI (8 B/px): x the view-space unit normal, octahedral-encoded in two unorm16
 // (the full sphere: under perspective a visible surface's view-space z can be either sign, the
@@ -49,7 +50,5 @@ float storedF0(float metallic) {
 // can be far larger than what a dark metal reflects, so unscaled it would overflow fp16 before the
 // image does.
 const float kMetalTermScale = 1.0 / 16.0;
-// The largest finite fp16 value.
-const float kHalfMax = 65504.0;
 
 #endif

@@ -5,6 +5,7 @@
 // particle is dead by then); a living particle moves under gravity, buoyancy, curl-noise
 // turbulence and drag; a particle whose age reaches its lifetime, or that crosses a killing
 // floor, dies. Each slot depends only on itself: the result is the same whatever the thread order.
+#include "common/finite.glsl"
 #include "particles/curl_noise.glsl"
 #include "particles/particle_data.glsl"
 #include "particles/random.glsl"
@@ -81,7 +82,7 @@ void advance(inout Particle p, float dt, float time) {
       velocity.y = -velocity.y * restitution;
     }
   }
-  if (any(isnan(position)) || any(isinf(position))) age = p.velocityLifetime.w;
+  if (anyNotFinite(position)) age = p.velocityLifetime.w;
   p.positionAge = vec4(position, age);
   p.velocityLifetime.xyz = velocity;
   p.attributes.y += p.attributes.z * dt;

@@ -1,6 +1,7 @@
 #version 460
 // HDR to display: exposure, a filmic curve (Narkowicz's ACES fit), sRGB encoding.
 #include "common/debug_colors.glsl"
+#include "common/finite.glsl"
 #include "shared/gpu_types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -21,6 +22,7 @@ vec3 srgbEncode(vec3 c) {
 // The heatmap's legend, bottom left: one 8-pixel cell per light count from 1 to the scale (red),
 // separated by dark ticks, so counts can be read off by counting cells.
 bool heatmapLegend(ivec2 p, out vec3 color) {
+  color = vec3(0.0);
   int scale = int(frame.display.y);
   int x = p.x - 8, y = int(frame.viewport.y) - 1 - p.y - 8;
   if (scale == 0 || x < 0 || y < 0 || y >= 12 || x >= scale * 8) return false;
@@ -31,7 +33,9 @@ bool heatmapLegend(ivec2 p, out vec3 color) {
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= int(frame.viewport.x) || p.y >= int(frame.viewport.y)) return;
-  vec3 hdr = imageLoad(hdrImage, p).rgb;
+  // A highlight past fp16's range was stored as infinity: show it as the brightest value (the curve
+  // would make Inf / Inf = NaN of it). A NaN stays a NaN: the tests look for those in the HDR image.
+  vec3 hdr = finiteRadiance(imageLoad(hdrImage, p).rgb);
   vec3 display;
   if (frame.display.x == kDisplayDebug) {
     display = clamp(hdr, 0.0, 1.0);

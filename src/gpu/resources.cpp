@@ -205,4 +205,19 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccess
   vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
+std::vector<uint8_t> readBack(Context& context, const Buffer& buffer, VkDeviceSize bytes) {
+  Buffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
+  context.submitAndWait([&](VkCommandBuffer cmd) {
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    const VkBufferCopy region{0, 0, bytes};
+    vkCmdCopyBuffer(cmd, buffer.handle(), staging.handle(), 1, &region);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  });
+  std::vector<uint8_t> out(bytes);
+  std::memcpy(out.data(), staging.mapped(), bytes);
+  return out;
+}
+
 }  // namespace lll

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace lll {
 
@@ -88,5 +89,10 @@ class Image {
 // A global memory barrier: what a pass wrote becomes visible to what the next pass reads.
 void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                    VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
+
+// The first `bytes` of a device buffer, copied back after everything submitted before has finished
+// writing it (a barrier from every command's writes, then one to the host: a fence alone does not
+// make another submission's writes visible to the copy).
+std::vector<uint8_t> readBack(Context& context, const Buffer& buffer, VkDeviceSize bytes);
 
 }  // namespace lll

@@ -509,13 +509,9 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
 
 TileLightLists LightLinkedList::readLists() {
   auto download = [&](const Buffer& source) {
-    Buffer staging(context_, source.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
-    context_.submitAndWait([&](VkCommandBuffer cmd) {
-      const VkBufferCopy region{0, 0, source.size()};
-      vkCmdCopyBuffer(cmd, source.handle(), staging.handle(), 1, &region);
-    });
-    std::vector<uint32_t> words(source.size() / 4);
-    std::memcpy(words.data(), staging.mapped(), words.size() * 4);
+    const std::vector<uint8_t> bytes = readBack(context_, source, source.size());
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), words.size() * 4);
     return words;
   };
   const std::vector<uint32_t> heads = download(heads_), words = download(links_),

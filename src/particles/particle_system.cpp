@@ -218,38 +218,22 @@ void ParticleSystem::buildIndirect(FrameContext& frame) {
   vkCmdDispatch(cmd, 1, 1, 1);
 }
 
-std::vector<uint8_t> ParticleSystem::download(const Buffer& buffer, VkDeviceSize bytes) const {
-  Buffer staging(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
-  context_.submitAndWait([&](VkCommandBuffer cmd) {
-    // Whatever earlier submissions wrote is what is read.
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-    const VkBufferCopy region{0, 0, bytes};
-    vkCmdCopyBuffer(cmd, buffer.handle(), staging.handle(), 1, &region);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-  });
-  std::vector<uint8_t> bytesOut(bytes);
-  std::memcpy(bytesOut.data(), staging.mapped(), bytes);
-  return bytesOut;
-}
-
 std::vector<gpu::Particle> ParticleSystem::readParticles() const {
-  const auto bytes = download(particles_, VkDeviceSize(capacity_) * sizeof(gpu::Particle));
+  const auto bytes = readBack(context_, particles_, VkDeviceSize(capacity_) * sizeof(gpu::Particle));
   std::vector<gpu::Particle> out(capacity_);
   std::memcpy(out.data(), bytes.data(), bytes.size());
   return out;
 }
 
 std::vector<glm::uvec2> ParticleSystem::readDrawOrder() const {
-  const auto bytes = download(drawOrder_, VkDeviceSize(sorter_.paddedCount()) * sizeof(glm::uvec2));
+  const auto bytes = readBack(context_, drawOrder_, VkDeviceSize(sorter_.paddedCount()) * sizeof(glm::uvec2));
   std::vector<glm::uvec2> out(sorter_.paddedCount());
   std::memcpy(out.data(), bytes.data(), bytes.size());
   return out;
 }
 
 gpu::ParticleCounters ParticleSystem::readCounters() const {
-  const auto bytes = download(counters_, sizeof(gpu::ParticleCounters));
+  const auto bytes = readBack(context_, counters_, sizeof(gpu::ParticleCounters));
   gpu::ParticleCounters out;
   std::memcpy(&out, bytes.data(), sizeof(out));
   return out;

@@ -103,7 +103,6 @@ class ParticleSystem {
   const DrawPipelines& pipelinesFor(ParticleShading shading);
   DescriptorWriter descriptors(const FrameContext& frame, const LightListBuffers& lists) const;
   void lightParticles(FrameContext& frame, const DrawPipelines& pipelines, const LightListBuffers& lists);
-  std::vector<uint8_t> download(const Buffer& buffer, VkDeviceSize bytes) const;
 
   Context& context_;
   ParticlePreset preset_;
