@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc spirv-tools
   libglm-dev libstb-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libfmt-dev
-  libgtest-dev libtinyexr-dev gnuplot-nox
+  libgtest-dev libtinyexr-dev gnuplot-nox libspirv-cross-c-shared-dev
 )
 missing=()
 for p in "${packages[@]}"; do
