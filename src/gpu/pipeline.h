@@ -101,9 +101,6 @@ class DescriptorWriter {
  public:
   DescriptorWriter& buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset = 0,
                            VkDeviceSize range = VK_WHOLE_SIZE);
-  DescriptorWriter& uniform(uint32_t binding, VkBuffer buffer) {
-    return this->buffer(binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffer);
-  }
   DescriptorWriter& storage(uint32_t binding, VkBuffer buffer) {
     return this->buffer(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer);
   }

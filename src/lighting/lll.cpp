@@ -35,10 +35,10 @@ constexpr VkShaderStageFlags kAllStages =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
 
 const std::initializer_list<Binding> kBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
@@ -207,7 +207,7 @@ LightLinkedList::~LightLinkedList() {
 void LightLinkedList::createBuffers() {
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   uniformBuffer_ =
-      Buffer(context_, sizeof(gpu::LllUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+      Buffer(context_, sizeof(gpu::LllUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
   heads_ = Buffer(context_, uint64_t(tiles_) * 4, storage, MemoryUse::Device);
   tileDepth_ = Buffer(context_, uint64_t(tiles_) * 4, storage, MemoryUse::Device);
   // Read by the CPU after each frame: link requests (overflow) and list statistics.
@@ -296,7 +296,7 @@ void LightLinkedList::createShells(const GpuScene& scene) {
 
 DescriptorWriter LightLinkedList::descriptors(const FrameContext& frame) const {
   DescriptorWriter writer = meshPassDescriptors(frame);
-  writer.uniform(3, uniformBuffer_.handle())
+  writer.storage(3, uniformBuffer_.handle())
       .storage(4, heads_.handle())
       .storage(5, links_.handle())
       .storage(6, counters_.handle())

@@ -36,7 +36,7 @@ constexpr uint32_t kStencilZPass = 1;  // camera outside: count the faces in fro
 constexpr uint32_t kStencilZFail = 2;  // camera may be inside: count the faces behind the scene
 
 const std::initializer_list<Binding> kMeshBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
+    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGraphicsStages},
     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -259,7 +259,7 @@ class Prepass final : public Technique {
                                depthStencil_.view(),
                                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, false);
     DescriptorWriter writer;
-    writer.uniform(0, frame.uniformBuffer.handle())
+    writer.storage(0, frame.uniformBuffer.handle())
         .storage(1, frame.scene.lightBuffer().handle())
         .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
         .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, normals_.view(),

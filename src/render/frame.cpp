@@ -40,7 +40,7 @@ void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
 
 DescriptorWriter meshPassDescriptors(const FrameContext& frame) {
   DescriptorWriter writer;
-  writer.uniform(0, frame.uniformBuffer.handle())
+  writer.storage(0, frame.uniformBuffer.handle())
       .storage(1, frame.scene.lightBuffer().handle())
       .storage(2, frame.scene.materialBuffer().handle());
   return writer;

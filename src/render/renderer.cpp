@@ -47,7 +47,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   gpuScene_ = std::make_unique<GpuScene>(context, scene);
   createTargets();
   uniformBuffer_ =
-      Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+      Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
   updateUniforms();
 
   depthLayout_ = meshPassLayout(context, *gpuScene_);
@@ -59,7 +59,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   depthMask_ = Pipeline(context, depthLayout_, depth);
 
   tonemapLayout_ =
-      PipelineLayout(context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+      PipelineLayout(context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
                                {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
                                {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
   tonemap_ = Pipeline(context, tonemapLayout_, "post/tonemap.comp");
@@ -210,7 +210,7 @@ void Renderer::tonemap(FrameContext& frame) {
                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   tonemap_.bind(cmd);
   DescriptorWriter()
-      .uniform(0, uniformBuffer_.handle())
+      .storage(0, uniformBuffer_.handle())
       .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
       .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapLayout_.handle());
