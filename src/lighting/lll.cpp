@@ -15,6 +15,7 @@
 #include "lighting/light_volumes.h"
 #include "particles/particle_system.h"
 #include "render/gbuffer.h"
+#include "render/renderer.h"
 #include "scene/errors.h"
 #include "shared/lll_types.h"
 
@@ -179,8 +180,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
       linkBytes_(linkFormat_ == gpu::kLinkCompact ? 8 : 16),
       autoLinkFormat_(settings.lllLink == "auto") {
   const uint32_t tile = settings.tileSize;
-  if (tile == 0 || tile > gpu::kMaxTileSize || (tile & (tile - 1)) != 0)
-    throw InputError(fmt::format("--tile {}: expected 1, 2, 4, 8 or 16", tile));
+  validateTileSize(tile);
   tilesX_ = divideRoundingUp(targets.width, tile);
   tilesY_ = divideRoundingUp(targets.height, tile);
   tiles_ = tilesX_ * tilesY_;

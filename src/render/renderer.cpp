@@ -5,6 +5,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "gpu/context.h"
@@ -26,6 +27,11 @@ constexpr uint32_t kParticleStepsPerSubmission = 256;
 
 }  // namespace
 
+void validateTileSize(uint32_t tile) {
+  if (tile == 0 || tile > gpu::kMaxTileSize || (tile & (tile - 1)) != 0)
+    throw InputError(fmt::format("--tile {}: expected 1, 2, 4, 8 or 16", tile));
+}
+
 void validateResolution(uint32_t width, uint32_t height) {
   if (width == 0 || height == 0 || width > gpu::kMaxImageSide || height > gpu::kMaxImageSide)
     throw InputError(fmt::format("resolution {}x{}: width and height must be between 1 and {}", width, height,
@@ -40,6 +46,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
       sceneBounds_(scene.worldBounds()),
       timer_(context) {
   validateResolution(settings.width, settings.height);
+  validateTileSize(settings.tileSize);  // every frame's uniforms divide by it
   if (scene.lights.size() > gpu::kMaxLights)
     throw InputError(
         fmt::format("{} lights: at most {} are supported (the light array is one storage buffer)",
@@ -112,6 +119,18 @@ void Renderer::updateUniforms() {
   u.proj[1][1] *= -1.0f;                                            // Vulkan's y points down
   u.viewProj = u.proj * u.view;
   u.invViewProj = glm::inverse(u.viewProj);
+  // Finite inputs can still overflow: a camera or scene 1e30 m across, a field of view of 1e-30.
+  const auto finite = [](const glm::mat4& m) {
+    for (int i = 0; i < 16; ++i)
+      if (!std::isfinite(m[i / 4][i % 4])) return false;
+    return true;
+  };
+  if (!finite(u.viewProj) || !finite(u.invViewProj))
+    throw InputError(fmt::format(
+        "camera '{}' (eye {}, {}, {}; field of view {} rad) over scene bounds {} m across gives a projection "
+        "that is not finite; the camera or the scene is out of any sensible range",
+        camera_.name, camera_.eye.x, camera_.eye.y, camera_.eye.z, camera_.yfov,
+        bounds.valid() ? glm::length(bounds.extent()) : 0.0f));
   u.cameraPosition = glm::vec4(camera_.eye, 1.0f);
   u.viewport = glm::vec4(settings_.width, settings_.height, 1.0f / settings_.width, 1.0f / settings_.height);
   const float tanHalf = std::tan(camera_.yfov * 0.5f);

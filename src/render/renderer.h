@@ -38,6 +38,8 @@ struct FrameResult {
   uint32_t rerenders = 0;        // times the frame was recorded again (e.g. link pool growth)
 };
 
+// Throws InputError unless `tile` is 1, 2, 4, 8 or 16 (gpu::kMaxTileSize).
+void validateTileSize(uint32_t tile);
 // Checks a requested resolution; throws InputError for zero, negative-as-huge or oversized values.
 void validateResolution(uint32_t width, uint32_t height);
 
