@@ -41,7 +41,8 @@ class PipelineLayout {
 enum class BlendMode { None, Additive, Alpha };
 
 enum class VertexInput {
-  Mesh,      // lll::Vertex (position, normal, uv) at binding 0
+  Mesh,      // lll::Vertex (position, normal, uv) at binding 0, gpu::MeshInstance per instance at 1
+  Vertices,  // lll::Vertex at binding 0 only (light volume shells)
   Position,  // a bare vec3 position at binding 0 (light volumes)
   None,      // no vertex buffer: the shader makes its own positions
 };

@@ -127,6 +127,7 @@ class Deferred final : public Technique {
   void createLightPipelines(Context& context) {
     GraphicsPipelineDesc desc;
     desc.vertexShader = "lighting/light_volume.vert";
+    desc.vertexInput = VertexInput::Vertices;
     desc.fragmentShader = "lighting/deferred_light.frag";
     desc.colorFormats = {kHdrFormat};
     desc.depthFormat = kDepthFormat;

@@ -424,7 +424,7 @@ void LightLinkedList::shade(FrameContext& frame) {
                    t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
     p.pipeline.bind(frame.cmd);
     descriptors(frame).push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadeLayout_.handle());
-    frame.scene.draw(frame.cmd, shadeLayout_.handle(), p.filter, frame.eye);
+    frame.scene.draw(frame.cmd, shadeLayout_.handle(), p.filter);
     vkCmdEndRendering(frame.cmd);
   }
   if (frame.particles)

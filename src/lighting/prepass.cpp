@@ -185,6 +185,7 @@ class Prepass final : public Technique {
   void createLightPipelines(Context& context) {
     GraphicsPipelineDesc desc;
     desc.vertexShader = "lighting/light_volume.vert";
+    desc.vertexInput = VertexInput::Vertices;
     desc.fragmentShader = "lighting/prepass_light.frag";
     desc.colorFormats = {kLightBufferFormat, kLightBufferFormat};
     desc.depthFormat = desc.stencilFormat = depthStencilFormat_;
@@ -234,7 +235,7 @@ class Prepass final : public Technique {
     normalsPipeline_.bind(frame.cmd);
     meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                                     meshLayout_.handle());
-    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque, frame.eye);
+    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque);
     vkCmdEndRendering(frame.cmd);
     toShaderRead(frame.cmd, normals_);
     const VkPipelineStageFlags2 tests =
@@ -302,7 +303,7 @@ class Prepass final : public Technique {
         .image(4, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, specular_.view(),
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
         .push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, meshLayout_.handle());
-    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque, frame.eye);
+    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque);
     vkCmdEndRendering(frame.cmd);
   }
 

@@ -36,7 +36,6 @@ struct FrameContext {
   const Buffer& uniformBuffer;  // FrameUniforms
   const gpu::FrameUniforms& uniforms;
   const RenderSettings& settings;
-  glm::vec3 eye;
   bool capture;  // the frame is read back: techniques may add diagnostic passes (stats)
   // With --particles: sorted and ready to draw; each technique draws them after its glass with
   // particles->draw(frame, its shading). Null without particles.

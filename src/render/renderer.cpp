@@ -170,6 +170,8 @@ void Renderer::advanceParticles(uint32_t steps) {
 
 std::vector<std::pair<std::string, double>> Renderer::stats() const {
   auto s = technique_->stats();
+  s.push_back({"instances", double(scene_.instances.size())});
+  s.push_back({"visible_instances", double(gpuScene_->visibleInstances())});
   if (particles_) {
     const auto p = particles_->stats();
     s.insert(s.end(), p.begin(), p.end());
@@ -178,9 +180,10 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
 }
 
 void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advanceParticles) {
+  gpuScene_->prepareFrame(uniforms_.viewProj, camera_.eye);
   timer_.reset(cmd);
-  FrameContext frame{context_,  cmd,       timer_,      *gpuScene_, targets_,        uniformBuffer_,
-                     uniforms_, settings_, camera_.eye, capture,    particles_.get()};
+  FrameContext frame{context_,       cmd,       timer_,    *gpuScene_, targets_,
+                     uniformBuffer_, uniforms_, settings_, capture,    particles_.get()};
   depthPrepass(frame);
   if (particles_) particles_->update(frame, advanceParticles);
   targets_.hdr.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -204,9 +207,9 @@ void Renderer::depthPrepass(FrameContext& frame) {
                  VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
   depthOpaque_.bind(cmd);
   meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depthLayout_.handle());
-  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::OpaqueOnly, camera_.eye);
+  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::OpaqueOnly);
   depthMask_.bind(cmd);
-  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::MaskOnly, camera_.eye);
+  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::MaskOnly);
   vkCmdEndRendering(cmd);
   targets_.depth.transition(
       cmd, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,

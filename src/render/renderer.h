@@ -62,7 +62,8 @@ class Renderer {
   Technique& technique() { return *technique_; }
   GpuScene& gpuScene() { return *gpuScene_; }
   ParticleSystem* particles() { return particles_.get(); }
-  // The technique's numbers for --stats, then the particle system's.
+  // The technique's numbers for --stats, the scene's instances (all, and inside the frustum in the
+  // last frame), then the particle system's.
   std::vector<std::pair<std::string, double>> stats() const;
 
  private:
