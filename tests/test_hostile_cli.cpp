@@ -64,6 +64,50 @@ TEST_F(HostileCli, EveryNumericOptionRejectsHostileValues) {
   EXPECT_FALSE(fs::exists(dir_ / "b" / "results.json"));
 }
 
+// Every option that takes a word, with values none of them takes, and every output path with
+// values that name no file that can be written: a crash, a hang or an exit other than 2 fails.
+TEST_F(HostileCli, EveryWordOptionRejectsHostileValues) {
+  const std::string longWord(5000, 'x');
+  const std::vector<std::string> words = {"nosuch", "",         "-",      "nan",
+                                          "1e999",  "\xff\xfe", longWord, (dir_ / "missing" / "x").string()};
+  const std::vector<std::string> render = {"render", "plane", "--out", outPng()};
+  const std::vector<std::string> particles = {"render", "atrium", "--out", outPng(), "--particles", "smoke"};
+  const std::vector<OptionCase> cases = {
+      {render, "--technique"},
+      {render, "--camera"},
+      {render, "--device"},
+      {render, "--lll-fill"},
+      {render, "--lll-link"},
+      {render, "--lll-shade"},
+      {render, "--debug-view"},
+      {render, "--deferred-translucent"},
+      {render, "--aa"},
+      {render, "--particles"},
+      {particles, "--particle-lighting"},
+      {particles, "--particle-emitter"},
+      {{"bench", "--quick"}, "--suite"},
+      {{"bench", "--quick", "--suite", "threel"}, "--technique"},
+      {{"lll-memory"}, "--link"},
+  };
+  for (const OptionCase& c : cases) {
+    for (const std::string& value : words) {
+      std::vector<std::string> args = c.command;
+      args.insert(args.end(), {c.option, value});
+      const CliResult r = runLll(args);
+      EXPECT_EQ(r.exitCode, 2) << c.option << " '" << value.substr(0, 40) << "': " << r;
+    }
+  }
+  const std::vector<std::string> paths = {"", (dir_ / "missing" / "x.png").string(), longWord + ".png",
+                                          dir_.string(), "/proc/self/x.png"};
+  for (const std::string option : {"--out", "--hdr", "--stats"}) {
+    for (const std::string& path : paths) {
+      const CliResult r = runLll({"render", "plane", "--width", "8", option, path});
+      EXPECT_EQ(r.exitCode, 2) << option << " '" << path.substr(0, 40) << "': " << r;
+    }
+  }
+  EXPECT_FALSE(fs::exists(outPng()));
+}
+
 TEST_F(HostileCli, SeedIsAnyThirtyTwoBitNumber) {
   expectBadInput(render("plane", {"--seed", "abc"}), {"--seed", "abc"});
   expectBadInput(render("plane", {"--seed", "4294967296"}), {"--seed", "4294967296"});

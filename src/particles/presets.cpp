@@ -235,7 +235,8 @@ ParticlePreset loadParticlePreset(const std::string& nameOrPath) {
   for (const EmbeddedText& preset : embeddedParticlePresets())
     if (preset.name == nameOrPath) return parseParticlePreset(std::string(preset.text), nameOrPath);
   const std::filesystem::path path(nameOrPath);
-  if (!std::filesystem::exists(path))
+  std::error_code error;  // a name too long for the file system is an error, not an exception
+  if (!std::filesystem::exists(path, error))
     throw InputError(fmt::format("--particles {}: neither a built-in preset ({}) nor an existing .json file",
                                  nameOrPath, fmt::join(builtinParticlePresets(), ", ")));
   return parseParticlePreset(readTextFile(path), path.string());

@@ -20,7 +20,8 @@ Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings)
   } else {
     const std::filesystem::path path(name);
     const std::string ext = path.extension().string();
-    if (!std::filesystem::exists(path) && ext != ".gltf" && ext != ".glb") {
+    std::error_code error;  // a name too long for the file system is an error, not an exception
+    if (!std::filesystem::exists(path, error) && ext != ".gltf" && ext != ".glb") {
       std::string names;
       for (const BuiltinSceneInfo& info : builtinScenes()) names += (names.empty() ? "" : ", ") + info.name;
       throw InputError(fmt::format(
