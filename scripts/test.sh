@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite: release build + ctest (validation layers on), the same under
-# AddressSanitizer + UndefinedBehaviorSanitizer, and the benchmark tool's quick smoke run.
+# AddressSanitizer + UndefinedBehaviorSanitizer, a minute of fuzzing the glTF loader (libFuzzer,
+# ASan + UBSan), and the benchmark tool's quick smoke run.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
@@ -16,6 +17,8 @@ export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs" --timeout 900)
 unset ASAN_OPTIONS UBSAN_OPTIONS
+
+bash "$root/scripts/fuzz.sh" 60
 
 "$root/build/lll" bench --suite threel --quick --out "$root/build/bench-smoke"
 echo "bench smoke: $(wc -l < "$root/build/bench-smoke/results.csv") result rows"

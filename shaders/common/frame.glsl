@@ -3,7 +3,11 @@
 #define LLL_FRAME_GLSL
 #include "shared/gpu_types.h"
 
-layout(set = 0, binding = 0) uniform FrameBlock {
+// Per-frame and per-system constants are read from storage buffers, not uniform blocks: lavapipe
+// (Mesa 22.3) compiles a new variant of a shader with the values of its uniform blocks folded in,
+// on every bind of a shader whose branches depend on them, and never frees the old one (about 1 MB
+// a bind, every frame). It folds in nothing from storage buffers.
+layout(std430, set = 0, binding = 0) readonly buffer FrameBlock {
   FrameUniforms frame;
 };
 layout(std430, set = 0, binding = 1) readonly buffer LightBlock {

@@ -12,7 +12,7 @@
 #define LLL_LIST_ACCESS readonly
 #endif
 
-layout(set = 0, binding = 3) uniform LllBlock {
+layout(std430, set = 0, binding = 3) readonly buffer LllBlock {  // not uniform: see frame.glsl
   LllUniforms lll;
 };
 layout(std430, set = 0, binding = 4) LLL_LIST_ACCESS buffer HeadBlock {

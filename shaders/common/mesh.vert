@@ -1,14 +1,17 @@
 #version 460
 // Shared by every pass that draws the scene. The shading passes test EQUAL against the prepass's
 // depth, so gl_Position is invariant: without it a driver may compile the same expression
-// differently in two pipelines (fused or not), and an EQUAL test then drops pixels.
-#include "common/draw_push.glsl"
+// differently in two pipelines (fused or not), and an EQUAL test then drops pixels. Draws are
+// instanced: each instance's transform and normal matrix come at instance rate (MeshInstance in
+// shared/gpu_types.h, written in draw order by render/gpu_scene.cpp).
 #include "common/frame.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inTangent;
+layout(location = 8) in mat4 inModel;
+layout(location = 12) in mat3 inNormalMatrix;
 
 layout(location = 0) out vec3 outWorldPosition;
 layout(location = 1) out vec3 outNormal;
@@ -18,13 +21,13 @@ layout(location = 3) out vec4 outTangent;
 invariant gl_Position;
 
 void main() {
-  vec4 world = draw.model * vec4(inPosition, 1.0);
+  vec4 world = inModel * vec4(inPosition, 1.0);
   outWorldPosition = world.xyz;
-  outNormal = transpose(inverse(mat3(draw.model))) * inNormal;
+  outNormal = inNormalMatrix * inNormal;
   outUv = inUv;
   // Tangents follow the surface (the model matrix, not the normal matrix); a mirroring transform
   // flips the bitangent's handedness.
-  mat3 linear = mat3(draw.model);
+  mat3 linear = mat3(inModel);
   outTangent = vec4(linear * inTangent.xyz, inTangent.w * (determinant(linear) < 0.0 ? -1.0 : 1.0));
   gl_Position = frame.viewProj * world;
 }

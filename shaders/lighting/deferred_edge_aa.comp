@@ -7,7 +7,7 @@
 #include "shared/gpu_types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform FrameBlock {
+layout(std430, set = 0, binding = 0) readonly buffer FrameBlock {  // see common/frame.glsl
   FrameUniforms frame;
 };
 layout(set = 0, binding = 5) uniform texture2D depthImage;

@@ -22,7 +22,7 @@
 #define PARTICLE_RADIANCE_ACCESS readonly
 #endif
 
-layout(set = 0, binding = 11) uniform ParticleSystemBlock {
+layout(std430, set = 0, binding = 11) readonly buffer ParticleSystemBlock {  // see frame.glsl
   ParticleUniforms system;
 };
 layout(std430, set = 0, binding = 12) PARTICLE_STATE_ACCESS buffer ParticleStateBlock {

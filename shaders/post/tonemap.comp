@@ -5,13 +5,16 @@
 #include "shared/gpu_types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform FrameBlock {
+layout(std430, set = 0, binding = 0) readonly buffer FrameBlock {  // see common/frame.glsl
   FrameUniforms frame;
 };
 layout(set = 0, binding = 1, rgba16f) uniform readonly image2D hdrImage;
 layout(set = 0, binding = 2, rgba8) uniform writeonly image2D ldrImage;
 
+// The curve tends to 2.51 / 2.43 (clamped to 1), but at infinity it is inf / inf: a light close to
+// a surface can overflow the half-float target, so x is held to the largest half first.
 vec3 filmic(vec3 x) {
+  x = min(x, vec3(65504.0));
   return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
 

@@ -43,12 +43,20 @@ struct GpuMaterial {
 };
 LLL_CHECK_SIZE(GpuMaterial, 80);
 
+// One placed copy of a mesh (a glTF node), read by the mesh vertex shader through the frame's draw
+// order: a draw of a primitive covers every visible instance of its mesh.
+struct MeshInstance {
+  mat4 model;            // object to world
+  vec4 normalMatrix[3];  // xyz: columns of the inverse transpose of model's 3x3 (its cofactors
+                         // when singular), computed on the CPU in double precision
+};
+LLL_CHECK_SIZE(MeshInstance, 112);
+
 // Per-draw push constants of every mesh pass.
 struct DrawPush {
-  mat4 model;
   uvec4 ids;  // x material index, yzw unused
 };
-LLL_CHECK_SIZE(DrawPush, 80);
+LLL_CHECK_SIZE(DrawPush, 16);
 
 LLL_NAMESPACE_END
 #endif

@@ -11,6 +11,7 @@
 #include "lighting/technique.h"
 #include "particles/particle_setup.h"
 #include "render/image_io.h"
+#include "render/output_files.h"
 #include "render/renderer.h"
 #include "render/stats.h"
 #include "scene/builtin_scenes.h"
@@ -28,20 +29,19 @@ int validationExitCode(const Context& context) {
   return 1;
 }
 
-// The image writers would reject a bad output path only after the render; checking the folder and
-// the extension first makes a typo fail at once instead of after minutes of work.
-void checkOutputPath(const char* option, const std::string& path,
-                     const std::vector<std::string>& extensions) {
-  if (path.empty()) return;
-  const std::filesystem::path file(path);
-  std::string ext = file.extension().string();
+// The image writers would reject a bad output path only after the render; checking the extension,
+// the folder and that a file can be created there first makes a typo fail at once instead of after
+// minutes of work.
+void addOutput(PendingOutputs& outputs, const char* option, const std::optional<std::string>& path,
+               const std::vector<std::string>& extensions) {
+  if (!path) return;
+  std::string ext = std::filesystem::path(*path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (!extensions.empty() && std::find(extensions.begin(), extensions.end(), ext) == extensions.end())
+  if (!path->empty() && !extensions.empty() &&
+      std::find(extensions.begin(), extensions.end(), ext) == extensions.end())
     throw InputError(
-        fmt::format("{} {}: expected a name ending in {}", option, path, fmt::join(extensions, " or ")));
-  const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
-  if (!std::filesystem::is_directory(folder))
-    throw InputError(fmt::format("{} {}: the folder {} does not exist", option, path, folder.string()));
+        fmt::format("{} {}: expected a name ending in {}", option, *path, fmt::join(extensions, " or ")));
+  outputs.add(option, *path);
 }
 
 }  // namespace
@@ -49,9 +49,10 @@ void checkOutputPath(const char* option, const std::string& path,
 int runRender(const RenderJob& job) {
   findTechnique(job.settings.technique);  // reject a bad name before any slow work
   validateResolution(job.settings.width, job.settings.height);
-  checkOutputPath("--out", job.outPng, {".png"});
-  checkOutputPath("--hdr", job.outHdr, {".exr", ".pfm"});
-  checkOutputPath("--stats", job.outStats, {});
+  PendingOutputs outputs;
+  addOutput(outputs, "--out", job.outPng, {".png"});
+  addOutput(outputs, "--hdr", job.outHdr, {".exr", ".pfm"});
+  addOutput(outputs, "--stats", job.outStats, {});
   std::vector<std::string> warnings;
   const Scene scene = loadScene(job.scene, &warnings);
   for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
@@ -68,13 +69,15 @@ int runRender(const RenderJob& job) {
     for (uint32_t i = 0; i < job.settings.frames; ++i)
       frames.push_back(renderer.renderFrame(i + 1 == job.settings.frames));
   }
-  if (!job.outPng.empty()) writePng(job.outPng, renderer.ldrImage());
-  if (!job.outHdr.empty()) writeHdr(job.outHdr, renderer.hdrImage());
-  if (!job.outStats.empty()) {
+  if (job.outPng) outputs.write(*job.outPng, [&](const auto& file) { writePng(file, renderer.ldrImage()); });
+  if (job.outHdr) outputs.write(*job.outHdr, [&](const auto& file) { writeHdr(file, renderer.hdrImage()); });
+  if (job.outStats) {
     RunInfo run{scene.name,          job.settings.technique, job.settings.width,    job.settings.height,
                 scene.lights.size(), scene.triangleCount(),  renderer.camera().name};
-    writeStatsJson(job.outStats, context, run, frames, renderer.stats());
+    outputs.write(*job.outStats,
+                  [&](const auto& file) { writeStatsJson(file, context, run, frames, renderer.stats()); });
   }
+  outputs.commit();
   const auto summary = summarizePasses(frames);
   for (const PassSummary& s : summary) fmt::print(stderr, "lll: {:<24} {:9.3f} ms\n", s.name, s.medianMs);
   return validationExitCode(context);

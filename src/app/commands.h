@@ -1,6 +1,7 @@
 #pragma once
 // What each `lll` subcommand does, as library functions; main.cpp only parses the command line.
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "gpu/context.h"
@@ -13,9 +14,10 @@ struct RenderJob {
   SceneRequest scene;
   RenderSettings settings;
   ContextOptions device;
-  std::string outPng;    // --out
-  std::string outHdr;    // --hdr
-  std::string outStats;  // --stats
+  // Each output when asked for; an option given with an empty path is an error, not "no output".
+  std::optional<std::string> outPng;    // --out
+  std::optional<std::string> outHdr;    // --hdr
+  std::optional<std::string> outStats;  // --stats
 };
 
 // Each returns the process exit code: 0 success, 1 a validation message was seen under --validate.

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <charconv>
+#include <cmath>
 #include <cstdlib>
 
 #include "app/commands.h"
@@ -10,6 +12,32 @@
 #include "scene/errors.h"
 
 namespace {
+
+// CLI11's Range lets NaN through (every comparison with it is false) and takes "inf": a number
+// option must parse as a finite number within [lo, hi].
+CLI::Validator finiteIn(double lo, double hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        double value = 0.0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (ec != std::errc() || ptr != end || !std::isfinite(value))
+          return fmt::format("{} is not a finite number", text);
+        if (value < lo || value > hi) return fmt::format("{} is not between {} and {}", text, lo, hi);
+        return {};
+      },
+      fmt::format("NUMBER in [{} - {}]", lo, hi));
+}
+
+// CLI11 runs no validator on an empty value and converts it to zero: `--tile ''` would get past
+// the tile check. No option of lll takes an empty value.
+void rejectEmptyValues(const CLI::App& command) {
+  for (const CLI::Option* option : command.get_options()) {
+    for (const std::string& value : option->results())
+      if (value.empty()) throw CLI::ValidationError(option->get_name(), "an empty value is not allowed");
+  }
+  for (const CLI::App* sub : command.get_subcommands()) rejectEmptyValues(*sub);
+}
 
 void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   auto& s = job.settings;
@@ -21,17 +49,18 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "random point lights: scattered in the scene bounds, added to the file's own lights")
       ->check(CLI::Range(0u, 1u << 20));
   cmd.add_option("--light-range-scale", job.scene.lightRangeScale,
-                 "multiplies the ranges of the --lights lights (light-volume overdraw studies)");
-  cmd.add_option("--seed", job.scene.seed, "seed for random lights and particles")
-      ->each([&s](const std::string& v) { s.seed = uint32_t(std::stoul(v)); });
+                 "multiplies the ranges of the --lights lights (light-volume overdraw studies)")
+      ->check(finiteIn(0.0, lll::kMaxLightRangeScale));
+  // One seed for the lights and the particles: main copies it into the settings after parsing.
+  cmd.add_option("--seed", job.scene.seed, "seed for random lights and particles (0 to 4294967295)");
   cmd.add_option("--camera", s.camera, "camera name, or eye and target as \"ex,ey,ez,tx,ty,tz\"");
   cmd.add_option("--frames", s.frames,
                  "frames to render (timings are medians over them); with --particles: fixed 1/60 s "
                  "simulation steps, only the last frame is drawn")
       ->check(CLI::Range(1u, 100000u));
   cmd.add_option("--exposure", s.exposure, "exposure multiplier before tonemapping")
-      ->check(CLI::Range(1e-6f, 1e6f));
-  cmd.add_option("--ambient", s.ambient, "constant ambient radiance")->check(CLI::Range(0.0f, 1e3f));
+      ->check(finiteIn(1e-6, 1e6));
+  cmd.add_option("--ambient", s.ambient, "constant ambient radiance")->check(finiteIn(0.0, 1e3));
   cmd.add_option("--device", job.device.device, "auto | gpu | cpu | INDEX (see `lll devices`)");
   cmd.add_flag("--validate", job.device.validation,
                "Khronos validation layers on; any message fails the run");
@@ -52,16 +81,21 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(CLI::IsMember({"unlit", "forward"}));
   cmd.add_option("--aa", s.antiAliasing, "none | edge (deferred: edge-detect anti-aliasing)")
       ->check(CLI::IsMember({"none", "edge"}));
-  cmd.add_option("--particles", s.particles,
-                 "particle preset: a built-in name (smoke, sparks, dust) or a .json file; the emitter sits "
-                 "at the scene's smoke source");
+  CLI::Option* particles = cmd.add_option(
+      "--particles", s.particles,
+      "particle preset: a built-in name (smoke, sparks, dust) or a .json file; the emitter sits "
+      "at the scene's smoke source");
+  // Without --particles these would be silently ignored.
   cmd.add_option("--particle-lighting", s.particleLighting,
                  "light particles per pixel, or once per particle at its centre (vertex)")
-      ->check(CLI::IsMember({"pixel", "vertex"}));
+      ->check(CLI::IsMember({"pixel", "vertex"}))
+      ->needs(particles);
   cmd.add_option("--particle-count", s.particleCount, "particle slots, overriding the preset's count")
-      ->check(CLI::Range(1u, 1000000u));
+      ->check(CLI::Range(1u, 1000000u))
+      ->needs(particles);
   cmd.add_option("--particle-emitter", s.particleEmitter,
-                 "where the emitter sits, \"x,y,z\" (default: the scene's smoke source)");
+                 "where the emitter sits, \"x,y,z\" (default: the scene's smoke source)")
+      ->needs(particles);
 }
 
 void addBenchOptions(CLI::App& cmd, lll::bench::BenchOptions& options) {
@@ -135,10 +169,12 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+    rejectEmptyValues(app);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  job.settings.seed = job.scene.seed;
   if (app.get_subcommands().empty()) {
     fmt::print(stderr, "lll: error: a command is required\n{}", app.help());
     return 2;

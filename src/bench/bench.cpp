@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <signal.h>
+
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <optional>
 
@@ -22,6 +25,17 @@ class NotAvailable : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// Thrown between frames once requestStop() was called. Not a std::exception: no scenario's
+// handler may record it as a failure.
+struct Interrupted {};
+
+std::atomic<bool> stopRequested{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "requestStop runs in a signal handler");
+
+void stopIfRequested() {
+  if (stopRequested.load()) throw Interrupted{};
+}
 
 struct FrameCounts {
   uint32_t warmup = 0;
@@ -89,6 +103,7 @@ Measured measure(Context& context, const Scene& scene, const Scenario& s, FrameC
   if (renderer.particles()) renderer.advanceParticles(stepsToSteadyState(renderer.particles()->preset()));
   std::vector<FrameResult> timed;
   for (uint32_t i = 0; i < counts.warmup + counts.timed; ++i) {
+    stopIfRequested();
     FrameResult frame = renderer.renderFrame(false);
     if (i == 0) requireParticlePass(s, frame);
     if (i >= counts.warmup) timed.push_back(std::move(frame));
@@ -226,7 +241,8 @@ const PassSummary* ScenarioResult::pass(const std::string& name) const {
   return nullptr;
 }
 
-BenchReport runBench(Context& context, const BenchOptions& options) {
+BenchReport runBench(Context& context, const BenchOptions& options,
+                     const std::function<void(const BenchReport&)>& finished) {
   checkNames(options);
   BenchReport report = reportHeader(context, options);
   if (report.timedFrames == 0) throw InputError("--frames 0: at least one timed frame is needed");
@@ -241,27 +257,65 @@ BenchReport runBench(Context& context, const BenchOptions& options) {
     const Scenario& s = scenarios[i];
     const std::string label = fmt::format("{} {} {}", s.suite, techniqueLabel(s.settings), s.name);
     progress.start(i, label);
-    Measured measured = runScenario(context, scenes, s, counts);
-    report.results.push_back(std::move(measured.result));
-    comparisons.add(report, report.results.size() - 1, std::move(measured.image));
+    try {
+      stopIfRequested();
+      Measured measured = runScenario(context, scenes, s, counts);
+      report.results.push_back(std::move(measured.result));
+      comparisons.add(report, report.results.size() - 1, std::move(measured.image));
+    } catch (const Interrupted&) {
+      report.interrupted = true;
+      break;
+    }
     const ScenarioResult& r = report.results.back();
     if (r.status != Status::Ok)
       progress.note(fmt::format("lll: bench: {} {}: {}", label, statusName(r.status), r.message));
+    report.validationMessages = context.validationMessages().size();
+    if (finished) finished(report);
   }
-  progress.finish();
+  progress.finish(report.results.size());
   report.validationMessages = context.validationMessages().size();
   return report;
 }
 
+void requestStop() {
+  stopRequested.store(true);
+}
+
+namespace {
+
+// The first signal asks the run to stop between frames; the handler then resets itself, so a
+// second one ends the process at once.
+void onStopSignal(int) {
+  requestStop();
+}
+
+void installStopHandlers() {
+  struct sigaction action {};
+  action.sa_handler = &onStopSignal;
+  action.sa_flags = SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+}  // namespace
+
 int runBenchCommand(const BenchOptions& options) {
   checkNames(options);  // before the slow start of Vulkan
+  checkOutputFolder(options.outDir);
+  installStopHandlers();
   Context context(options.device);
-  const BenchReport report = runBench(context, options);
+  const BenchReport report =
+      runBench(context, options, [&](const BenchReport& sofar) { writeResults(sofar, options.outDir); });
   writeReport(report, options.outDir);
   const auto failed = std::count_if(report.results.begin(), report.results.end(),
                                     [](const ScenarioResult& r) { return r.status == Status::Failed; });
   fmt::print(stderr, "lll: bench: {} scenarios ({} failed) written to {}\n", report.results.size(), failed,
              options.outDir.string());
+  if (report.interrupted) {
+    fmt::print(stderr, "lll: bench: interrupted; the results hold the scenarios that finished\n");
+    return kInterruptedExitCode;
+  }
   if (report.validationMessages > 0)
     fmt::print(stderr, "lll: error: {} validation message(s); see above\n", report.validationMessages);
   return failed > 0 || report.validationMessages > 0 ? 1 : 0;

@@ -3,6 +3,7 @@
 // with GPU timestamps over warm-up plus timed frames, and writes results.json, results.csv,
 // summary.md and charts into one directory.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -71,18 +72,33 @@ struct BenchReport {
   std::vector<std::string> onlyTechniques;  // --technique: the other scenarios were left out
   std::vector<ScenarioResult> results;
   size_t validationMessages = 0;
+  bool interrupted = false;  // stopped by requestStop(): results holds the scenarios that finished
 };
 
 // Runs the suites on `context`, showing progress on stderr. Scenarios that cannot run here (an
 // unregistered technique, too many lights, a technique that draws no particles) are recorded as skipped;
 // those that throw anything else are recorded as failed. Throws InputError for an unknown suite.
-BenchReport runBench(Context& context, const BenchOptions& options);
+// `finished` is called with the report so far after each scenario. After requestStop() the run
+// ends between two frames, drops the scenario it was in and returns with `interrupted` set.
+BenchReport runBench(Context& context, const BenchOptions& options,
+                     const std::function<void(const BenchReport&)>& finished = {});
 
-// Writes results.json, results.csv, summary.md and, when gnuplot is installed, the PNG charts.
+// Asks a running runBench to stop; async-signal-safe (the CLI calls it on SIGINT and SIGTERM).
+void requestStop();
+
+// Throws InputError unless `dir` is, or can be made, a folder that takes new files.
+void checkOutputFolder(const std::filesystem::path& dir);
+// Writes results.json and results.csv, each replaced whole (never seen half-written).
+void writeResults(const BenchReport& report, const std::filesystem::path& dir);
+// writeResults, then summary.md and, when gnuplot is installed, the PNG charts.
 void writeReport(const BenchReport& report, const std::filesystem::path& dir);
 
-// The CLI command: creates the context, runs, writes. Returns 0, or 1 when a scenario failed or
-// validation spoke under --validate.
+// Exit code of an interrupted bench, as a shell reports a process ended by SIGINT.
+inline constexpr int kInterruptedExitCode = 130;
+
+// The CLI command: checks --out, creates the context, runs, writing the results after every
+// scenario. Returns 0; 1 when a scenario failed or validation spoke under --validate;
+// kInterruptedExitCode after SIGINT or SIGTERM, with the finished scenarios written.
 int runBenchCommand(const BenchOptions& options);
 
 }  // namespace lll::bench

@@ -40,10 +40,10 @@ void ProgressBar::note(const std::string& message) {
   std::fflush(stream_);
 }
 
-void ProgressBar::finish() {
+void ProgressBar::finish(size_t done) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin_).count();
-  fmt::print(stream_, "{}{} {}/{} done in {:.1f} s\n", terminal_ ? kClearLine : "", bar(total_), total_,
-             total_, seconds);
+  fmt::print(stream_, "{}{} {}/{} done in {:.1f} s\n", terminal_ ? kClearLine : "", bar(done), done, total_,
+             seconds);
 }
 
 }  // namespace lll::bench

@@ -15,8 +15,9 @@ class ProgressBar {
   void start(size_t index, const std::string& label);
   // Prints a message on a line of its own, above the bar.
   void note(const std::string& message);
-  // Ends the bar with the elapsed time.
-  void finish();
+  // Ends the bar with how many scenarios were done (fewer than the total when interrupted) and the
+  // elapsed time.
+  void finish(size_t done);
 
  private:
   std::string bar(size_t done) const;

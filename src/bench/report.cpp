@@ -5,18 +5,25 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 
+#include "render/output_files.h"
 #include "scene/errors.h"
 
 namespace lll::bench {
 
 namespace {
 
-std::ofstream openForWriting(const std::filesystem::path& path) {
-  std::ofstream out(path);
-  if (!out) throw InputError(fmt::format("--out: cannot write {}", path.string()));
-  return out;
+// Writes `path` whole through a temporary beside it: a reader (or an interrupted run) never sees
+// it half-written.
+void writeText(const std::filesystem::path& path, const std::function<void(std::ostream&)>& print) {
+  writeAtomically(path, [&](const std::filesystem::path& temporary) {
+    std::ofstream out(temporary);
+    print(out);
+    out.close();
+    if (!out) throw InputError(fmt::format("--out: cannot write {}", path.string()));
+  });
 }
 
 nlohmann::json namedValues(const NamedValues& values) {
@@ -109,15 +116,17 @@ void writeResultsJson(const BenchReport& report, const std::filesystem::path& pa
       {"suites", report.suites},
       {"only_techniques", report.onlyTechniques},
       {"validation_messages", report.validationMessages},
+      {"interrupted", report.interrupted},
   };
   nlohmann::json results = nlohmann::json::array();
   for (const ScenarioResult& r : report.results) results.push_back(resultJson(report, r));
   j["results"] = results;
-  openForWriting(path) << j.dump(2) << "\n";
+  writeText(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 
-void writeResultsCsv(const BenchReport& report, const std::filesystem::path& path) {
-  std::ofstream out = openForWriting(path);
+namespace {
+
+void printResultsCsv(const BenchReport& report, std::ostream& out) {
   out << "suite,scenario,scene,lights,width,height,technique,fill,tile,pass,median_ms,min_ms,max_ms,"
          "memory_bytes,psnr_vs_forward_db,p999_vs_forward,max_vs_forward,device,driver,commit,date\n";
   for (const ScenarioResult& r : report.results) {
@@ -135,13 +144,30 @@ void writeResultsCsv(const BenchReport& report, const std::filesystem::path& pat
   }
 }
 
-void writeReport(const BenchReport& report, const std::filesystem::path& dir) {
+}  // namespace
+
+void writeResultsCsv(const BenchReport& report, const std::filesystem::path& path) {
+  writeText(path, [&](std::ostream& out) { printResultsCsv(report, out); });
+}
+
+void checkOutputFolder(const std::filesystem::path& dir) {
   std::error_code error;
+  if (std::filesystem::exists(dir, error) && !std::filesystem::is_directory(dir, error))
+    throw InputError(fmt::format("--out {}: exists and is not a folder", dir.string()));
   std::filesystem::create_directories(dir, error);
   if (error)
-    throw InputError(fmt::format("--out {}: cannot create the directory: {}", dir.string(), error.message()));
+    throw InputError(fmt::format("--out {}: cannot create the folder: {}", dir.string(), error.message()));
+  checkOutputPath("--out", dir / "results.json");
+}
+
+void writeResults(const BenchReport& report, const std::filesystem::path& dir) {
   writeResultsJson(report, dir / "results.json");
   writeResultsCsv(report, dir / "results.csv");
+}
+
+void writeReport(const BenchReport& report, const std::filesystem::path& dir) {
+  checkOutputFolder(dir);
+  writeResults(report, dir);
   writeSummaryMarkdown(report, dir / "summary.md");
   writeCharts(report, dir);
 }

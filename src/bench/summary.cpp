@@ -10,6 +10,7 @@
 #include <map>
 
 #include "bench/report.h"
+#include "render/output_files.h"
 #include "scene/errors.h"
 
 namespace lll::bench {
@@ -171,6 +172,9 @@ std::string header(const BenchReport& report) {
     md += tableRow(
         {"techniques", fmt::format("only {} (--technique)", fmt::join(report.onlyTechniques, ", "))});
   if (!report.timestamps) md += tableRow({"warning", "the device has no GPU timestamps: every time is 0"});
+  if (report.interrupted)
+    md += tableRow({"interrupted", fmt::format("stopped after {} scenarios: later ones are missing",
+                                               report.results.size())});
   return md + "\n";
 }
 
@@ -184,9 +188,12 @@ void writeSummaryMarkdown(const BenchReport& report, const std::filesystem::path
       if (r.scenario.suite == suite) results.push_back(&r);
     md += suiteSection(suite, results, report.timedFrames);
   }
-  std::ofstream out(path);
-  if (!out) throw InputError(fmt::format("--out: cannot write {}", path.string()));
-  out << md;
+  writeAtomically(path, [&](const std::filesystem::path& temporary) {
+    std::ofstream out(temporary);
+    out << md;
+    out.close();
+    if (!out) throw InputError(fmt::format("--out: cannot write {}", path.string()));
+  });
 }
 
 }  // namespace lll::bench

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cstring>
 
 #include "gpu/vk_check.h"
@@ -301,7 +302,9 @@ void Context::pickPhysicalDevice(const std::string& selector) {
 
   int chosen = -1;
   if (!selector.empty() && std::all_of(selector.begin(), selector.end(), ::isdigit)) {
-    const unsigned long index = std::stoul(selector);
+    // Digits only, but maybe more than fit: an index that does not parse is no device's.
+    size_t index = infos.size();
+    std::from_chars(selector.data(), selector.data() + selector.size(), index);
     if (index >= infos.size() || !infos[index].usable)
       throw InputError(
           fmt::format("--device {}: no usable device with that index; devices:{}", selector, listing));

@@ -10,6 +10,7 @@
 #include "gpu/shader_registry.h"
 #include "gpu/vk_check.h"
 #include "scene/scene.h"
+#include "shared/gpu_types.h"
 
 namespace lll {
 
@@ -115,7 +116,6 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
     stages.push_back({VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0,
                       VK_SHADER_STAGE_FRAGMENT_BIT, fragment->handle(), "main", specialization.get()});
 
-  const VkVertexInputBindingDescription meshBinding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
   const VkVertexInputBindingDescription positionBinding{0, sizeof(float) * 3, VK_VERTEX_INPUT_RATE_VERTEX};
   const VkVertexInputAttributeDescription attributes[] = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
@@ -123,13 +123,30 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
       {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
       {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
   };
+  // Mesh passes add the frame's instances in draw order at binding 1, one gpu::MeshInstance per
+  // instance: the model matrix at locations 8-11, the normal matrix at 12-14.
+  const VkVertexInputBindingDescription meshBindings[] = {
+      {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX},
+      {1, sizeof(gpu::MeshInstance), VK_VERTEX_INPUT_RATE_INSTANCE}};
+  std::vector<VkVertexInputAttributeDescription> used;
+  if (desc.vertexInput == VertexInput::Position) used.push_back(attributes[0]);
+  if (desc.vertexInput == VertexInput::Mesh || desc.vertexInput == VertexInput::Vertices)
+    used.assign(std::begin(attributes), std::end(attributes));
+  if (desc.vertexInput == VertexInput::Mesh) {
+    for (uint32_t column = 0; column < 4; ++column)
+      used.push_back({8 + column, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
+                      uint32_t(offsetof(gpu::MeshInstance, model) + 16 * column)});
+    for (uint32_t column = 0; column < 3; ++column)
+      used.push_back({12 + column, 1, VK_FORMAT_R32G32B32_SFLOAT,
+                      uint32_t(offsetof(gpu::MeshInstance, normalMatrix) + 16 * column)});
+  }
   VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   if (desc.vertexInput != VertexInput::None) {
-    const bool mesh = desc.vertexInput == VertexInput::Mesh;
-    vertexInput.vertexBindingDescriptionCount = 1;
-    vertexInput.pVertexBindingDescriptions = mesh ? &meshBinding : &positionBinding;
-    vertexInput.vertexAttributeDescriptionCount = mesh ? 4 : 1;
-    vertexInput.pVertexAttributeDescriptions = attributes;
+    vertexInput.vertexBindingDescriptionCount = desc.vertexInput == VertexInput::Mesh ? 2 : 1;
+    vertexInput.pVertexBindingDescriptions =
+        desc.vertexInput == VertexInput::Position ? &positionBinding : meshBindings;
+    vertexInput.vertexAttributeDescriptionCount = uint32_t(used.size());
+    vertexInput.pVertexAttributeDescriptions = used.data();
   }
   VkPipelineInputAssemblyStateCreateInfo inputAssembly{
       VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};

@@ -41,7 +41,8 @@ class PipelineLayout {
 enum class BlendMode { None, Additive, Alpha };
 
 enum class VertexInput {
-  Mesh,      // lll::Vertex (position, normal, uv) at binding 0
+  Mesh,      // lll::Vertex (position, normal, uv) at binding 0, gpu::MeshInstance per instance at 1
+  Vertices,  // lll::Vertex at binding 0 only (light volume shells)
   Position,  // a bare vec3 position at binding 0 (light volumes)
   None,      // no vertex buffer: the shader makes its own positions
 };
@@ -101,9 +102,6 @@ class DescriptorWriter {
  public:
   DescriptorWriter& buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset = 0,
                            VkDeviceSize range = VK_WHOLE_SIZE);
-  DescriptorWriter& uniform(uint32_t binding, VkBuffer buffer) {
-    return this->buffer(binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffer);
-  }
   DescriptorWriter& storage(uint32_t binding, VkBuffer buffer) {
     return this->buffer(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer);
   }

@@ -27,7 +27,7 @@ namespace {
 constexpr double kDepthAndAccumulationBytesPerPixel = 4 + 8;
 
 const std::initializer_list<Binding> kEdgeAaBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
     {6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
     {7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
@@ -127,6 +127,7 @@ class Deferred final : public Technique {
   void createLightPipelines(Context& context) {
     GraphicsPipelineDesc desc;
     desc.vertexShader = "lighting/light_volume.vert";
+    desc.vertexInput = VertexInput::Vertices;
     desc.fragmentShader = "lighting/deferred_light.frag";
     desc.colorFormats = {kHdrFormat};
     desc.depthFormat = kDepthFormat;
@@ -165,7 +166,7 @@ class Deferred final : public Technique {
     beginRendering(frame.cmd, t.width, t.height, {{accumulationView(t), false}}, t.depth.view(),
                    VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
     DescriptorWriter writer;
-    writer.uniform(0, frame.uniformBuffer.handle())
+    writer.storage(0, frame.uniformBuffer.handle())
         .storage(1, frame.scene.lightBuffer().handle())
         .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
         .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target0().view(),
@@ -198,7 +199,7 @@ class Deferred final : public Technique {
                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     edgeAaPipeline_.bind(frame.cmd);
     DescriptorWriter()
-        .uniform(0, frame.uniformBuffer.handle())
+        .storage(0, frame.uniformBuffer.handle())
         .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
         .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, accumulation_.view(),
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)

@@ -15,6 +15,7 @@
 #include "lighting/light_volumes.h"
 #include "particles/particle_system.h"
 #include "render/gbuffer.h"
+#include "render/renderer.h"
 #include "scene/errors.h"
 #include "shared/lll_types.h"
 
@@ -35,10 +36,10 @@ constexpr VkShaderStageFlags kAllStages =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
 
 const std::initializer_list<Binding> kBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
@@ -179,8 +180,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
       linkBytes_(linkFormat_ == gpu::kLinkCompact ? 8 : 16),
       autoLinkFormat_(settings.lllLink == "auto") {
   const uint32_t tile = settings.tileSize;
-  if (tile == 0 || tile > gpu::kMaxTileSize || (tile & (tile - 1)) != 0)
-    throw InputError(fmt::format("--tile {}: expected 1, 2, 4, 8 or 16", tile));
+  validateTileSize(tile);
   tilesX_ = divideRoundingUp(targets.width, tile);
   tilesY_ = divideRoundingUp(targets.height, tile);
   tiles_ = tilesX_ * tilesY_;
@@ -207,7 +207,7 @@ LightLinkedList::~LightLinkedList() {
 void LightLinkedList::createBuffers() {
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   uniformBuffer_ =
-      Buffer(context_, sizeof(gpu::LllUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+      Buffer(context_, sizeof(gpu::LllUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
   heads_ = Buffer(context_, uint64_t(tiles_) * 4, storage, MemoryUse::Device);
   tileDepth_ = Buffer(context_, uint64_t(tiles_) * 4, storage, MemoryUse::Device);
   // Read by the CPU after each frame: link requests (overflow) and list statistics.
@@ -296,7 +296,7 @@ void LightLinkedList::createShells(const GpuScene& scene) {
 
 DescriptorWriter LightLinkedList::descriptors(const FrameContext& frame) const {
   DescriptorWriter writer = meshPassDescriptors(frame);
-  writer.uniform(3, uniformBuffer_.handle())
+  writer.storage(3, uniformBuffer_.handle())
       .storage(4, heads_.handle())
       .storage(5, links_.handle())
       .storage(6, counters_.handle())
@@ -424,7 +424,7 @@ void LightLinkedList::shade(FrameContext& frame) {
                    t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
     p.pipeline.bind(frame.cmd);
     descriptors(frame).push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadeLayout_.handle());
-    frame.scene.draw(frame.cmd, shadeLayout_.handle(), p.filter, frame.eye);
+    frame.scene.draw(frame.cmd, shadeLayout_.handle(), p.filter);
     vkCmdEndRendering(frame.cmd);
   }
   if (frame.particles)

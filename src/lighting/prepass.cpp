@@ -37,7 +37,7 @@ constexpr uint32_t kStencilZPass = 1;  // camera outside: count the faces in fro
 constexpr uint32_t kStencilZFail = 2;  // camera may be inside: count the faces behind the scene
 
 const std::initializer_list<Binding> kMeshBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
+    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGraphicsStages},
     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -186,6 +186,7 @@ class Prepass final : public Technique {
   void createLightPipelines(Context& context) {
     GraphicsPipelineDesc desc;
     desc.vertexShader = "lighting/light_volume.vert";
+    desc.vertexInput = VertexInput::Vertices;
     desc.fragmentShader = "lighting/prepass_light.frag";
     desc.colorFormats = {kLightBufferFormat, kLightBufferFormat};
     desc.depthFormat = desc.stencilFormat = depthStencilFormat_;
@@ -235,7 +236,7 @@ class Prepass final : public Technique {
     normalsPipeline_.bind(frame.cmd);
     meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                                     meshLayout_.handle());
-    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque, frame.eye);
+    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque);
     vkCmdEndRendering(frame.cmd);
     toShaderRead(frame.cmd, normals_);
     const VkPipelineStageFlags2 tests =
@@ -260,7 +261,7 @@ class Prepass final : public Technique {
                                depthStencil_.view(),
                                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, false);
     DescriptorWriter writer;
-    writer.uniform(0, frame.uniformBuffer.handle())
+    writer.storage(0, frame.uniformBuffer.handle())
         .storage(1, frame.scene.lightBuffer().handle())
         .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
         .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, normals_.view(),
@@ -303,7 +304,7 @@ class Prepass final : public Technique {
         .image(4, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, specular_.view(),
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
         .push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, meshLayout_.handle());
-    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque, frame.eye);
+    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque);
     vkCmdEndRendering(frame.cmd);
   }
 

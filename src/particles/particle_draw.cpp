@@ -43,14 +43,14 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(ParticleShadin
 
 DescriptorWriter ParticleSystem::descriptors(const FrameContext& frame, const LightListBuffers& lists) const {
   DescriptorWriter writer;
-  writer.uniform(0, frame.uniformBuffer.handle())
+  writer.storage(0, frame.uniformBuffer.handle())
       .storage(1, frame.scene.lightBuffer().handle())
-      .uniform(11, uniforms_.handle())
+      .storage(11, uniforms_.handle())
       .storage(12, particles_.handle())
       .storage(13, drawOrder_.handle())
       .storage(14, counters_.handle());
   if (lists.heads)
-    writer.uniform(3, lists.uniforms)
+    writer.storage(3, lists.uniforms)
         .storage(4, lists.heads)
         .storage(5, lists.links)
         .storage(6, lists.counters)

@@ -22,14 +22,14 @@ constexpr VkShaderStageFlags kAllStages =
 // Set 0 of every particle pass: frame.glsl's 0 and 1, lll_data.glsl's 3..7 (written only when the
 // technique walks light lists), particle_data.glsl's 11..15 and the scene depth (16).
 const std::initializer_list<Binding> kParticleBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {11, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kAllStages},
+    {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {13, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {14, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
@@ -88,7 +88,7 @@ void ParticleSystem::createBuffers() {
         fmt::format("{} particles need a {:.1f} MiB storage buffer; this device's largest is {:.1f} MiB",
                     capacity_, double(stateBytes) / 1048576.0, double(largest) / 1048576.0));
   uniforms_ =
-      Buffer(context_, sizeof(gpu::ParticleUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+      Buffer(context_, sizeof(gpu::ParticleUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
   particles_ = Buffer(context_, stateBytes, storage, MemoryUse::Device);
   drawOrder_ = Buffer(context_, orderBytes, storage, MemoryUse::Device);
   counters_ = Buffer(context_, sizeof(gpu::ParticleCounters), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
@@ -153,7 +153,7 @@ gpu::ParticleStepPush ParticleSystem::stepPush(uint64_t step) const {
 void ParticleSystem::recordStep(VkCommandBuffer cmd) {
   simulate_.bind(cmd);
   DescriptorWriter()
-      .uniform(11, uniforms_.handle())
+      .storage(11, uniforms_.handle())
       .storage(12, particles_.handle())
       .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
   const gpu::ParticleStepPush push = stepPush(steps_++);
@@ -194,8 +194,8 @@ void ParticleSystem::sort(FrameContext& frame) {
                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   keys_.bind(cmd);
   DescriptorWriter()
-      .uniform(0, frame.uniformBuffer.handle())
-      .uniform(11, uniforms_.handle())
+      .storage(0, frame.uniformBuffer.handle())
+      .storage(11, uniforms_.handle())
       .storage(12, particles_.handle())
       .storage(13, drawOrder_.handle())
       .storage(14, counters_.handle())
@@ -212,7 +212,7 @@ void ParticleSystem::buildIndirect(FrameContext& frame) {
   computeToCompute(cmd);
   indirect_.bind(cmd);
   DescriptorWriter()
-      .uniform(11, uniforms_.handle())
+      .storage(11, uniforms_.handle())
       .storage(14, counters_.handle())
       .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
   vkCmdDispatch(cmd, 1, 1, 1);

@@ -42,6 +42,7 @@ class FieldReader {
   // Rejects members not in `known`: a misspelt field would otherwise be silently ignored.
   void onlyKnown(const json& object, const std::string& parent,
                  std::initializer_list<const char*> known) const {
+    if (!object.is_object()) fail(parent, fmt::format("must be an object (got {})", object.dump()));
     for (const auto& [key, value] : object.items()) {
       if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) == known.end())
         fail(join(parent, key.c_str()),
@@ -169,6 +170,30 @@ void readLook(const FieldReader& r, const json& doc, ParticlePreset& p) {
   p.additive = r.number(r.member(doc, "", "additive"), "additive", 0.0, 1.0);
 }
 
+// nlohmann keeps the last of two equal keys: a preset edited by hand would silently lose the first.
+json parseRejectingDuplicateKeys(const std::string& text, const std::string& source) {
+  std::vector<std::vector<std::string>> open;  // the keys seen in each object being parsed
+  std::string duplicate;
+  const json doc = json::parse(
+      text,
+      [&](int, json::parse_event_t event, json& value) {
+        if (event == json::parse_event_t::object_start) open.emplace_back();
+        if (event == json::parse_event_t::object_end && !open.empty()) open.pop_back();
+        if (event == json::parse_event_t::key && !open.empty() && duplicate.empty()) {
+          const std::string key = value.get<std::string>();
+          if (std::find(open.back().begin(), open.back().end(), key) != open.back().end()) duplicate = key;
+          open.back().push_back(key);
+        }
+        return true;
+      },
+      false);
+  if (doc.is_discarded()) throw InputError(fmt::format("particle preset {}: not valid JSON", source));
+  if (!duplicate.empty())
+    throw InputError(
+        fmt::format("particle preset {}: the key \"{}\" appears twice in one object", source, duplicate));
+  return doc;
+}
+
 std::string readTextFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("particle preset {}: cannot read the file", path.string()));
@@ -187,8 +212,7 @@ std::vector<std::string> builtinParticlePresets() {
 }
 
 ParticlePreset parseParticlePreset(const std::string& text, const std::string& source) {
-  const json doc = json::parse(text, nullptr, false);
-  if (doc.is_discarded()) throw InputError(fmt::format("particle preset {}: not valid JSON", source));
+  const json doc = parseRejectingDuplicateKeys(text, source);
   if (!doc.is_object())
     throw InputError(fmt::format("particle preset {}: expected a JSON object of fields", source));
   const FieldReader r(source);
@@ -211,7 +235,8 @@ ParticlePreset loadParticlePreset(const std::string& nameOrPath) {
   for (const EmbeddedText& preset : embeddedParticlePresets())
     if (preset.name == nameOrPath) return parseParticlePreset(std::string(preset.text), nameOrPath);
   const std::filesystem::path path(nameOrPath);
-  if (!std::filesystem::exists(path))
+  std::error_code error;  // a name too long for the file system is an error, not an exception
+  if (!std::filesystem::exists(path, error))
     throw InputError(fmt::format("--particles {}: neither a built-in preset ({}) nor an existing .json file",
                                  nameOrPath, fmt::join(builtinParticlePresets(), ", ")));
   return parseParticlePreset(readTextFile(path), path.string());

@@ -40,7 +40,7 @@ void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
 
 DescriptorWriter meshPassDescriptors(const FrameContext& frame) {
   DescriptorWriter writer;
-  writer.uniform(0, frame.uniformBuffer.handle())
+  writer.storage(0, frame.uniformBuffer.handle())
       .storage(1, frame.scene.lightBuffer().handle())
       .storage(2, frame.scene.materialBuffer().handle());
   return writer;
@@ -58,7 +58,7 @@ void drawSceneIntoHdr(FrameContext& frame, const Pipeline& pipeline, const Pipel
                  VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
   pipeline.bind(frame.cmd);
   meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout.handle());
-  frame.scene.draw(frame.cmd, layout.handle(), filter, frame.eye);
+  frame.scene.draw(frame.cmd, layout.handle(), filter);
   vkCmdEndRendering(frame.cmd);
 }
 

@@ -36,7 +36,6 @@ struct FrameContext {
   const Buffer& uniformBuffer;  // FrameUniforms
   const gpu::FrameUniforms& uniforms;
   const RenderSettings& settings;
-  glm::vec3 eye;
   bool capture;  // the frame is read back: techniques may add diagnostic passes (stats)
   // With --particles: sorted and ready to draw; each technique draws them after its glass with
   // particles->draw(frame, its shading). Null without particles.
@@ -63,7 +62,7 @@ inline constexpr VkShaderStageFlags kGraphicsStages =
 
 // Set 0 of a mesh pass: frame uniforms (0), lights (1), materials (2); meshPassDescriptors writes it.
 inline const std::initializer_list<Binding> kMeshPassBindings = {
-    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kGraphicsStages},
+    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGraphicsStages},
     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
 };

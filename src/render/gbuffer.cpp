@@ -31,7 +31,7 @@ void GBuffer::record(FrameContext& frame, const char* passName, VkImageView accu
   pipeline_.bind(frame.cmd);
   meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                                   layout_.handle());
-  frame.scene.draw(frame.cmd, layout_.handle(), DrawFilter::Opaque, frame.eye);
+  frame.scene.draw(frame.cmd, layout_.handle(), DrawFilter::Opaque);
   vkCmdEndRendering(frame.cmd);
   for (const Image* image : {&target0_, &target1_})
     image->transition(frame.cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,

@@ -1,10 +1,14 @@
 #include "render/gpu_scene.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
+#include "scene/errors.h"
 #include "scene/lights.h"
 #include "shared/gpu_types.h"
 
@@ -13,6 +17,37 @@ namespace lll {
 namespace {
 
 constexpr uint32_t kTexturesPerMaterial = 5;
+
+// The inverse transpose of the model's 3x3, which keeps normals perpendicular under non-uniform
+// scales: its cofactor matrix over the determinant. A singular transform (a scale of 0 flattens
+// the mesh) has no inverse; its cofactors still give the flattened surface's normal.
+std::array<glm::vec4, 3> normalMatrix(const glm::mat4& model) {
+  const glm::dvec3 c0(model[0]), c1(model[1]), c2(model[2]);
+  const glm::dmat3 cofactors(glm::cross(c1, c2), glm::cross(c2, c0), glm::cross(c0, c1));
+  const double det = glm::dot(c0, glm::cross(c1, c2));
+  glm::dmat3 n = cofactors / det;
+  for (int i = 0; i < 9; ++i)
+    if (!std::isfinite(float(n[i / 3][i % 3]))) n = cofactors;
+  return {glm::vec4(glm::vec3(n[0]), 0.0f), glm::vec4(glm::vec3(n[1]), 0.0f),
+          glm::vec4(glm::vec3(n[2]), 0.0f)};
+}
+
+// The six planes of a Vulkan clip volume (-w <= x, y <= w, 0 <= z <= w) in world space: a point p
+// is inside when dot(plane.xyz, p) + plane.w >= 0 for each.
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj) {
+  const glm::mat4 t = glm::transpose(viewProj);  // rows of viewProj as columns
+  return {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[2], t[3] - t[2]};
+}
+
+bool outside(const std::array<glm::vec4, 6>& planes, const Bounds& box) {
+  for (const glm::vec4& plane : planes) {
+    // The box's corner farthest along the plane's normal: if even it is behind, the box is.
+    const glm::vec3 far(plane.x >= 0.0f ? box.max.x : box.min.x, plane.y >= 0.0f ? box.max.y : box.min.y,
+                        plane.z >= 0.0f ? box.max.z : box.min.z);
+    if (glm::dot(glm::vec3(plane), far) + plane.w < 0.0f) return true;
+  }
+  return false;
+}
 
 uint32_t mipLevelsFor(uint32_t width, uint32_t height) {
   return uint32_t(std::floor(std::log2(double(std::max(width, height))))) + 1;
@@ -96,6 +131,7 @@ Texture solidTexture(const char* name, uint8_t r, uint8_t g, uint8_t b, uint8_t 
 
 GpuScene::GpuScene(Context& context, const Scene& scene) : context_(context), scene_(scene) {
   uploadGeometry();
+  uploadInstances();
   uploadMaterials();
   uploadLights(scene.lights);
   uploadTextures();
@@ -117,17 +153,52 @@ void GpuScene::uploadGeometry() {
   indices_ = Buffer(context_, scene_.indices.size() * sizeof(uint32_t),
                     geometry | VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::Device, "indices");
   indices_.upload(std::span<const uint32_t>(scene_.indices));
-  for (uint32_t i = 0; i < scene_.instances.size(); ++i) {
-    const Instance& instance = scene_.instances[i];
-    for (const Primitive& p : scene_.meshes[instance.mesh].primitives) {
+  meshInstances_.resize(scene_.meshes.size());
+  for (uint32_t i = 0; i < scene_.instances.size(); ++i)
+    meshInstances_[scene_.instances[i].mesh].push_back(i);
+  for (uint32_t mesh = 0; mesh < scene_.meshes.size(); ++mesh) {
+    if (meshInstances_[mesh].empty()) continue;
+    for (const Primitive& p : scene_.meshes[mesh].primitives) {
       if (p.indexCount == 0) continue;
       Bounds local;
       for (uint32_t k = 0; k < p.indexCount; ++k)
         local.expand(scene_.vertices[p.vertexOffset + scene_.indices[p.firstIndex + k]].position);
-      const glm::vec3 center = glm::vec3(instance.transform * glm::vec4(local.center(), 1.0f));
-      draws_.push_back({i, p.firstIndex, p.indexCount, p.vertexOffset, p.material, center});
+      draws_.push_back({mesh, p.firstIndex, p.indexCount, p.vertexOffset, p.material, local.center()});
     }
   }
+  // One material bind per material and pass.
+  std::stable_sort(draws_.begin(), draws_.end(),
+                   [](const DrawItem& a, const DrawItem& b) { return a.material < b.material; });
+}
+
+// Each instance's transform and normal matrix once, on the CPU. The frame's instance buffer has
+// room for every instance once (opaque draws) plus once per blended primitive of its mesh (blended
+// draws); a device that cannot hold it is refused with the numbers, rather than drawing only some.
+void GpuScene::uploadInstances() {
+  instances_.reserve(scene_.instances.size());
+  std::vector<Bounds> local(scene_.meshes.size());
+  for (uint32_t mesh = 0; mesh < scene_.meshes.size(); ++mesh)
+    if (!meshInstances_[mesh].empty()) local[mesh] = scene_.meshBounds(mesh);
+  for (const Instance& instance : scene_.instances) {
+    const auto n = normalMatrix(instance.transform);
+    instances_.push_back({instance.transform, {n[0], n[1], n[2]}});
+    instanceBounds_.push_back(transformBounds(local[instance.mesh], instance.transform));
+  }
+  uint64_t entries = scene_.instances.size();
+  for (const DrawItem& d : draws_)
+    if (scene_.materials[d.material].alphaMode == AlphaMode::Blend) entries += meshInstances_[d.mesh].size();
+  const uint64_t bytes = std::max<uint64_t>(1, entries) * sizeof(gpu::MeshInstance);
+  try {
+    frameInstances_ =
+        Buffer(context_, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::Upload, "instances");
+  } catch (const VulkanError& e) {
+    throw InputError(
+        fmt::format("{} instances ({} per frame with the blended draws) need {:.1f} MiB of "
+                    "instance data, which this device cannot allocate ({})",
+                    scene_.instances.size(), entries, double(bytes) / 1048576.0, e.what()));
+  }
+  meshFirst_.assign(scene_.meshes.size(), 0);
+  meshVisible_.assign(scene_.meshes.size(), 0);
 }
 
 void GpuScene::uploadMaterials() {
@@ -241,37 +312,84 @@ bool GpuScene::hasBlendDraws() const {
                      [&](const DrawItem& d) { return matches(d, DrawFilter::Blend); });
 }
 
-void GpuScene::draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter, const glm::vec3& eye,
-                    bool materialCulling) const {
-  std::vector<const DrawItem*> items;
-  for (const DrawItem& d : draws_)
-    if (matches(d, filter)) items.push_back(&d);
-  if (items.empty()) return;
-  if (filter == DrawFilter::Blend) {
-    std::stable_sort(items.begin(), items.end(), [&](const DrawItem* a, const DrawItem* b) {
-      return glm::dot(a->center - eye, a->center - eye) > glm::dot(b->center - eye, b->center - eye);
-    });
+void GpuScene::prepareFrame(const glm::mat4& viewProj, const glm::vec3& eye) {
+  const auto planes = frustumPlanes(viewProj);
+  auto* order = static_cast<gpu::MeshInstance*>(frameInstances_.mapped());
+  uint32_t written = 0;
+  visibleInstances_ = 0;
+  std::vector<bool> visible(scene_.instances.size());
+  for (uint32_t mesh = 0; mesh < meshInstances_.size(); ++mesh) {
+    meshFirst_[mesh] = written;
+    for (uint32_t instance : meshInstances_[mesh]) {
+      visible[instance] = !outside(planes, instanceBounds_[instance]);
+      if (visible[instance]) order[written++] = instances_[instance];
+    }
+    meshVisible_[mesh] = written - meshFirst_[mesh];
+    visibleInstances_ += meshVisible_[mesh];
   }
-  const VkDeviceSize offset = 0;
-  VkBuffer vertexBuffer = vertices_.handle();
-  vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+  // Blended draws: every visible (primitive, instance) pair, farthest first, then runs of one
+  // primitive drawn together.
+  struct Blended {
+    float distance2;
+    uint32_t draw;
+    uint32_t instance;
+  };
+  std::vector<Blended> blended;
+  for (uint32_t d = 0; d < draws_.size(); ++d) {
+    if (!matches(draws_[d], DrawFilter::Blend)) continue;
+    for (uint32_t instance : meshInstances_[draws_[d].mesh]) {
+      if (!visible[instance]) continue;
+      const glm::vec3 center(scene_.instances[instance].transform * glm::vec4(draws_[d].center, 1.0f));
+      blended.push_back({glm::dot(center - eye, center - eye), d, instance});
+    }
+  }
+  std::stable_sort(blended.begin(), blended.end(),
+                   [](const Blended& a, const Blended& b) { return a.distance2 > b.distance2; });
+  blendRuns_.clear();
+  for (const Blended& b : blended) {
+    if (blendRuns_.empty() || blendRuns_.back().draw != b.draw) blendRuns_.push_back({b.draw, written, 0});
+    order[written++] = instances_[b.instance];
+    ++blendRuns_.back().instanceCount;
+  }
+}
+
+void GpuScene::bindMaterial(VkCommandBuffer cmd, VkPipelineLayout layout, uint32_t material,
+                            bool materialCulling) const {
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &materialSets_[material], 0,
+                          nullptr);
+  if (materialCulling)
+    vkCmdSetCullMode(cmd, scene_.materials[material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+  const gpu::DrawPush push{glm::uvec4(material, 0, 0, 0)};
+  vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
+                     &push);
+}
+
+std::vector<GpuScene::DrawRun> GpuScene::runs(DrawFilter filter) const {
+  if (filter == DrawFilter::Blend) return blendRuns_;
+  std::vector<DrawRun> runs;
+  for (uint32_t d = 0; d < draws_.size(); ++d) {
+    const uint32_t mesh = draws_[d].mesh;
+    if (matches(draws_[d], filter) && meshVisible_[mesh] > 0)
+      runs.push_back({d, meshFirst_[mesh], meshVisible_[mesh]});
+  }
+  return runs;
+}
+
+void GpuScene::draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter,
+                    bool materialCulling) const {
+  const std::vector<DrawRun> runs = this->runs(filter);
+  if (runs.empty()) return;
+  const VkDeviceSize offsets[2] = {0, 0};
+  const VkBuffer vertexBuffers[2] = {vertices_.handle(), frameInstances_.handle()};
+  vkCmdBindVertexBuffers(cmd, 0, 2, vertexBuffers, offsets);
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   uint32_t boundMaterial = ~0u;
-  for (const DrawItem* d : items) {
-    if (d->material != boundMaterial) {
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &materialSets_[d->material],
-                              0, nullptr);
-      if (materialCulling)
-        vkCmdSetCullMode(
-            cmd, scene_.materials[d->material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
-      boundMaterial = d->material;
-    }
-    gpu::DrawPush push{};
-    push.model = scene_.instances[d->instance].transform;
-    push.ids = glm::uvec4(d->material, d->instance, 0, 0);
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(push), &push);
-    vkCmdDrawIndexed(cmd, d->indexCount, 1, d->firstIndex, int32_t(d->vertexOffset), 0);
+  for (const DrawRun& run : runs) {
+    const DrawItem& d = draws_[run.draw];
+    if (d.material != boundMaterial) bindMaterial(cmd, layout, d.material, materialCulling);
+    boundMaterial = d.material;
+    vkCmdDrawIndexed(cmd, d.indexCount, run.instanceCount, d.firstIndex, int32_t(d.vertexOffset),
+                     run.firstInstance);
   }
 }
 

@@ -1,7 +1,16 @@
 #pragma once
 // The scene on the GPU: one vertex and index buffer, the material and light arrays, textures with
-// mipmaps, one descriptor set of textures per material (set 1 of every mesh pass), and the draw
+// mipmaps, the instances (a transform and normal matrix each), one descriptor set per material
+// (set 1 of every mesh pass: its textures), and the draw
 // lists every technique shares (opaque + mask first, blended afterwards sorted back to front).
+//
+// Instancing: a draw covers one primitive of a mesh in every visible instance of that mesh, so
+// the number of draws follows meshes x materials, not instances. Each frame prepareFrame() culls
+// the instances against the view frustum and writes their transforms and normal matrices (computed
+// once on the CPU) in draw order into vertex binding 1, read at instance rate: each mesh's visible
+// instances for the opaque draws, then the (primitive, instance) pairs of blended draws sorted
+// back to front. Instance-rate attributes rather than a storage buffer indexed by
+// gl_InstanceIndex: lavapipe loads storage buffers lane by lane, which doubled vertex shading.
 #include <vulkan/vulkan.h>
 
 #include <vector>
@@ -9,18 +18,20 @@
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "scene/scene.h"
+#include "shared/gpu_types.h"
 
 namespace lll {
 
 class Context;
 
+// One primitive of one mesh: drawn once per visible instance of the mesh.
 struct DrawItem {
-  uint32_t instance;
+  uint32_t mesh;
   uint32_t firstIndex;
   uint32_t indexCount;
   uint32_t vertexOffset;
   uint32_t material;
-  glm::vec3 center;  // world-space centre, for back-to-front sorting of blended draws
+  glm::vec3 center;  // object-space centre, for back-to-front sorting of blended draws
 };
 
 enum class DrawFilter { OpaqueOnly, MaskOnly, Opaque, Blend, All };
@@ -40,20 +51,39 @@ class GpuScene {
   // Replaces the light array (e.g. lights animated by the CPU); grows the buffer when needed.
   void uploadLights(const std::vector<Light>& lights);
 
-  // Draws the filtered primitives with the given pipeline already bound: binds geometry, material
-  // sets and per-draw constants. `materialCulling` sets the cull mode per material (double-sided
-  // materials are not culled); otherwise the bound pipeline's cull mode is kept.
-  // `eye` orders blended draws back to front.
-  void draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter, const glm::vec3& eye,
+  // Culls the instances against `viewProj`'s frustum and writes the draw order for the frame's
+  // draws, blended ones sorted back to front from `eye`. Call once per frame before recording
+  // (the previous frame's GPU work must be done: the instances are in host-visible memory).
+  void prepareFrame(const glm::mat4& viewProj, const glm::vec3& eye);
+  // Draws the filtered primitives, instanced, with the given pipeline already bound: binds
+  // geometry, material sets and per-draw constants. `materialCulling` sets the cull mode per
+  // material (double-sided materials are not culled); otherwise the bound pipeline's is kept.
+  void draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter,
             bool materialCulling = true) const;
   bool hasBlendDraws() const;
+  // The instanced draws draw() records for `filter` this frame: one per primitive with a visible
+  // instance (per run of one primitive, for blended draws sorted back to front).
+  uint32_t drawCount(DrawFilter filter) const { return uint32_t(runs(filter).size()); }
+  // Instances inside the frustum at the last prepareFrame().
+  uint32_t visibleInstances() const { return visibleInstances_; }
 
  private:
   void uploadGeometry();
+  void uploadInstances();
   void uploadMaterials();
   void uploadTextures();
   void createMaterialSets();
   bool matches(const DrawItem& item, DrawFilter filter) const;
+  void bindMaterial(VkCommandBuffer cmd, VkPipelineLayout layout, uint32_t material,
+                    bool materialCulling) const;
+
+  // A run of the frame's draw order drawn by one vkCmdDrawIndexed.
+  struct DrawRun {
+    uint32_t draw;  // index into draws_
+    uint32_t firstInstance;
+    uint32_t instanceCount;
+  };
+  std::vector<DrawRun> runs(DrawFilter filter) const;
 
   Context& context_;
   const Scene& scene_;
@@ -63,7 +93,15 @@ class GpuScene {
   Buffer lights_;
   uint32_t lightCount_ = 0;
   std::vector<Image> textures_;  // scene textures, then neutral white, neutral normal, black
-  std::vector<DrawItem> draws_;
+  std::vector<DrawItem> draws_;  // grouped by material
+  std::vector<std::vector<uint32_t>> meshInstances_;  // the instances of each mesh
+  std::vector<Bounds> instanceBounds_;                // world-space box of each instance, for culling
+  std::vector<gpu::MeshInstance> instances_;          // per scene instance
+  Buffer frameInstances_;                             // instances in draw order, rewritten by prepareFrame()
+  std::vector<uint32_t> meshFirst_;  // this frame: each mesh's visible instances in the order
+  std::vector<uint32_t> meshVisible_;
+  std::vector<DrawRun> blendRuns_;  // this frame: blended draws, back to front
+  uint32_t visibleInstances_ = 0;
   VkSampler sampler_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout materialSetLayout_ = VK_NULL_HANDLE;
   VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;

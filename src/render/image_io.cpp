@@ -34,6 +34,7 @@ void writePfm(const std::filesystem::path& path, const HdrImage& image) {
       for (int c = 0; c < 3; ++c) row[size_t(x) * 3 + c] = image.rgba[(size_t(y) * image.width + x) * 4 + c];
     out.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size() * sizeof(float)));
   }
+  out.close();
   if (!out) throw InputError(fmt::format("{}: write failed", path.string()));
 }
 

@@ -5,6 +5,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "gpu/context.h"
@@ -26,6 +27,11 @@ constexpr uint32_t kParticleStepsPerSubmission = 256;
 
 }  // namespace
 
+void validateTileSize(uint32_t tile) {
+  if (tile == 0 || tile > gpu::kMaxTileSize || (tile & (tile - 1)) != 0)
+    throw InputError(fmt::format("--tile {}: expected 1, 2, 4, 8 or 16", tile));
+}
+
 void validateResolution(uint32_t width, uint32_t height) {
   if (width == 0 || height == 0 || width > gpu::kMaxImageSide || height > gpu::kMaxImageSide)
     throw InputError(fmt::format("resolution {}x{}: width and height must be between 1 and {}", width, height,
@@ -40,6 +46,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
       sceneBounds_(scene.worldBounds()),
       timer_(context) {
   validateResolution(settings.width, settings.height);
+  validateTileSize(settings.tileSize);  // every frame's uniforms divide by it
   if (scene.lights.size() > gpu::kMaxLights)
     throw InputError(
         fmt::format("{} lights: at most {} are supported (the light array is one storage buffer)",
@@ -47,7 +54,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   gpuScene_ = std::make_unique<GpuScene>(context, scene);
   createTargets();
   uniformBuffer_ =
-      Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+      Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
   updateUniforms();
 
   depthLayout_ = meshPassLayout(context, *gpuScene_);
@@ -59,7 +66,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   depthMask_ = Pipeline(context, depthLayout_, depth);
 
   tonemapLayout_ =
-      PipelineLayout(context, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+      PipelineLayout(context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
                                {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
                                {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
   tonemap_ = Pipeline(context, tonemapLayout_, "post/tonemap.comp");
@@ -112,6 +119,18 @@ void Renderer::updateUniforms() {
   u.proj[1][1] *= -1.0f;                                            // Vulkan's y points down
   u.viewProj = u.proj * u.view;
   u.invViewProj = glm::inverse(u.viewProj);
+  // Finite inputs can still overflow: a camera or scene 1e30 m across, a field of view of 1e-30.
+  const auto finite = [](const glm::mat4& m) {
+    for (int i = 0; i < 16; ++i)
+      if (!std::isfinite(m[i / 4][i % 4])) return false;
+    return true;
+  };
+  if (!finite(u.viewProj) || !finite(u.invViewProj))
+    throw InputError(fmt::format(
+        "camera '{}' (eye {}, {}, {}; field of view {} rad) over scene bounds {} m across gives a projection "
+        "that is not finite; the camera or the scene is out of any sensible range",
+        camera_.name, camera_.eye.x, camera_.eye.y, camera_.eye.z, camera_.yfov,
+        bounds.valid() ? glm::length(bounds.extent()) : 0.0f));
   u.cameraPosition = glm::vec4(camera_.eye, 1.0f);
   u.viewport = glm::vec4(settings_.width, settings_.height, 1.0f / settings_.width, 1.0f / settings_.height);
   const float tanHalf = std::tan(camera_.yfov * 0.5f);
@@ -151,6 +170,8 @@ void Renderer::advanceParticles(uint32_t steps) {
 
 std::vector<std::pair<std::string, double>> Renderer::stats() const {
   auto s = technique_->stats();
+  s.push_back({"instances", double(scene_.instances.size())});
+  s.push_back({"visible_instances", double(gpuScene_->visibleInstances())});
   if (particles_) {
     const auto p = particles_->stats();
     s.insert(s.end(), p.begin(), p.end());
@@ -159,9 +180,10 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
 }
 
 void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advanceParticles) {
+  gpuScene_->prepareFrame(uniforms_.viewProj, camera_.eye);
   timer_.reset(cmd);
-  FrameContext frame{context_,  cmd,       timer_,      *gpuScene_, targets_,        uniformBuffer_,
-                     uniforms_, settings_, camera_.eye, capture,    particles_.get()};
+  FrameContext frame{context_,       cmd,       timer_,    *gpuScene_, targets_,
+                     uniformBuffer_, uniforms_, settings_, capture,    particles_.get()};
   depthPrepass(frame);
   if (particles_) particles_->update(frame, advanceParticles);
   targets_.hdr.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -185,9 +207,9 @@ void Renderer::depthPrepass(FrameContext& frame) {
                  VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
   depthOpaque_.bind(cmd);
   meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depthLayout_.handle());
-  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::OpaqueOnly, camera_.eye);
+  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::OpaqueOnly);
   depthMask_.bind(cmd);
-  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::MaskOnly, camera_.eye);
+  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::MaskOnly);
   vkCmdEndRendering(cmd);
   targets_.depth.transition(
       cmd, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
@@ -210,7 +232,7 @@ void Renderer::tonemap(FrameContext& frame) {
                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   tonemap_.bind(cmd);
   DescriptorWriter()
-      .uniform(0, uniformBuffer_.handle())
+      .storage(0, uniformBuffer_.handle())
       .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
       .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapLayout_.handle());

@@ -38,6 +38,8 @@ struct FrameResult {
   uint32_t rerenders = 0;        // times the frame was recorded again (e.g. link pool growth)
 };
 
+// Throws InputError unless `tile` is 1, 2, 4, 8 or 16 (gpu::kMaxTileSize).
+void validateTileSize(uint32_t tile);
 // Checks a requested resolution; throws InputError for zero, negative-as-huge or oversized values.
 void validateResolution(uint32_t width, uint32_t height);
 
@@ -60,7 +62,8 @@ class Renderer {
   Technique& technique() { return *technique_; }
   GpuScene& gpuScene() { return *gpuScene_; }
   ParticleSystem* particles() { return particles_.get(); }
-  // The technique's numbers for --stats, then the particle system's.
+  // The technique's numbers for --stats, the scene's instances (all, and inside the frustum in the
+  // last frame), then the particle system's.
   std::vector<std::pair<std::string, double>> stats() const;
 
  private:

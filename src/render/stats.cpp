@@ -77,6 +77,8 @@ void writeStatsJson(const std::filesystem::path& path, const Context& context, c
   std::ofstream out(path);
   if (!out) throw InputError(fmt::format("--stats {}: cannot open for writing", path.string()));
   out << j.dump(2) << "\n";
+  out.close();
+  if (!out) throw InputError(fmt::format("--stats {}: write failed (disk full?)", path.string()));
 }
 
 }  // namespace lll

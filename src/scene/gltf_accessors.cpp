@@ -95,7 +95,7 @@ class AccessorReader {
   [[noreturn]] void fail(const std::string& what) const { throw InputError(file_ + ": " + what); }
 
   ElementSpan checkedElements(int bufferView, size_t byteOffset, size_t count, size_t elementSize,
-                              bool useViewStride, const std::string& name) const;
+                              size_t componentSize, bool useViewStride, const std::string& name) const;
   template <typename T>
   void applySparse(const tinygltf::Accessor& accessor, const std::string& name, std::vector<T>& values) const;
 
@@ -121,7 +121,8 @@ void AccessorReader::checkBufferViews() const {
 }
 
 AccessorReader::ElementSpan AccessorReader::checkedElements(int bufferView, size_t byteOffset, size_t count,
-                                                            size_t elementSize, bool useViewStride,
+                                                            size_t elementSize, size_t componentSize,
+                                                            bool useViewStride,
                                                             const std::string& name) const {
   if (bufferView < 0 || size_t(bufferView) >= model_.bufferViews.size()) {
     fail(name + " refers to bufferView " + std::to_string(bufferView) + ", but the file has " +
@@ -140,6 +141,15 @@ AccessorReader::ElementSpan AccessorReader::checkedElements(int bufferView, size
          " bytes (stride " + std::to_string(stride) + ") from byte " + std::to_string(byteOffset) +
          " of bufferView " + std::to_string(bufferView) + ", which is only " +
          std::to_string(view.byteLength) + " bytes long. The file is corrupt or truncated; re-export it.");
+  }
+  // glTF: an accessor's start in its buffer, and the stride, are multiples of its component size.
+  // A misaligned start reads the bytes of neighbouring values as floats: garbage, often NaN.
+  if ((view.byteOffset + byteOffset) % componentSize != 0 || stride % componentSize != 0) {
+    fail(name + " starts at byte " + std::to_string(view.byteOffset + byteOffset) +
+         " of its buffer (bufferView " + std::to_string(bufferView) + " byteOffset " +
+         std::to_string(view.byteOffset) + " + accessor byteOffset " + std::to_string(byteOffset) +
+         ", stride " + std::to_string(stride) + "), not a multiple of its " + std::to_string(componentSize) +
+         "-byte components as glTF requires");
   }
   const uint8_t* base = model_.buffers[size_t(view.buffer)].data.data();
   return {base + view.byteOffset + byteOffset, stride};
@@ -179,7 +189,7 @@ std::vector<T> AccessorReader::readAccessor(int index, const std::string& what, 
     values.assign(accessor.count * components, T{0});
   } else {
     const ElementSpan span = checkedElements(accessor.bufferView, accessor.byteOffset, accessor.count,
-                                             components * componentSize, true, name);
+                                             components * componentSize, componentSize, true, name);
     values.resize(accessor.count * components);
     for (size_t i = 0; i < accessor.count; ++i) {
       for (size_t c = 0; c < components; ++c) {
@@ -211,10 +221,10 @@ void AccessorReader::applySparse(const tinygltf::Accessor& accessor, const std::
   const size_t componentSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType)));
   const size_t indexSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(sparse.indices.componentType)));
   const ElementSpan indices = checkedElements(sparse.indices.bufferView, size_t(sparse.indices.byteOffset),
-                                              count, indexSize, false, name + " sparse indices");
+                                              count, indexSize, indexSize, false, name + " sparse indices");
   const ElementSpan replacements =
       checkedElements(sparse.values.bufferView, size_t(sparse.values.byteOffset), count,
-                      components * componentSize, false, name + " sparse values");
+                      components * componentSize, componentSize, false, name + " sparse values");
   for (size_t k = 0; k < count; ++k) {
     const auto target =
         size_t(loadComponent(indices.data + k * indices.stride, sparse.indices.componentType, false));

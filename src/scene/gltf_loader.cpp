@@ -5,11 +5,15 @@
 
 // Before the implementation macros: it includes tiny_gltf.h, whose implementation must come once.
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_numbers.h"
+#include "scene/gltf_schema.h"
 
 #define TINYGLTF_IMPLEMENTATION
 #define TINYGLTF_NO_STB_IMAGE_WRITE  // stb_image_write belongs to the image output code
 #define STB_IMAGE_IMPLEMENTATION
 #include <tiny_gltf.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
@@ -19,6 +23,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/gtx/component_wise.hpp>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -126,6 +131,12 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
   return true;
 }
 
+bool hasZeroNormal(const std::vector<float>& normals) {
+  for (size_t i = 0; i + 2 < normals.size(); i += 3)
+    if (glm::length(glm::make_vec3(&normals[i])) < 1e-6f) return true;
+  return false;
+}
+
 bool looksLikeJsonObject(const std::vector<unsigned char>& bytes) {
   size_t i = bytes.size() >= 3 && std::memcmp(bytes.data(), "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;  // UTF-8 BOM
   while (i < bytes.size() && std::isspace(bytes[i])) ++i;
@@ -219,6 +230,12 @@ class GltfImporter {
   void parse();
   void checkVersionAndExtensions();
   void checkBufferViews() const { gltf_detail::checkBufferViews(model_, file_); }
+  void checkFinite(const std::vector<float>& values, const std::string& what) const {
+    const auto bad = std::find_if(values.begin(), values.end(), [](float x) { return !std::isfinite(x); });
+    if (bad != values.end())
+      fail(what + " has a component that is infinite or NaN (" + std::to_string(*bad) + " at component " +
+           std::to_string(bad - values.begin()) + ")");
+  }
   template <typename T>
   std::vector<T> readAccessor(int index, const std::string& what, int type, Components allowed) const {
     return gltf_detail::readAccessor<T>(model_, file_, index, what, type, allowed);
@@ -237,6 +254,7 @@ class GltfImporter {
   uint32_t materialFor(int material, const std::string& where);
 
   void placeNodes();
+  void placeMesh(uint32_t mesh, const glm::mat4& world, int node);
   glm::dmat4 localTransform(const tinygltf::Node& node, int index) const;
   void addLight(const tinygltf::Node& node, int nodeIndex, const glm::dmat4& world);
   void addCamera(int cameraIndex, int nodeIndex, const glm::dmat4& world);
@@ -247,9 +265,11 @@ class GltfImporter {
   tinygltf::Model model_;
   Scene scene_;
   std::vector<std::string> warnings_;
+  gltf_detail::NumberReader numbers_{file_, warnings_};
   std::vector<DecodedImage> images_;                  // per glTF image, decoded on first use
   std::map<std::pair<int, bool>, int> textureIndex_;  // (glTF image, srgb) -> Scene::textures
   std::optional<uint32_t> defaultMaterial_;
+  std::map<uint32_t, Bounds> meshBounds_;  // object-space bounds of each placed mesh
   std::set<std::string> ignoredAttributes_;
   bool hasMorphTargets_ = false;
   bool usesOtherTexCoords_ = false;
@@ -279,6 +299,7 @@ void GltfImporter::parse() {
     fail("its JSON is nested more than " + std::to_string(kMaxJsonNesting) +
          " levels deep; no valid glTF needs that, so the file is corrupt or not glTF");
   }
+  gltf_detail::checkFieldTypes(reinterpret_cast<const char*>(bytes.data() + jsonBegin), jsonSize, file_);
 
   FileAccess access{std::filesystem::absolute(path_).parent_path().string()};
   tinygltf::TinyGLTF gltf;
@@ -330,13 +351,19 @@ Material GltfImporter::convertMaterial(const tinygltf::Material& in, int index) 
   Material out;
   out.name = in.name.empty() ? "material " + std::to_string(index) : in.name;
   const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
-  if (pbr.baseColorFactor.size() == 4) out.baseColorFactor = glm::make_vec4(pbr.baseColorFactor.data());
-  if (in.emissiveFactor.size() == 3) out.emissiveFactor = glm::make_vec3(in.emissiveFactor.data());
-  out.metallic = float(pbr.metallicFactor);
-  out.roughness = float(pbr.roughnessFactor);
-  out.normalScale = float(in.normalTexture.scale);
-  out.occlusionStrength = float(in.occlusionTexture.strength);
-  out.alphaCutoff = float(in.alphaCutoff);
+  const std::string name = "material " + inQuotes(out.name);
+  out.baseColorFactor = glm::make_vec4(
+      numbers_.clampedArray(pbr.baseColorFactor, 4, 0.0, 1.0, name + " baseColorFactor").data());
+  // Emissive factors above 1 are common in files older than KHR_materials_emissive_strength.
+  out.emissiveFactor = glm::make_vec3(
+      numbers_.clampedArray(in.emissiveFactor, 3, 0.0, kMaxEmissiveStrength, name + " emissiveFactor")
+          .data());
+  out.metallic = numbers_.clamped(pbr.metallicFactor, 0.0, 1.0, name + " metallicFactor");
+  out.roughness = numbers_.clamped(pbr.roughnessFactor, 0.0, 1.0, name + " roughnessFactor");
+  out.normalScale = numbers_.finite(in.normalTexture.scale, name + " normalTexture scale");
+  out.occlusionStrength =
+      numbers_.clamped(in.occlusionTexture.strength, 0.0, 1.0, name + " occlusion strength");
+  out.alphaCutoff = numbers_.atLeast(in.alphaCutoff, 0.0, name + " alphaCutoff");
   out.doubleSided = in.doubleSided;
   if (in.alphaMode == "OPAQUE") {
     out.alphaMode = AlphaMode::Opaque;
@@ -351,8 +378,15 @@ Material GltfImporter::convertMaterial(const tinygltf::Material& in, int index) 
   if (auto strength = in.extensions.find("KHR_materials_emissive_strength");
       strength != in.extensions.end()) {
     const tinygltf::Value& value = strength->second.Get("emissiveStrength");
-    if (value.IsNumber()) out.emissiveStrength = float(value.GetNumberAsDouble());
+    if (value.IsNumber())
+      out.emissiveStrength = numbers_.atLeast(value.GetNumberAsDouble(), 0.0, name + " emissiveStrength");
   }
+  const double emission =
+      double(std::max({out.emissiveFactor.r, out.emissiveFactor.g, out.emissiveFactor.b})) *
+      double(out.emissiveStrength);
+  if (emission > double(kMaxEmissiveStrength))
+    fail(name + " emits " + std::to_string(emission) + " (emissiveFactor x emissiveStrength), above the " +
+         std::to_string(kMaxEmissiveStrength) + " the renderer's 32-bit shading takes without overflow");
   out.baseColorTexture = textureFor(pbr.baseColorTexture, true, out.name, "base colour");
   out.metallicRoughnessTexture =
       textureFor(pbr.metallicRoughnessTexture, false, out.name, "metallic-roughness");
@@ -452,6 +486,8 @@ Mesh GltfImporter::convertMesh(int index) {
   const tinygltf::Mesh& in = model_.meshes[size_t(index)];
   Mesh out;
   out.name = in.name.empty() ? "mesh " + std::to_string(index) : in.name;
+  if (in.primitives.empty())
+    fail("mesh " + inQuotes(out.name) + " has no primitives; glTF requires at least one");
   for (size_t i = 0; i < in.primitives.size(); ++i) {
     convertPrimitive(in.primitives[i], "mesh " + inQuotes(out.name) + " primitive " + std::to_string(i), out);
   }
@@ -476,9 +512,7 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
   const std::vector<float> positions =
       readAccessor<float>(position->second, where + " POSITION", TINYGLTF_TYPE_VEC3, Components::Float);
   const size_t vertexCount = positions.size() / 3;
-  if (!std::all_of(positions.begin(), positions.end(), [](float x) { return std::isfinite(x); })) {
-    fail(where + " has a POSITION that is infinite or NaN");
-  }
+  checkFinite(positions, where + " POSITION");
   std::vector<float> normals;
   std::vector<float> uvs;
   std::vector<float> tangents;
@@ -493,6 +527,14 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
     } else if (attribute != "POSITION") {
       ignoredAttributes_.insert(attribute);
     }
+  }
+  checkFinite(normals, where + " NORMAL");
+  checkFinite(uvs, where + " TEXCOORD_0");
+  if (hasZeroNormal(normals)) {
+    // glTF requires unit normals; an accessor with no bufferView reads as all zeros. Without a
+    // usable normal the triangle's own one is what glTF prescribes when NORMAL is absent.
+    warn(where + " has a NORMAL of zero length (an accessor without data?); flat normals are used instead");
+    normals.clear();
   }
   if ((!normals.empty() && normals.size() / 3 != vertexCount) ||
       (!uvs.empty() && uvs.size() / 2 != vertexCount) ||
@@ -651,17 +693,14 @@ void GltfImporter::placeNodes() {
     visited[size_t(index)] = true;
     const tinygltf::Node& node = model_.nodes[size_t(index)];
     const glm::dmat4 world = parentWorld * localTransform(node, index);
-    for (int column = 0; column < 4; ++column) {
-      if (glm::any(glm::isnan(world[column])) || glm::any(glm::isinf(world[column]))) {
-        fail("node " + std::to_string(index) + " has a world transform that is infinite or NaN");
-      }
-    }
+    gltf_detail::checkFiniteMatrix(glm::mat4(world), file_,
+                                   "node " + std::to_string(index) + "'s world transform");
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model_.meshes.size()) {
         fail("node " + std::to_string(index) + " uses mesh " + std::to_string(node.mesh) +
              ", but the file has " + std::to_string(model_.meshes.size()) + " meshes");
       }
-      scene_.instances.push_back({uint32_t(node.mesh), glm::mat4(world)});
+      placeMesh(uint32_t(node.mesh), glm::mat4(world), index);
     }
     if (node.camera >= 0) addCamera(node.camera, index, world);
     addLight(node, index, world);
@@ -671,8 +710,27 @@ void GltfImporter::placeNodes() {
   }
 }
 
+// Every placed vertex must have coordinates whose squares are finite floats (distances, the far
+// plane); a node scaled or moved too far would give an infinite projection and NaN pixels.
+void GltfImporter::placeMesh(uint32_t mesh, const glm::mat4& world, int node) {
+  auto known = meshBounds_.find(mesh);
+  if (known == meshBounds_.end()) known = meshBounds_.emplace(mesh, scene_.meshBounds(mesh)).first;
+  const Bounds placed = transformBounds(known->second, world);
+  const float largest = glm::max(glm::compMax(glm::abs(placed.min)), glm::compMax(glm::abs(placed.max)));
+  if (placed.valid() && !(largest <= kMaxWorldCoordinate))
+    fail("node " + std::to_string(node) + " places mesh " + std::to_string(mesh) + " at coordinates up to " +
+         fmt::format("{}", largest) + " m, beyond the " + fmt::format("{}", kMaxWorldCoordinate) +
+         " m the renderer's 32-bit arithmetic takes");
+  scene_.instances.push_back({mesh, world});
+}
+
 glm::dmat4 GltfImporter::localTransform(const tinygltf::Node& node, int index) const {
   const std::string name = "node " + std::to_string(index);
+  for (const auto& [values, what] :
+       {std::pair(&node.matrix, " matrix"), std::pair(&node.translation, " translation"),
+        std::pair(&node.rotation, " rotation"), std::pair(&node.scale, " scale")})
+    for (size_t i = 0; i < values->size(); ++i)
+      numbers_.finite((*values)[i], name + what + "[" + std::to_string(i) + "]");
   if (!node.matrix.empty()) {
     if (node.matrix.size() != 16)
       fail(name + " has a matrix of " + std::to_string(node.matrix.size()) + " numbers, not 16");
@@ -693,7 +751,8 @@ glm::dmat4 GltfImporter::localTransform(const tinygltf::Node& node, int index) c
   if (!node.rotation.empty()) {
     const glm::dquat rotation(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
     const double length = glm::length(rotation);
-    if (std::isfinite(length) && length > 1e-12) transform *= glm::mat4_cast(rotation / length);
+    if (!(length > 1e-12)) fail(name + " has a rotation of zero length; glTF requires a unit quaternion");
+    transform *= glm::mat4_cast(rotation / length);
   }
   if (!node.scale.empty()) transform = glm::scale(transform, glm::make_vec3(node.scale.data()));
   return transform;
@@ -715,20 +774,19 @@ void GltfImporter::addLight(const tinygltf::Node& node, int nodeIndex, const glm
     warn(name + " is of type '" + in.type + "'; only point and spot lights are supported, so it is skipped");
     return;
   }
-  if (!in.color.empty() && in.color.size() != 3)
-    fail(name + " has a color of " + std::to_string(in.color.size()) + " numbers, not 3");
-  if (!std::isfinite(in.intensity) || in.intensity < 0.0)
-    fail(name + " has an intensity that is negative or not finite");
-  if (!std::isfinite(in.range) || in.range < 0.0) fail(name + " has a range that is negative or not finite");
-
   Light out;
   out.type = in.type == "spot" ? LightType::Spot : LightType::Point;
   out.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
   out.direction = unitOr(glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, 0.0f, -1.0f));
-  if (!in.color.empty()) out.color = glm::make_vec3(in.color.data());
-  out.intensity = float(in.intensity);
+  if (!in.color.empty())
+    out.color = glm::make_vec3(numbers_.clampedArray(in.color, 3, 0.0, 1.0, name + " color").data());
+  out.intensity = numbers_.atLeast(in.intensity, 0.0, name + " intensity");
+  if (out.intensity > kMaxLightIntensity)
+    fail(name + " has intensity " + std::to_string(out.intensity) + " cd, above the " +
+         std::to_string(kMaxLightIntensity) + " the renderer's 32-bit shading can take without overflow");
   // tinygltf stores an absent range as 0, which the extension forbids as a value.
-  out.range = in.range > 0.0 ? float(in.range) : rangeForUnboundedLight(out.intensity, out.color);
+  const float range = numbers_.atLeast(in.range, 0.0, name + " range");
+  out.range = range > 0.0f ? range : rangeForUnboundedLight(out.intensity, out.color);
   if (out.type == LightType::Spot) {
     constexpr double kHalfPi = 1.5707963267948966;
     const double outer = std::clamp(in.spot.outerConeAngle, 1e-4, kHalfPi);
@@ -755,15 +813,15 @@ void GltfImporter::addCamera(int cameraIndex, int nodeIndex, const glm::dmat4& w
          "; only perspective cameras are supported, so it is skipped");
     return;
   }
-  const double yfov = in.perspective.yfov;
-  if (!(yfov > 0.0 && yfov < 3.14159))
-    fail("camera " + inQuotes(out.name) + " has yfov " + std::to_string(yfov) +
-         "; it must be between 0 and pi");
+  const float yfov = numbers_.finite(in.perspective.yfov, "camera " + inQuotes(out.name) + " yfov");
+  if (!(yfov > 0.0f && yfov < 3.14159f))
+    fail("camera " + inQuotes(out.name) + " has yfov " + fmt::format("{}", in.perspective.yfov) +
+         (yfov == 0.0f ? ", which is 0 as a 32-bit float" : "") + "; it must be between 0 and pi");
   const glm::dmat3 rotation(world);
   out.eye = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
   out.target = out.eye + unitOr(rotation * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, 0.0f, -1.0f));
   out.up = unitOr(rotation * glm::dvec3(0.0, 1.0, 0.0), glm::vec3(0.0f, 1.0f, 0.0f));
-  out.yfov = float(yfov);
+  out.yfov = yfov;
   scene_.cameras.push_back(out);
 }
 

@@ -14,6 +14,12 @@ namespace lll {
 // volume. At this threshold the clipped tail is invisible after tonemapping at exposure 1.
 inline constexpr float kUnboundedLightCutoff = 1e-3f;
 
+// The brightest light (cd) and emission a scene may hold. Shading multiplies them by up to 1e4
+// (1/d^2 with d >= 1 cm), a specular peak (~1e4) and the exposure (<= 1e6): beyond this the 32-bit
+// product overflows, and infinity times a zero somewhere is a NaN pixel.
+inline constexpr float kMaxLightIntensity = 1e20f;
+inline constexpr float kMaxEmissiveStrength = 1e20f;
+
 // Range for a glTF light with no "range": where intensity * max(colour) / d^2 falls to the cutoff.
 float rangeForUnboundedLight(float intensity, const glm::vec3& color);
 

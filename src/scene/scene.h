@@ -113,6 +113,13 @@ struct Bounds {
   glm::vec3 extent() const { return max - min; }
 };
 
+// The box around `bounds` transformed by `transform`: exact for transforms that keep the axes
+// (translations, scales, quarter turns), a little larger than the transformed geometry otherwise.
+Bounds transformBounds(const Bounds& bounds, const glm::mat4& transform);
+
+// World coordinates beyond this are refused: squared distances must stay finite in 32-bit floats.
+inline constexpr float kMaxWorldCoordinate = 1e18f;
+
 struct Scene {
   std::string name;
   std::vector<Vertex> vertices;
@@ -126,7 +133,9 @@ struct Scene {
   // Where a particle emitter sits, when the scene has one (the default scene's smoke source).
   std::optional<glm::vec3> smokeSource;
 
-  // World-space bounds of all instanced geometry.
+  // Object-space bounds of a mesh's triangles.
+  Bounds meshBounds(uint32_t mesh) const;
+  // World-space bounds of all instanced geometry: each instance's transformBounds of its mesh's.
   Bounds worldBounds() const;
   uint64_t triangleCount() const;
 };

@@ -20,7 +20,8 @@ Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings)
   } else {
     const std::filesystem::path path(name);
     const std::string ext = path.extension().string();
-    if (!std::filesystem::exists(path) && ext != ".gltf" && ext != ".glb") {
+    std::error_code error;  // a name too long for the file system is an error, not an exception
+    if (!std::filesystem::exists(path, error) && ext != ".gltf" && ext != ".glb") {
       std::string names;
       for (const BuiltinSceneInfo& info : builtinScenes()) names += (names.empty() ? "" : ", ") + info.name;
       throw InputError(fmt::format(
@@ -29,6 +30,10 @@ Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings)
     LoadReport report;
     scene = loadGltf(path, &report);
     if (warnings) warnings->insert(warnings->end(), report.warnings.begin(), report.warnings.end());
+    // A valid glTF may hold only lights or cameras; rendering one gives a black image.
+    if (scene.triangleCount() == 0)
+      throw InputError(fmt::format(
+          "{}: has nothing to draw: no node of its scene places a mesh with a triangle", path.string()));
   }
   if (uint64_t(scene.lights.size()) + request.extraLights > gpu::kMaxLights)
     throw InputError(fmt::format("--lights {}: the scene would have {} lights; at most {} are supported",

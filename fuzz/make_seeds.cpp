@@ -1,0 +1,176 @@
+// Writes the fuzzer's seed corpus into a folder: each test scene of assets/ as a self-contained
+// .glb (its .bin as the binary chunk), and a small lit, textured quad as .glb and as .gltf with its
+// buffer in a data URI, so mutations start from files that load.
+// Usage: make_seeds ASSETS_DIR OUT_DIR
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::vector<uint8_t> readBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void put32(std::vector<uint8_t>& out, uint32_t v) {
+  for (int i = 0; i < 4; ++i) out.push_back(uint8_t(v >> (8 * i)));
+}
+
+// GLB 2.0: header, JSON chunk padded with spaces, BIN chunk padded with zeros.
+void writeGlb(const fs::path& path, json doc, std::vector<uint8_t> bin) {
+  doc["buffers"] = json::array({{{"byteLength", bin.size()}}});
+  std::string text = doc.dump();
+  while (text.size() % 4) text += ' ';
+  while (bin.size() % 4) bin.push_back(0);
+  std::vector<uint8_t> out = {'g', 'l', 'T', 'F'};
+  put32(out, 2);
+  put32(out, uint32_t(12 + 8 + text.size() + 8 + bin.size()));
+  put32(out, uint32_t(text.size()));
+  put32(out, 0x4E4F534A);  // "JSON"
+  out.insert(out.end(), text.begin(), text.end());
+  put32(out, uint32_t(bin.size()));
+  put32(out, 0x004E4942);  // "BIN\0"
+  out.insert(out.end(), bin.begin(), bin.end());
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(out.data()), std::streamsize(out.size()));
+}
+
+std::string base64(const std::vector<uint8_t>& bytes) {
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    const size_t left = bytes.size() - i;
+    uint32_t n = uint32_t(bytes[i]) << 16;
+    if (left > 1) n |= uint32_t(bytes[i + 1]) << 8;
+    if (left > 2) n |= bytes[i + 2];
+    out += digits[(n >> 18) & 63];
+    out += digits[(n >> 12) & 63];
+    out += left > 1 ? digits[(n >> 6) & 63] : '=';
+    out += left > 2 ? digits[n & 63] : '=';
+  }
+  return out;
+}
+
+// A 2x2 RGBA PNG.
+const std::vector<uint8_t> kPng = {
+    0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52,
+    0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x02, 0x08, 0x06, 0x00, 0x00, 0x00, 0x72, 0xb6, 0x0d,
+    0x24, 0x00, 0x00, 0x00, 0x13, 0x49, 0x44, 0x41, 0x54, 0x78, 0xda, 0x63, 0xf8, 0xcf, 0xc0, 0xf0,
+    0x1f, 0x0c, 0x81, 0x34, 0x08, 0x34, 0x00, 0x00, 0x49, 0x49, 0x09, 0x78, 0x9c, 0x51, 0x17, 0x92,
+    0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+
+// A quad with normals, UVs, 16-bit indices, a sparse accessor, a textured material with every
+// extension the loader reads, a point and a spot light and a camera.
+void writeQuad(const fs::path& dir) {
+  std::vector<uint8_t> bin;
+  auto append = [&](const void* data, size_t size) {
+    const size_t at = bin.size();
+    bin.insert(bin.end(), static_cast<const uint8_t*>(data), static_cast<const uint8_t*>(data) + size);
+    while (bin.size() % 4) bin.push_back(0);
+    return at;
+  };
+  const float positions[] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+  const float normals[] = {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0};
+  const float uvs[] = {0, 0, 1, 0, 1, 1, 0, 1};
+  const uint16_t indices[] = {0, 2, 1, 0, 3, 2};
+  const uint8_t sparseIndex[] = {1};
+  const float sparseValue[] = {1, 0.2f, -1};
+  const size_t p = append(positions, sizeof positions), n = append(normals, sizeof normals),
+               u = append(uvs, sizeof uvs), i = append(indices, sizeof indices),
+               si = append(sparseIndex, sizeof sparseIndex), sv = append(sparseValue, sizeof sparseValue),
+               png = append(kPng.data(), kPng.size());
+  auto view = [](size_t offset, size_t length) {
+    return json{{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}};
+  };
+  json doc = {
+      {"asset", {{"version", "2.0"}}},
+      {"extensionsUsed", {"KHR_lights_punctual", "KHR_materials_emissive_strength"}},
+      {"bufferViews",
+       {view(p, sizeof positions), view(n, sizeof normals), view(u, sizeof uvs), view(i, sizeof indices),
+        view(si, sizeof sparseIndex), view(sv, sizeof sparseValue), view(png, kPng.size())}},
+      {"accessors",
+       {{{"bufferView", 0},
+         {"componentType", 5126},
+         {"count", 4},
+         {"type", "VEC3"},
+         {"min", {-1, 0, -1}},
+         {"max", {1, 0.2, 1}},
+         {"sparse",
+          {{"count", 1},
+           {"indices", {{"bufferView", 4}, {"componentType", 5121}}},
+           {"values", {{"bufferView", 5}}}}}},
+        {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+        {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
+        {{"bufferView", 3}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}}},
+      {"images", {{{"bufferView", 6}, {"mimeType", "image/png"}}}},
+      {"textures", {{{"source", 0}}}},
+      {"materials",
+       {{{"name", "tile"},
+         {"pbrMetallicRoughness",
+          {{"baseColorFactor", {1, 0.8, 0.6, 1}},
+           {"metallicFactor", 0.1},
+           {"baseColorTexture", {{"index", 0}}}}},
+         {"normalTexture", {{"index", 0}, {"scale", 0.5}}},
+         {"emissiveFactor", {0.1, 0, 0}},
+         {"alphaMode", "MASK"},
+         {"alphaCutoff", 0.3},
+         {"doubleSided", true},
+         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}}}},
+      {"meshes",
+       {{{"primitives",
+          {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
+            {"indices", 3},
+            {"material", 0}}}}}}},
+      {"extensions",
+       {{"KHR_lights_punctual",
+         {{"lights",
+           {{{"type", "point"}, {"color", {1, 0.9, 0.8}}, {"intensity", 5.0}, {"range", 6.0}},
+            {{"type", "spot"},
+             {"intensity", 20.0},
+             {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}}}}}}}},
+      {"cameras", {{{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.01}}}}}},
+      {"nodes",
+       {{{"mesh", 0}, {"children", {1}}, {"scale", {2, 1, 2}}},
+        {{"translation", {0, 1, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
+        {{"rotation", {-0.7071068, 0, 0, 0.7071068}}, {"translation", {0, 3, 0}}, {"camera", 0}},
+        {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5, 2, 0, 1}},
+         {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}}}},
+      {"scenes", {{{"nodes", {0, 2, 3}}}}},
+      {"scene", 0}};
+  writeGlb(dir / "quad.glb", doc, bin);
+  doc["buffers"] = json::array(
+      {{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
+  std::ofstream(dir / "quad.gltf") << doc.dump();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: make_seeds ASSETS_DIR OUT_DIR\n");
+    return 2;
+  }
+  const fs::path assets = argv[1], out = argv[2];
+  fs::create_directories(out);
+  int written = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(assets)) {
+    if (entry.path().extension() != ".gltf") continue;
+    json doc = json::parse(std::ifstream(entry.path()));
+    const fs::path bin = entry.path().parent_path() / doc["buffers"][0]["uri"].get<std::string>();
+    writeGlb(out / (entry.path().stem().string() + ".glb"), doc, readBytes(bin));
+    ++written;
+  }
+  writeQuad(out);
+  std::printf("make_seeds: %d scenes and a quad (.glb, .gltf) in %s\n", written, out.c_str());
+  return written > 0 ? 0 : 1;
+}
