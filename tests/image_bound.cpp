@@ -3,12 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <vector>
 
+#include "render/image_io.h"
 #include "test_support.h"
 
 namespace lll::test {
@@ -32,6 +35,24 @@ void appendToReport(const std::string& label, const ImageDifference& d, const Im
   out << line;
 }
 
+// With $LLL_TEST_IMAGE_DIR set, a comparison that fails leaves the candidate, the reference and
+// their difference (x 16) there as PNGs, named after the label, to look at.
+void dumpImages(const std::string& label, const LdrImage& candidate, const LdrImage& reference) {
+  const char* dir = std::getenv("LLL_TEST_IMAGE_DIR");
+  if (dir == nullptr || *dir == '\0') return;
+  std::string name = label;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
+  LdrImage diff = candidate;
+  for (size_t i = 0; i < diff.rgba.size(); ++i)
+    diff.rgba[i] = i % 4 == 3 ? 255
+                              : uint8_t(std::min(255, 16 * std::abs(int(candidate.rgba[i]) - int(reference.rgba[i]))));
+  std::filesystem::create_directories(dir);
+  writePng(std::filesystem::path(dir) / (name + "-candidate.png"), candidate);
+  writePng(std::filesystem::path(dir) / (name + "-reference.png"), reference);
+  writePng(std::filesystem::path(dir) / (name + "-difference.png"), diff);
+}
+
 }  // namespace
 
 ImageDifference expectWithinBound(const LdrImage& candidate, const LdrImage& reference,
@@ -45,6 +66,8 @@ ImageDifference expectWithinBound(const LdrImage& candidate, const LdrImage& ref
   ::testing::Test::RecordProperty(label + " psnr", std::to_string(d.psnr));
   ::testing::Test::RecordProperty(label + " max", std::to_string(d.worst));
   appendToReport(label, d, bound);
+  if (d.psnr < bound.minPsnr || d.typicalShare < bound.typicalShare || d.worst > bound.worst)
+    dumpImages(label, candidate, reference);
   EXPECT_GE(d.psnr, bound.minPsnr) << label;
   EXPECT_GE(d.typicalShare, bound.typicalShare)
       << label << ": too many pixels differ by more than " << bound.typical << " of 255";

@@ -143,18 +143,22 @@ glm::vec3 groundPoint(const Renderer& renderer, uint32_t x, uint32_t y, uint32_t
 }
 
 // Every way lll shades an opaque surface: on the geometry (forward; lll's fragment shading, the
-// chapter's) and from screen-space buffers (lll's compute shading over the thin G-buffer, the
-// default; deferred; the light pre-pass).
+// chapter's), from the visibility buffer's rebuilt surfaces (forward and lll in compute, the
+// default) and from screen-space buffers (lll's compute shading over the thin G-buffer; deferred;
+// the light pre-pass).
 struct ShadingPath {
   const char* name;
   const char* technique;
   const char* lllShade;
+  const char* surfaces;
 };
-constexpr ShadingPath kShadingPaths[] = {{"forward", "forward", "compute"},
-                                         {"lll-fragment", "lll", "fragment"},
-                                         {"lll-compute", "lll", "compute"},
-                                         {"deferred", "deferred", "compute"},
-                                         {"prepass", "prepass", "compute"}};
+constexpr ShadingPath kShadingPaths[] = {{"forward", "forward", "compute", "gbuffer"},
+                                         {"forward-visibility", "forward", "compute", "visibility"},
+                                         {"lll-fragment", "lll", "fragment", "gbuffer"},
+                                         {"lll-visibility", "lll", "compute", "visibility"},
+                                         {"lll-gbuffer", "lll", "compute", "gbuffer"},
+                                         {"deferred", "deferred", "compute", "visibility"},
+                                         {"prepass", "prepass", "compute", "visibility"}};
 
 struct Counts {
   int lit = 0;
@@ -172,6 +176,7 @@ Counts checkAgainstFormula(const Scene& scene, const PlaneMaterial& pm, const Li
   settings.ambient = 0.0f;
   settings.technique = path.technique;
   settings.lllShade = path.lllShade;
+  settings.surfaces = path.surfaces;
   settings.lllFill = fill;
   Context& context = test::gpuContext();
   const size_t before = context.validationMessages().size();

@@ -64,8 +64,7 @@ const test::ImageBound& boundFor(const RenderSettings& settings) {
 Comparison renderWithForward(const Scene& scene, RenderSettings settings) {
   Comparison c;
   c.candidate = test::render(scene, settings);
-  settings.technique = "forward";
-  c.reference = test::render(scene, settings);
+  c.reference = test::render(scene, test::reference(settings));
   return c;
 }
 
@@ -187,9 +186,7 @@ const Scene& assetScene(const std::string& name, uint32_t lights) {
 int pixelsLitByLights(const Scene& scene, const Comparison& c, const RenderSettings& settings) {
   Scene unlit = scene;
   unlit.lights.clear();
-  RenderSettings forward = settings;
-  forward.technique = "forward";
-  const test::Rendered dark = test::render(unlit, forward);
+  const test::Rendered dark = test::render(unlit, test::reference(settings));
   int lit = 0;
   for (size_t i = 0; i < dark.ldr.rgba.size(); i += 4) {
     for (size_t k = i; k < i + 3; ++k) {

@@ -289,7 +289,7 @@ TEST_P(LllImages, EveryFillMatchesForward) {
   RenderSettings settings;
   settings.width = 160;
   settings.height = 90;
-  const test::Rendered reference = test::render(scene, settings);
+  const test::Rendered reference = test::render(scene, test::reference(settings));
   settings.technique = "lll";
   for (const Variant& v : kVariants) {
     settings.lllFill = v.fill;
@@ -319,7 +319,7 @@ TEST(LllImages, AwkwardLightsMatchForward) {
   RenderSettings settings;
   settings.width = 128;
   settings.height = 128;
-  const test::Rendered reference = test::render(scene, settings);
+  const test::Rendered reference = test::render(scene, test::reference(settings));
   settings.technique = "lll";
   for (const Variant& v : kVariants) {
     settings.lllFill = v.fill;
@@ -334,7 +334,7 @@ TEST(LllImages, TinyPoolGrowsAndStillMatches) {
   RenderSettings settings;
   settings.width = 160;
   settings.height = 90;
-  const test::Rendered reference = test::render(scene, settings);
+  const test::Rendered reference = test::render(scene, test::reference(settings));
   settings.technique = "lll";
   settings.linksPerTile = 1;  // far too small: the first frame must overflow
   for (const char* fill : {"compute", "ray", "shells"}) {

@@ -39,18 +39,20 @@ const Scene& sceneFor(const SceneCase& c) {
   return cache.emplace(c.name, std::move(scene)).first->second;
 }
 
-// The techniques as users pick them: lll with its default fill and shading, and the chapter's
-// fragment shading, which walks the lists from a different stage.
+// The techniques as users pick them, on surfaces from the visibility buffer (the default) and from
+// the geometry; lll also with the chapter's fragment shading, which walks the lists from a
+// different stage.
 struct TechniqueCase {
   const char* name;
   const char* technique;
   const char* lllShade;
+  const char* surfaces;
 };
-constexpr TechniqueCase kTechniques[] = {{"forward", "forward", "compute"},
-                                         {"lll", "lll", "compute"},
-                                         {"lll_fragment", "lll", "fragment"},
-                                         {"deferred", "deferred", "compute"},
-                                         {"prepass", "prepass", "compute"}};
+constexpr TechniqueCase kTechniques[] = {
+    {"forward", "forward", "compute", "visibility"},   {"forward_gbuffer", "forward", "compute", "gbuffer"},
+    {"lll", "lll", "compute", "visibility"},           {"lll_gbuffer", "lll", "compute", "gbuffer"},
+    {"lll_fragment", "lll", "fragment", "visibility"}, {"deferred", "deferred", "compute", "visibility"},
+    {"prepass", "prepass", "compute", "visibility"}};
 
 void PrintTo(const TechniqueCase& t, std::ostream* os) {
   *os << t.name;
@@ -62,6 +64,7 @@ RenderSettings settingsFor(const TechniqueCase& t) {
   settings.height = 54;
   settings.technique = t.technique;
   settings.lllShade = t.lllShade;
+  settings.surfaces = t.surfaces;
   return settings;
 }
 

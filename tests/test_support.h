@@ -52,6 +52,15 @@ inline Rendered render(const Scene& scene, const RenderSettings& settings) {
   return out;
 }
 
+// The brute-force reference every technique is compared with: forward shading on the geometry
+// (the depth prepass, then every light per fragment), independent of the visibility buffer's
+// surface rebuild that the techniques use by default.
+inline RenderSettings reference(RenderSettings settings) {
+  settings.technique = "forward";
+  settings.surfaces = "gbuffer";
+  return settings;
+}
+
 // A technique statistic of a rendered frame (Technique::stats); a missing one fails the test.
 inline double stat(const Rendered& rendered, const std::string& name) {
   for (const auto& [key, value] : rendered.stats)

@@ -1,11 +1,9 @@
-// Material sampling for mesh passes: textures in set 1 (neutral 1x1 textures where a material has
-// none), factors from the material buffer, normal mapping in the file's tangent frame (glTF's
-// TANGENT) or, where the mesh has none, in a frame built from screen-space derivatives.
+// Material sampling for mesh passes: the material's textures in set 1 (neutral 1x1 textures where
+// it has none), read with the fragment's implicit derivatives.
 #ifndef LLL_MATERIAL_GLSL
 #define LLL_MATERIAL_GLSL
-#include "common/brdf.glsl"
 #include "common/draw_push.glsl"
-#include "common/frame.glsl"
+#include "common/material_surface.glsl"
 
 layout(set = 1, binding = 0) uniform sampler2D baseColorTexture;
 layout(set = 1, binding = 1) uniform sampler2D metallicRoughnessTexture;
@@ -13,81 +11,21 @@ layout(set = 1, binding = 2) uniform sampler2D normalTexture;
 layout(set = 1, binding = 3) uniform sampler2D emissiveTexture;
 layout(set = 1, binding = 4) uniform sampler2D occlusionTexture;
 
-// Screen-space derivatives of the surface at the fragment. Taken before any branch: derivatives
-// (and implicit-LOD texture reads) are undefined in control flow that differs across a 2x2 quad.
-struct SurfaceDerivatives {
-  vec3 dpx, dpy;
-  vec2 duvx, duvy;
-};
-
-// The tangent frame where the file gives none: T along grad(u) and B along -grad(v) in the plane of
-// n (glTF's bitangent: texture v runs down the image, the normal map's green up). grad(u) solves
-// dot(g, dp/dx) = du/dx, dot(g, dp/dy) = du/dy; the cross products below give it times the
-// determinant n . (dp/dx x dp/dy), whose sign depends on which way the framebuffer's y points
-// (down in Vulkan with lll's projection), so it is divided out. T and B keep their relative
-// lengths (a cotangent frame); the caller normalizes the result. False where the UVs do not vary
-// across the pixel.
-bool derivativeTangentFrame(vec3 n, SurfaceDerivatives d, out vec3 t, out vec3 b) {
-  vec3 dpyPerp = cross(d.dpy, n), dpxPerp = cross(n, d.dpx);
-  vec3 gradU = dpyPerp * d.duvx.x + dpxPerp * d.duvy.x;
-  vec3 gradV = dpyPerp * d.duvx.y + dpxPerp * d.duvy.y;
-  float determinantSign = dot(d.dpx, dpyPerp) < 0.0 ? -1.0 : 1.0;
-  float scale = max(dot(gradU, gradU), dot(gradV, gradV));
-  t = vec3(0.0);
-  b = vec3(0.0);
-  if (!(scale > 1e-20)) return false;
-  float unit = determinantSign * inversesqrt(scale);
-  t = gradU * unit;
-  b = -gradV * unit;
-  return true;
-}
-
-// The shading normal for a surface whose front-facing geometric normal is `n`, given the normal
-// map's texel (`mapped`, 0..1). `tangent` is glTF's (w = 0 when the mesh has none).
-vec3 perturbNormal(GpuMaterial m, vec3 n, vec3 mapped, vec4 tangent, SurfaceDerivatives d) {
-  // No normal map: the default 1x1 texel (128, 128, 255) would decode to (1/255, 1/255, 1), a
-  // 0.32 degree tilt of every surface.
-  if ((m.flags.z & kMaterialNormalTexture) == 0u) return n;
-  vec3 t, b;
-  if (tangent.w != 0.0 && dot(tangent.xyz, tangent.xyz) > 0.0) {
-    t = normalize(tangent.xyz - n * dot(n, tangent.xyz));  // interpolation bends it off the plane
-    b = cross(n, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
-  } else if (!derivativeTangentFrame(n, d, t, b)) {
-    return n;  // no UV variation: keep the geometric normal
-  }
-  vec3 tangentNormal = mapped * 2.0 - 1.0;
-  tangentNormal.xy *= m.params.z;
-  return normalize(mat3(t, b, n) * tangentNormal);
-}
-
 float materialAlpha(GpuMaterial m, vec2 uv) {
   return m.baseColorFactor.a * texture(baseColorTexture, uv).a;
 }
 
+// Derivatives and implicit-LOD samples are taken first, before any branch: both are undefined in
+// control flow that differs across a 2x2 quad.
 Surface sampleSurface(GpuMaterial m, vec3 position, vec3 normal, vec4 tangent, vec2 uv, bool frontFacing) {
   SurfaceDerivatives d = SurfaceDerivatives(dFdx(position), dFdy(position), dFdx(uv), dFdy(uv));
-  vec3 mapped = texture(normalTexture, uv).xyz;
-  Surface s;
-  s.position = position;
-  s.view = normalize(frame.cameraPosition.xyz - position);
-  // A back face (double-sided material) turns its whole tangent frame: its normal is the front's
-  // perturbed normal reversed.
-  s.normal = perturbNormal(m, normalize(normal), mapped, tangent, d);
-  if (!frontFacing) s.normal = -s.normal;
-  vec4 base = m.baseColorFactor * texture(baseColorTexture, uv);
-  s.baseColor = base.rgb;
-  s.alpha = base.a;
-  vec4 mr = texture(metallicRoughnessTexture, uv);
-  s.roughness = clamp(m.params.y * mr.g, 0.0, 1.0);
-  s.metallic = clamp(m.params.x * mr.b, 0.0, 1.0);
-  s.occlusion = 1.0 + m.params.w * (texture(occlusionTexture, uv).r - 1.0);
-  s.emissive = m.emissive.rgb * texture(emissiveTexture, uv).rgb;
-  return s;
-}
-
-// What every technique adds besides its lights: emission and a small constant ambient.
-vec3 ambientAndEmissive(Surface s) {
-  return frame.ambient.rgb * s.baseColor * s.occlusion + s.emissive;
+  MaterialSamples t;
+  t.baseColor = texture(baseColorTexture, uv);
+  t.metallicRoughness = texture(metallicRoughnessTexture, uv);
+  t.normal = texture(normalTexture, uv).xyz;
+  t.emissive = texture(emissiveTexture, uv).rgb;
+  t.occlusion = texture(occlusionTexture, uv).r;
+  return assembleSurface(m, t, position, normal, tangent, d, frontFacing);
 }
 
 #endif

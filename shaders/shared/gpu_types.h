@@ -38,10 +38,12 @@ struct GpuMaterial {
   vec4 baseColorFactor;
   vec4 emissive;  // rgb emissive factor * KHR_materials_emissive_strength, w unused
   vec4 params;    // x metallic, y roughness, z normal scale, w occlusion strength
-  uvec4 flags;    // x alpha mode, y double sided, z kMaterial*Texture bits, w unused
+  uvec4 flags;    // x alpha mode, y double sided, z kMaterial*Texture bits, w occlusion texture
   vec4 alpha;     // x alpha cutoff, yzw unused
+  uvec4 textures;  // in GpuScene's texture table (the visibility path): x base colour,
+                   // y metallic-roughness, z normal, w emissive; flags.w the occlusion texture
 };
-LLL_CHECK_SIZE(GpuMaterial, 80);
+LLL_CHECK_SIZE(GpuMaterial, 96);
 
 // One placed copy of a mesh (a glTF node), read by the mesh vertex shader through the frame's draw
 // order: a draw of a primitive covers every visible instance of its mesh.
@@ -51,6 +53,24 @@ struct MeshInstance {
                          // when singular), computed on the CPU in double precision
 };
 LLL_CHECK_SIZE(MeshInstance, 112);
+
+// One (primitive, instance) pair the visibility pass drew this frame: what a compute pass needs to
+// rebuild a pixel's surface from its id (render/visibility.h).
+struct SurfaceRecord {
+  uint firstIndex;    // the primitive's first index in the scene's index buffer
+  uint vertexOffset;  // added to each of its indices
+  uint material;
+  uint instance;  // the instance's place in the frame's instance buffer (GpuScene::prepareFrame)
+};
+LLL_CHECK_SIZE(SurfaceRecord, 16);
+
+// The visibility pass's push constants. Alpha-masked primitives are drawn one by one: x their first
+// record, y their material. Opaque ones in indirect multi-draws: z the call's first command, whose
+// record bases the vertex shader reads at z + gl_DrawID.
+struct VisibilityPush {
+  uvec4 ids;  // x first record, y material, z first command, w unused
+};
+LLL_CHECK_SIZE(VisibilityPush, 16);
 
 // Per-draw push constants of every mesh pass.
 struct DrawPush {

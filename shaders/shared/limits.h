@@ -30,6 +30,9 @@ LLL_CONST(uint, kLightBox, 2u);
 LLL_CONST(uint, kAlphaOpaque, 0u);
 LLL_CONST(uint, kAlphaMask, 1u);
 LLL_CONST(uint, kAlphaBlend, 2u);
+// The visibility buffer's value where no surface was drawn (a pixel id is a record index shifted
+// over the triangle bits, or'ed with the triangle: never all ones while records fit).
+LLL_CONST(uint, kNoSurface, 0xFFFFFFFFu);
 // GpuMaterial.flags.z bits: which of the material's textures the file gave.
 LLL_CONST(uint, kMaterialNormalTexture, 1u);
 

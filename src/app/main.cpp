@@ -73,6 +73,11 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--lll-shade", s.lllShade,
                  "lll opaque shading: compute (thin G-buffer, list walk in a compute pass) | fragment")
       ->check(CLI::IsMember({"compute", "fragment"}));
+  cmd.add_option(
+         "--surfaces", s.surfaces,
+         "opaque surfaces: visibility (one raster pass of triangle ids, surfaces rebuilt in compute) | "
+         "gbuffer (depth prepass, then geometry passes)")
+      ->check(CLI::IsMember({"visibility", "gbuffer"}));
   cmd.add_option("--debug-view", s.debugView, "none | heatmap | bounds | tiles (lll)")
       ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));
   cmd.add_option(

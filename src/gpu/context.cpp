@@ -355,7 +355,19 @@ void Context::createDevice() {
   f13.synchronization2 = VK_TRUE;
   f13.maintenance4 = VK_TRUE;  // glslc's SPIR-V 1.6 declares workgroup sizes with LocalSizeId
   VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
-  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
+  // The visibility buffer (render/visibility.h) draws with gl_DrawID/gl_BaseInstance in indirect
+  // multi-draws and writes gl_PrimitiveID from its fragment shader (Geometry capability).
+  VkPhysicalDeviceVulkan11Features supported11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+  VkPhysicalDeviceFeatures2 supported2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported11};
+  vkGetPhysicalDeviceFeatures2(physical_, &supported2);
+  visibilityBuffer_ = supported11.shaderDrawParameters && supported.multiDrawIndirect &&
+                      supported.drawIndirectFirstInstance && supported.geometryShader;
+  VkPhysicalDeviceVulkan11Features f11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &f12};
+  f11.shaderDrawParameters = visibilityBuffer_;
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f11};
+  features.features.multiDrawIndirect = visibilityBuffer_;
+  features.features.drawIndirectFirstInstance = visibilityBuffer_;
+  features.features.geometryShader = visibilityBuffer_;
   features.features.fragmentStoresAndAtomics = VK_TRUE;
   features.features.samplerAnisotropy = supported.samplerAnisotropy;
   features.features.independentBlend = supported.independentBlend;

@@ -52,6 +52,9 @@ class Context {
   uint32_t timestampValidBits() const { return timestampValidBits_; }
   // pipelineStatisticsQuery is enabled (fragment counts for overdraw; see fragment_counter.h).
   bool pipelineStatistics() const { return pipelineStatistics_; }
+  // shaderDrawParameters, multiDrawIndirect, drawIndirectFirstInstance and geometryShader are
+  // enabled: what the visibility buffer's pass needs (render/visibility.h).
+  bool visibilityBufferFeatures() const { return visibilityBuffer_; }
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
                           VkMemoryPropertyFlags preferred = 0) const;
@@ -89,6 +92,7 @@ class Context {
   uint32_t timestampValidBits_ = 0;
   bool validation_ = false;
   bool pipelineStatistics_ = false;
+  bool visibilityBuffer_ = false;
   mutable std::mutex messagesMutex_;
   std::vector<std::string> messages_;
 };

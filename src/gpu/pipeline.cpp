@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <utility>
 
 #include "gpu/context.h"
+#include "gpu/reflection.h"
 #include "gpu/shader_registry.h"
 #include "gpu/vk_check.h"
 #include "scene/scene.h"
@@ -44,16 +46,54 @@ class ShaderModule {
 
 struct Specialization {
   std::vector<VkSpecializationMapEntry> entries;
+  std::vector<uint32_t> values;
   VkSpecializationInfo info{};
-  explicit Specialization(const std::vector<uint32_t>& values) {
-    for (uint32_t i = 0; i < values.size(); ++i) entries.push_back({i, i * 4, 4});
+  explicit Specialization(const std::vector<uint32_t>& inOrder, const SpecializationConstants& byId = {}) {
+    SpecializationConstants all = byId;
+    for (uint32_t i = 0; i < inOrder.size(); ++i) all.emplace(i, inOrder[i]);
+    for (const auto& [id, value] : all) {
+      entries.push_back({id, uint32_t(values.size() * 4), 4});
+      values.push_back(value);
+    }
     info.mapEntryCount = uint32_t(entries.size());
     info.pMapEntries = entries.data();
     info.dataSize = values.size() * 4;
     info.pData = values.data();
   }
   const VkSpecializationInfo* get() const { return entries.empty() ? nullptr : &info; }
+  SpecializationConstants byId() const {
+    SpecializationConstants out;
+    for (size_t i = 0; i < entries.size(); ++i) out[entries[i].constantID] = values[i];
+    return out;
+  }
 };
+
+VkDescriptorSetLayout createPushSetLayout(Context& context,
+                                          const std::vector<VkDescriptorSetLayoutBinding>& bindings) {
+  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+  setInfo.bindingCount = uint32_t(bindings.size());
+  setInfo.pBindings = bindings.data();
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorSetLayout(context.device(), &setInfo, nullptr, &layout));
+  return layout;
+}
+
+VkPipelineLayout createLayout(Context& context, VkDescriptorSetLayout pushSet,
+                              const std::vector<VkDescriptorSetLayout>& extraSets, uint32_t pushBytes,
+                              VkShaderStageFlags pushStages) {
+  std::vector<VkDescriptorSetLayout> sets{pushSet};
+  sets.insert(sets.end(), extraSets.begin(), extraSets.end());
+  VkPushConstantRange range{pushStages, 0, pushBytes};
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = uint32_t(sets.size());
+  info.pSetLayouts = sets.data();
+  info.pushConstantRangeCount = pushBytes ? 1 : 0;
+  info.pPushConstantRanges = &range;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreatePipelineLayout(context.device(), &info, nullptr, &layout));
+  return layout;
+}
 
 }  // namespace
 
@@ -62,20 +102,29 @@ PipelineLayout::PipelineLayout(Context& context, std::initializer_list<Binding> 
     : context_(&context) {
   std::vector<VkDescriptorSetLayoutBinding> vkBindings;
   for (const Binding& b : bindings) vkBindings.push_back({b.binding, b.type, 1, b.stages, nullptr});
-  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-  setInfo.bindingCount = uint32_t(vkBindings.size());
-  setInfo.pBindings = vkBindings.data();
-  VK_CHECK(vkCreateDescriptorSetLayout(context.device(), &setInfo, nullptr, &pushSet_));
-  std::vector<VkDescriptorSetLayout> sets{pushSet_};
-  sets.insert(sets.end(), extraSets.begin(), extraSets.end());
-  VkPushConstantRange range{pushStages, 0, pushBytes};
-  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  info.setLayoutCount = uint32_t(sets.size());
-  info.pSetLayouts = sets.data();
-  info.pushConstantRangeCount = pushBytes ? 1 : 0;
-  info.pPushConstantRanges = &range;
-  VK_CHECK(vkCreatePipelineLayout(context.device(), &info, nullptr, &layout_));
+  pushSet_ = createPushSetLayout(context, vkBindings);
+  layout_ = createLayout(context, pushSet_, extraSets, pushBytes, pushStages);
+  for (const VkDescriptorSetLayoutBinding& b : vkBindings) pushBindings_.push_back(b.binding);
+}
+
+PipelineLayout::PipelineLayout(Context& context, std::initializer_list<std::string_view> shaders,
+                               std::vector<VkDescriptorSetLayout> extraSets,
+                               const SpecializationConstants& constants)
+    : context_(&context) {
+  std::vector<ShaderInterface> stages;
+  for (std::string_view shader : shaders)
+    stages.push_back(reflectShader(shaderCode(shader), std::string(shader), constants));
+  const ShaderInterface merged = mergeInterfaces(stages);
+  std::vector<VkDescriptorSetLayoutBinding> vkBindings;
+  for (const ReflectedBinding& b : merged.set(0))
+    vkBindings.push_back({b.binding, b.type, b.count, b.stages, nullptr});
+  pushSet_ = createPushSetLayout(context, vkBindings);
+  layout_ = createLayout(context, pushSet_, extraSets, merged.pushConstantBytes, merged.pushConstantStages);
+  for (const VkDescriptorSetLayoutBinding& b : vkBindings) pushBindings_.push_back(b.binding);
+}
+
+bool PipelineLayout::hasPushBinding(uint32_t binding) const {
+  return std::find(pushBindings_.begin(), pushBindings_.end(), binding) != pushBindings_.end();
 }
 
 PipelineLayout::~PipelineLayout() {
@@ -92,6 +141,7 @@ PipelineLayout& PipelineLayout::operator=(PipelineLayout&& other) noexcept {
     context_ = std::exchange(other.context_, nullptr);
     pushSet_ = std::exchange(other.pushSet_, VK_NULL_HANDLE);
     layout_ = std::exchange(other.layout_, VK_NULL_HANDLE);
+    pushBindings_ = std::move(other.pushBindings_);
   }
   return *this;
 }
@@ -108,7 +158,7 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
   ShaderModule vertex(context, desc.vertexShader);
   std::optional<ShaderModule> fragment;
   if (!desc.fragmentShader.empty()) fragment.emplace(context, desc.fragmentShader);
-  const Specialization specialization(desc.specialization);
+  const Specialization specialization(desc.specialization, desc.constants);
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   stages.push_back({VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0,
                     VK_SHADER_STAGE_VERTEX_BIT, vertex.handle(), "main", specialization.get()});
@@ -128,23 +178,33 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
   const VkVertexInputBindingDescription meshBindings[] = {
       {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX},
       {1, sizeof(gpu::MeshInstance), VK_VERTEX_INPUT_RATE_INSTANCE}};
+  // The visibility pass: positions alone (GpuScene::positionBuffer) and the model matrices.
+  const VkVertexInputBindingDescription positionInstancedBindings[] = {
+      positionBinding, {1, sizeof(gpu::MeshInstance), VK_VERTEX_INPUT_RATE_INSTANCE}};
+  const bool instanced =
+      desc.vertexInput == VertexInput::Mesh || desc.vertexInput == VertexInput::PositionInstanced;
   std::vector<VkVertexInputAttributeDescription> used;
-  if (desc.vertexInput == VertexInput::Position) used.push_back(attributes[0]);
+  if (desc.vertexInput == VertexInput::Position || desc.vertexInput == VertexInput::PositionInstanced)
+    used.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0});
   if (desc.vertexInput == VertexInput::Mesh || desc.vertexInput == VertexInput::Vertices)
     used.assign(std::begin(attributes), std::end(attributes));
-  if (desc.vertexInput == VertexInput::Mesh) {
+  if (instanced) {
     for (uint32_t column = 0; column < 4; ++column)
       used.push_back({8 + column, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
                       uint32_t(offsetof(gpu::MeshInstance, model) + 16 * column)});
+  }
+  if (desc.vertexInput == VertexInput::Mesh) {
     for (uint32_t column = 0; column < 3; ++column)
       used.push_back({12 + column, 1, VK_FORMAT_R32G32B32_SFLOAT,
                       uint32_t(offsetof(gpu::MeshInstance, normalMatrix) + 16 * column)});
   }
   VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   if (desc.vertexInput != VertexInput::None) {
-    vertexInput.vertexBindingDescriptionCount = desc.vertexInput == VertexInput::Mesh ? 2 : 1;
-    vertexInput.pVertexBindingDescriptions =
-        desc.vertexInput == VertexInput::Position ? &positionBinding : meshBindings;
+    vertexInput.vertexBindingDescriptionCount = instanced ? 2 : 1;
+    vertexInput.pVertexBindingDescriptions = desc.vertexInput == VertexInput::Position ? &positionBinding
+                                             : desc.vertexInput == VertexInput::PositionInstanced
+                                                 ? positionInstancedBindings
+                                                 : meshBindings;
     vertexInput.vertexAttributeDescriptionCount = uint32_t(used.size());
     vertexInput.pVertexAttributeDescriptions = used.data();
   }
@@ -219,9 +279,13 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
 
 Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const std::string& computeShader,
                    const std::vector<uint32_t>& specialization)
+    : Pipeline(context, layout, computeShader, Specialization(specialization).byId()) {}
+
+Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const std::string& computeShader,
+                   const SpecializationConstants& constants)
     : context_(&context), bindPoint_(VK_PIPELINE_BIND_POINT_COMPUTE) {
   ShaderModule module(context, computeShader);
-  const Specialization spec(specialization);
+  const Specialization spec({}, constants);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
                 nullptr,
@@ -274,6 +338,12 @@ DescriptorWriter& DescriptorWriter::image(uint32_t binding, VkDescriptorType typ
                                           VkImageLayout layout, VkSampler sampler) {
   entries_.push_back({binding, type, {}, {sampler, view, layout}, true});
   return *this;
+}
+
+void DescriptorWriter::push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
+                            const PipelineLayout& layout) {
+  std::erase_if(entries_, [&](const Entry& e) { return !layout.hasPushBinding(e.binding); });
+  push(context, cmd, bindPoint, layout.handle());
 }
 
 void DescriptorWriter::push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,

@@ -5,7 +5,9 @@
 #include <vulkan/vulkan.h>
 
 #include <initializer_list>
+#include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lll {
@@ -18,9 +20,20 @@ struct Binding {
   VkShaderStageFlags stages;
 };
 
+struct ShaderInterface;
+
+// Specialization constant values by constant_id.
+using SpecializationConstants = std::map<uint32_t, uint32_t>;
+
 class PipelineLayout {
  public:
   PipelineLayout() = default;
+  // Set 0 (push descriptors) and the push constants as `shaders` declare them (SPIR-V reflection,
+  // gpu/reflection.h; `constants` sizes arrays sized by specialization constants), then
+  // `extraSets` as sets 1, 2, ... (not owned).
+  PipelineLayout(Context& context, std::initializer_list<std::string_view> shaders,
+                 std::vector<VkDescriptorSetLayout> extraSets = {},
+                 const SpecializationConstants& constants = {});
   // set 0: push descriptors with `bindings`; then `extraSets` (not owned); push constants of
   // `pushBytes` visible to `pushStages`.
   PipelineLayout(Context& context, std::initializer_list<Binding> bindings, uint32_t pushBytes = 0,
@@ -30,21 +43,25 @@ class PipelineLayout {
   PipelineLayout& operator=(PipelineLayout&& other) noexcept;
 
   VkPipelineLayout handle() const { return layout_; }
+  // Whether set 0 has `binding` (a reflected layout has only the bindings its shaders use).
+  bool hasPushBinding(uint32_t binding) const;
 
  private:
   void release();
   Context* context_ = nullptr;
   VkDescriptorSetLayout pushSet_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  std::vector<uint32_t> pushBindings_;
 };
 
 enum class BlendMode { None, Additive, Alpha };
 
 enum class VertexInput {
-  Mesh,      // lll::Vertex (position, normal, uv) at binding 0, gpu::MeshInstance per instance at 1
-  Vertices,  // lll::Vertex at binding 0 only (light volume shells)
-  Position,  // a bare vec3 position at binding 0 (light volumes)
-  None,      // no vertex buffer: the shader makes its own positions
+  Mesh,               // lll::Vertex (position, normal, uv) at binding 0, gpu::MeshInstance per instance at 1
+  Vertices,           // lll::Vertex at binding 0 only (light volume shells)
+  Position,           // a bare vec3 position at binding 0 (light volumes)
+  PositionInstanced,  // a bare vec3 position at 0, gpu::MeshInstance's model per instance at 1
+  None,               // no vertex buffer: the shader makes its own positions
 };
 
 struct GraphicsPipelineDesc {
@@ -60,6 +77,7 @@ struct GraphicsPipelineDesc {
   std::vector<VkFormat> colorFormats;
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
   std::vector<uint32_t> specialization;  // constant_id 0, 1, ... in order
+  SpecializationConstants constants;     // more by constant_id (these win over `specialization`)
   // Light volumes: clamp depth instead of clipping at the near and far planes, so a volume's back
   // faces beyond the far plane still cover the pixels they bound (needs the depthClamp feature).
   bool depthClamp = false;
@@ -78,6 +96,8 @@ class Pipeline {
   Pipeline(Context& context, const PipelineLayout& layout, const GraphicsPipelineDesc& desc);
   Pipeline(Context& context, const PipelineLayout& layout, const std::string& computeShader,
            const std::vector<uint32_t>& specialization = {});
+  Pipeline(Context& context, const PipelineLayout& layout, const std::string& computeShader,
+           const SpecializationConstants& constants);
   ~Pipeline();
   Pipeline(Pipeline&& other) noexcept;
   Pipeline& operator=(Pipeline&& other) noexcept;
@@ -108,6 +128,9 @@ class DescriptorWriter {
   DescriptorWriter& image(uint32_t binding, VkDescriptorType type, VkImageView view, VkImageLayout layout,
                           VkSampler sampler = VK_NULL_HANDLE);
   void push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, VkPipelineLayout layout);
+  // Pushes the writes `layout`'s set 0 has a binding for and drops the others: passes share
+  // writers (frame, lists, surfaces) while each reflected layout has only what its shaders use.
+  void push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const PipelineLayout& layout);
 
  private:
   struct Entry {

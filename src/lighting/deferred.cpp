@@ -242,7 +242,8 @@ class Deferred final : public Technique {
 }  // namespace
 
 std::unique_ptr<Technique> createDeferred(Context& context, const GpuScene& scene,
-                                          const RenderSettings& settings, const FrameTargets& targets) {
+                                          const RenderSettings& settings, const FrameTargets& targets,
+                                          const VisibilityBuffer*) {
   return std::make_unique<Deferred>(context, scene, settings, targets);
 }
 

@@ -16,6 +16,7 @@
 #include "particles/particle_system.h"
 #include "render/gbuffer.h"
 #include "render/renderer.h"
+#include "render/visibility.h"
 #include "scene/errors.h"
 #include "shared/lll_types.h"
 
@@ -106,7 +107,7 @@ struct ShellMesh {
 class LightLinkedList final : public Technique {
  public:
   LightLinkedList(Context& context, const GpuScene& scene, const RenderSettings& settings,
-                  const FrameTargets& targets);
+                  const FrameTargets& targets, const VisibilityBuffer* visibility);
   ~LightLinkedList() override;
   void render(FrameContext& frame) override;
   bool afterFrame() override;
@@ -118,6 +119,9 @@ class LightLinkedList final : public Technique {
   void createPipelines(const GpuScene& scene);
   void createShells(const GpuScene& scene);
   void allocatePool(uint64_t links);
+  // The frame's bindings and the lists (0 to 7), what every pass reading the lists binds.
+  DescriptorWriter listDescriptors(const FrameContext& frame) const;
+  // listDescriptors and the fills' bounds and shell order.
   DescriptorWriter descriptors(const FrameContext& frame) const;
   void clear(FrameContext& frame);
   void reduceTileDepth(FrameContext& frame);
@@ -126,6 +130,7 @@ class LightLinkedList final : public Technique {
   void drawShellBatch(FrameContext& frame, uint32_t first, uint32_t end, bool backFaces);
   void shade(FrameContext& frame);
   void shadeOpaqueInCompute(FrameContext& frame);
+  void shadeOpaqueFromVisibility(FrameContext& frame);
   void measureLists(FrameContext& frame);
 
   Context& context_;
@@ -166,6 +171,8 @@ class LightLinkedList final : public Technique {
   Pipeline computeFill_;
   Pipeline shellFront_[kShellShapes];
   Pipeline shellBack_[kShellShapes];
+  PipelineLayout shadeVisibilityLayout_;
+  Pipeline shadeVisibility_;  // compute shading from the visibility buffer
   Pipeline shadeOpaque_;
   Pipeline shadeBlend_;
   Pipeline shadeCompute_;
@@ -173,7 +180,7 @@ class LightLinkedList final : public Technique {
 };
 
 LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const RenderSettings& settings,
-                                 const FrameTargets& targets)
+                                 const FrameTargets& targets, const VisibilityBuffer* visibility)
     : context_(context),
       fill_(parseFill(settings.lllFill)),
       linkFormat_(parseLinkFormat(settings.lllLink, scene.lightCount())),
@@ -194,8 +201,16 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   if (linkFormat_ == gpu::kLinkCompact)
     maxPoolLinks_ = std::min<uint64_t>(maxPoolLinks_, gpu::kCompactLinkEnd);
   createBuffers();
-  if (parseComputeShading(settings.lllShade)) gbuffer_ = std::make_unique<GBuffer>(context, scene, targets);
+  if (parseComputeShading(settings.lllShade) && !visibility)
+    gbuffer_ = std::make_unique<GBuffer>(context, scene, targets);
   createPipelines(scene);
+  if (parseComputeShading(settings.lllShade) && visibility) {
+    shadeVisibilityLayout_ =
+        PipelineLayout(context, {"lighting/lll/shade_visibility.comp"}, {scene.textureTableLayout()},
+                       visibility->surfaceConstants(scene));
+    shadeVisibility_ = Pipeline(context, shadeVisibilityLayout_, "lighting/lll/shade_visibility.comp",
+                                visibility->surfaceConstants(scene));
+  }
   if (fill_ != LllFill::Compute) createShells(scene);
   allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile));
 }
@@ -294,13 +309,18 @@ void LightLinkedList::createShells(const GpuScene& scene) {
   if (!order.empty()) shellOrder_.upload(std::span<const uint32_t>(order));
 }
 
-DescriptorWriter LightLinkedList::descriptors(const FrameContext& frame) const {
+DescriptorWriter LightLinkedList::listDescriptors(const FrameContext& frame) const {
   DescriptorWriter writer = meshPassDescriptors(frame);
   writer.storage(3, uniformBuffer_.handle())
       .storage(4, heads_.handle())
       .storage(5, links_.handle())
       .storage(6, counters_.handle())
       .storage(7, tileDepth_.handle());
+  return writer;
+}
+
+DescriptorWriter LightLinkedList::descriptors(const FrameContext& frame) const {
+  DescriptorWriter writer = listDescriptors(frame);
   if (bounds_) writer.storage(8, bounds_.handle());
   if (shellOrder_) writer.storage(10, shellOrder_.handle());
   return writer;
@@ -409,6 +429,7 @@ void LightLinkedList::shade(FrameContext& frame) {
                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
   if (gbuffer_) shadeOpaqueInCompute(frame);
+  if (shadeVisibility_) shadeOpaqueFromVisibility(frame);
   const FrameTargets& t = frame.targets;
   const struct {
     const char* name;
@@ -417,7 +438,7 @@ void LightLinkedList::shade(FrameContext& frame) {
   } passes[2] = {{"lll-shade-opaque", shadeOpaque_, DrawFilter::Opaque},
                  {"lll-shade-blend", shadeBlend_, DrawFilter::Blend}};
   for (const auto& p : passes) {
-    if (p.filter == DrawFilter::Opaque && gbuffer_) continue;
+    if (p.filter == DrawFilter::Opaque && (gbuffer_ || shadeVisibility_)) continue;
     if (p.filter == DrawFilter::Blend && !frame.scene.hasBlendDraws()) continue;
     ScopedPass pass(frame.timer, frame.cmd, p.name);
     beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), p.filter == DrawFilter::Opaque}},
@@ -453,6 +474,26 @@ void LightLinkedList::shadeOpaqueInCompute(FrameContext& frame) {
              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
       .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
       .push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+  dispatchPerPixel(frame.cmd, t);
+  hdrFromComputeToAttachment(frame.cmd, t);
+}
+
+// Every pixel's surface rebuilt from the visibility buffer, lit by its tile's list and written to
+// the HDR target (storage image), which then goes back to being an attachment for the glass.
+void LightLinkedList::shadeOpaqueFromVisibility(FrameContext& frame) {
+  const FrameTargets& t = frame.targets;
+  ScopedPass pass(frame.timer, frame.cmd, "lll-shade-opaque");
+  t.hdr.transition(frame.cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, 0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  shadeVisibility_.bind(frame.cmd);
+  DescriptorWriter writer = listDescriptors(frame);
+  frame.visibility->bindSurfaceData(writer, frame);
+  writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, shadeVisibilityLayout_);
+  const VkDescriptorSet textures = frame.scene.textureTable();
+  vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, shadeVisibilityLayout_.handle(), 1, 1,
+                          &textures, 0, nullptr);
   dispatchPerPixel(frame.cmd, t);
   hdrFromComputeToAttachment(frame.cmd, t);
 }
@@ -548,9 +589,9 @@ TileLightLists readTileLightLists(Technique& technique) {
 }
 
 std::unique_ptr<Technique> createLightLinkedList(Context& context, const GpuScene& scene,
-                                                 const RenderSettings& settings,
-                                                 const FrameTargets& targets) {
-  return std::make_unique<LightLinkedList>(context, scene, settings, targets);
+                                                 const RenderSettings& settings, const FrameTargets& targets,
+                                                 const VisibilityBuffer* visibility) {
+  return std::make_unique<LightLinkedList>(context, scene, settings, targets, visibility);
 }
 
 }  // namespace lll

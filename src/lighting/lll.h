@@ -31,6 +31,7 @@ struct TileLightLists {
 TileLightLists readTileLightLists(Technique& technique);
 
 std::unique_ptr<Technique> createLightLinkedList(Context& context, const GpuScene& scene,
-                                                 const RenderSettings& settings, const FrameTargets& targets);
+                                                 const RenderSettings& settings, const FrameTargets& targets,
+                                                 const VisibilityBuffer* visibility);
 
 }  // namespace lll

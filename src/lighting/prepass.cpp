@@ -345,7 +345,7 @@ class Prepass final : public Technique {
 }  // namespace
 
 std::unique_ptr<Technique> createPrepass(Context& context, const GpuScene& scene, const RenderSettings&,
-                                         const FrameTargets& targets) {
+                                         const FrameTargets& targets, const VisibilityBuffer*) {
   return std::make_unique<Prepass>(context, scene, targets);
 }
 

@@ -7,11 +7,11 @@
 namespace lll {
 
 std::unique_ptr<Technique> createForward(Context&, const GpuScene&, const RenderSettings&,
-                                         const FrameTargets&);
+                                         const FrameTargets&, const VisibilityBuffer*);
 std::unique_ptr<Technique> createDeferred(Context&, const GpuScene&, const RenderSettings&,
-                                          const FrameTargets&);
+                                          const FrameTargets&, const VisibilityBuffer*);
 std::unique_ptr<Technique> createPrepass(Context&, const GpuScene&, const RenderSettings&,
-                                         const FrameTargets&);
+                                         const FrameTargets&, const VisibilityBuffer*);
 
 const std::vector<TechniqueInfo>& techniques() {
   static const std::vector<TechniqueInfo> table = {

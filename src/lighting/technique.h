@@ -30,8 +30,10 @@ class Technique {
 struct TechniqueInfo {
   std::string name;
   std::string description;
+  // `visibility` is the frame's visibility buffer, null with --surfaces gbuffer.
   std::unique_ptr<Technique> (*create)(Context& context, const GpuScene& scene,
-                                       const RenderSettings& settings, const FrameTargets& targets);
+                                       const RenderSettings& settings, const FrameTargets& targets,
+                                       const VisibilityBuffer* visibility);
 };
 
 const std::vector<TechniqueInfo>& techniques();

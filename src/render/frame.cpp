@@ -16,6 +16,7 @@ void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
     info.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     info.loadOp = c.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
     info.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    info.clearValue.color = c.clearValue;
     colorInfos.push_back(info);
   }
   VkRenderingAttachmentInfo depthInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};

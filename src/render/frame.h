@@ -15,6 +15,7 @@ namespace lll {
 
 class Context;
 class ParticleSystem;
+class VisibilityBuffer;
 
 // Screen-sized targets. Layouts between passes: depth stays DEPTH_READ_ONLY_OPTIMAL after the
 // prepass (read-only depth attachment and sampled); hdr is COLOR_ATTACHMENT_OPTIMAL while the
@@ -25,6 +26,9 @@ struct FrameTargets {
   Image depth;  // D32 reverse-Z
   Image hdr;    // RGBA16F linear radiance
   Image ldr;    // RGBA8 display-encoded
+  // R32UI, with --surfaces visibility: each pixel's surface id (render/visibility.h) or kNoSurface;
+  // GENERAL layout after the visibility pass. Null with --surfaces gbuffer.
+  Image visibility;
 };
 
 struct FrameContext {
@@ -40,15 +44,20 @@ struct FrameContext {
   // With --particles: sorted and ready to draw; each technique draws them after its glass with
   // particles->draw(frame, its shading). Null without particles.
   ParticleSystem* particles = nullptr;
+  // With --surfaces visibility: the visibility buffer drawn this frame (targets.visibility holds
+  // its ids). Null with --surfaces gbuffer.
+  const VisibilityBuffer* visibility = nullptr;
 };
 
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_UNORM;
+inline constexpr VkFormat kVisibilityFormat = VK_FORMAT_R32_UINT;
 
 struct ColorTarget {
   VkImageView view;
-  bool clear;  // clear to zero, else load
+  bool clear;                      // clear to `clearValue`, else load
+  VkClearColorValue clearValue{};  // zeros unless given
 };
 
 // Begins dynamic rendering over the whole frame, with viewport and scissor set.

@@ -102,7 +102,7 @@ Image makeTexture(Context& context, const Texture& texture) {
       VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
       barrier.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
       barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_TRANSFER_READ_BIT;
-      barrier.dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+      barrier.dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
       barrier.dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
       barrier.oldLayout =
           level + 1 < levels ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
@@ -136,12 +136,14 @@ GpuScene::GpuScene(Context& context, const Scene& scene) : context_(context), sc
   uploadLights(scene.lights);
   uploadTextures();
   createMaterialSets();
+  createTextureTable();
 }
 
 GpuScene::~GpuScene() {
   VkDevice device = context_.device();
   vkDestroyDescriptorPool(device, descriptorPool_, nullptr);
   vkDestroyDescriptorSetLayout(device, materialSetLayout_, nullptr);
+  vkDestroyDescriptorSetLayout(device, textureTableLayout_, nullptr);
   vkDestroySampler(device, sampler_, nullptr);
 }
 
@@ -153,6 +155,12 @@ void GpuScene::uploadGeometry() {
   indices_ = Buffer(context_, scene_.indices.size() * sizeof(uint32_t),
                     geometry | VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::Device, "indices");
   indices_.upload(std::span<const uint32_t>(scene_.indices));
+  std::vector<glm::vec3> positions;
+  positions.reserve(scene_.vertices.size());
+  for (const Vertex& v : scene_.vertices) positions.push_back(v.position);
+  positions_ = Buffer(context_, positions.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                      MemoryUse::Device, "positions");
+  positions_.upload(std::span<const glm::vec3>(positions));
   meshInstances_.resize(scene_.meshes.size());
   for (uint32_t i = 0; i < scene_.instances.size(); ++i)
     meshInstances_[scene_.instances[i].mesh].push_back(i);
@@ -190,7 +198,8 @@ void GpuScene::uploadInstances() {
   const uint64_t bytes = std::max<uint64_t>(1, entries) * sizeof(gpu::MeshInstance);
   try {
     frameInstances_ =
-        Buffer(context_, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::Upload, "instances");
+        Buffer(context_, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+               MemoryUse::Upload, "instances");
   } catch (const VulkanError& e) {
     throw InputError(
         fmt::format("{} instances ({} per frame with the blended draws) need {:.1f} MiB of "
@@ -209,8 +218,10 @@ void GpuScene::uploadMaterials() {
     g.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
     g.params = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
     const uint32_t textures = m.normalTexture >= 0 ? gpu::kMaterialNormalTexture : 0u;
-    g.flags = glm::uvec4(uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, textures, 0u);
+    const TextureSlots slots = textureSlots(m);
+    g.flags = glm::uvec4(uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, textures, slots[4]);
     g.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
+    g.textures = glm::uvec4(slots[0], slots[1], slots[2], slots[3]);
     materials.push_back(g);
   }
   materials_ = Buffer(context_, materials.size() * sizeof(gpu::GpuMaterial),
@@ -250,16 +261,16 @@ void GpuScene::createMaterialSets() {
   layoutInfo.pBindings = bindings;
   VK_CHECK(vkCreateDescriptorSetLayout(context_.device(), &layoutInfo, nullptr, &materialSetLayout_));
 
+  // The material sets, and the texture table (createTextureTable).
   const uint32_t setCount = std::max<uint32_t>(1, uint32_t(scene_.materials.size()));
-  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, setCount * kTexturesPerMaterial};
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                            setCount * kTexturesPerMaterial + textureCount()};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = setCount;
+  poolInfo.maxSets = setCount + 1;
   poolInfo.poolSizeCount = 1;
   poolInfo.pPoolSizes = &size;
   VK_CHECK(vkCreateDescriptorPool(context_.device(), &poolInfo, nullptr, &descriptorPool_));
 
-  const uint32_t white = uint32_t(scene_.textures.size());
-  const uint32_t flatNormal = white + 1;
   std::vector<VkDescriptorSetLayout> layouts(scene_.materials.size(), materialSetLayout_);
   materialSets_.resize(scene_.materials.size());
   if (materialSets_.empty()) return;
@@ -269,16 +280,11 @@ void GpuScene::createMaterialSets() {
   allocInfo.pSetLayouts = layouts.data();
   VK_CHECK(vkAllocateDescriptorSets(context_.device(), &allocInfo, materialSets_.data()));
   for (size_t m = 0; m < scene_.materials.size(); ++m) {
-    const Material& material = scene_.materials[m];
-    const int slots[kTexturesPerMaterial] = {material.baseColorTexture, material.metallicRoughnessTexture,
-                                             material.normalTexture, material.emissiveTexture,
-                                             material.occlusionTexture};
+    const TextureSlots slots = textureSlots(scene_.materials[m]);
     VkDescriptorImageInfo images[kTexturesPerMaterial];
     VkWriteDescriptorSet writes[kTexturesPerMaterial];
     for (uint32_t i = 0; i < kTexturesPerMaterial; ++i) {
-      const bool valid = slots[i] >= 0 && size_t(slots[i]) < scene_.textures.size();
-      const uint32_t texture = valid ? uint32_t(slots[i]) : (i == 2 ? flatNormal : white);
-      images[i] = {sampler_, textures_[texture].view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+      images[i] = {sampler_, textures_[slots[i]].view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
       writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
       writes[i].dstSet = materialSets_[m];
       writes[i].dstBinding = i;
@@ -288,6 +294,56 @@ void GpuScene::createMaterialSets() {
     }
     vkUpdateDescriptorSets(context_.device(), kTexturesPerMaterial, writes, 0, nullptr);
   }
+}
+
+GpuScene::TextureSlots GpuScene::textureSlots(const Material& material) const {
+  const uint32_t white = uint32_t(scene_.textures.size());
+  const uint32_t flatNormal = white + 1;
+  const int given[kTexturesPerMaterial] = {material.baseColorTexture, material.metallicRoughnessTexture,
+                                           material.normalTexture, material.emissiveTexture,
+                                           material.occlusionTexture};
+  TextureSlots slots{};
+  for (uint32_t i = 0; i < kTexturesPerMaterial; ++i) {
+    const bool valid = given[i] >= 0 && size_t(given[i]) < scene_.textures.size();
+    slots[i] = valid ? uint32_t(given[i]) : (i == 2 ? flatNormal : white);
+  }
+  return slots;
+}
+
+// One array of every texture for compute passes that shade any material: lavapipe has no
+// descriptor indexing and binds at most 128 sampled images a stage, so the array is exactly as
+// long as the scene needs and is indexed only with workgroup-uniform indices
+// (common/visibility_surface.glsl).
+void GpuScene::createTextureTable() {
+  const uint32_t count = textureCount();
+  const uint32_t limit = context_.properties().limits.maxPerStageDescriptorSampledImages;
+  if (count > limit) {
+    textureTableProblem_ =
+        fmt::format("the scene has {} textures and {} binds at most {} in one shader stage", count,
+                    context_.info().name, limit);
+    return;
+  }
+  const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, count,
+                                             VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+  VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  layoutInfo.bindingCount = 1;
+  layoutInfo.pBindings = &binding;
+  VK_CHECK(vkCreateDescriptorSetLayout(context_.device(), &layoutInfo, nullptr, &textureTableLayout_));
+  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocInfo.descriptorPool = descriptorPool_;
+  allocInfo.descriptorSetCount = 1;
+  allocInfo.pSetLayouts = &textureTableLayout_;
+  VK_CHECK(vkAllocateDescriptorSets(context_.device(), &allocInfo, &textureTable_));
+  std::vector<VkDescriptorImageInfo> images;
+  for (const Image& texture : textures_)
+    images.push_back({sampler_, texture.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = textureTable_;
+  write.dstBinding = 0;
+  write.descriptorCount = count;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = images.data();
+  vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
 }
 
 bool GpuScene::matches(const DrawItem& item, DrawFilter filter) const {
@@ -353,10 +409,14 @@ void GpuScene::prepareFrame(const glm::mat4& viewProj, const glm::vec3& eye) {
   }
 }
 
-void GpuScene::bindMaterial(VkCommandBuffer cmd, VkPipelineLayout layout, uint32_t material,
-                            bool materialCulling) const {
+void GpuScene::bindMaterialSet(VkCommandBuffer cmd, VkPipelineLayout layout, uint32_t material) const {
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &materialSets_[material], 0,
                           nullptr);
+}
+
+void GpuScene::bindMaterial(VkCommandBuffer cmd, VkPipelineLayout layout, uint32_t material,
+                            bool materialCulling) const {
+  bindMaterialSet(cmd, layout, material);
   if (materialCulling)
     vkCmdSetCullMode(cmd, scene_.materials[material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
   const gpu::DrawPush push{glm::uvec4(material, 0, 0, 0)};

@@ -13,6 +13,8 @@
 // gl_InstanceIndex: lavapipe loads storage buffers lane by lane, which doubled vertex shading.
 #include <vulkan/vulkan.h>
 
+#include <array>
+#include <string>
 #include <vector>
 
 #include "gpu/pipeline.h"
@@ -51,6 +53,30 @@ class GpuScene {
   // Replaces the light array (e.g. lights animated by the CPU); grows the buffer when needed.
   void uploadLights(const std::vector<Light>& lights);
 
+  // Geometry for passes that fetch it themselves: the visibility pass's position-only stream
+  // (tightly packed vec3) and, for rebuilding surfaces in compute, every vertex (lll::Vertex) and
+  // index.
+  const Buffer& positionBuffer() const { return positions_; }
+  const Buffer& vertexBuffer() const { return vertices_; }
+  const Buffer& indexBuffer() const { return indices_; }
+  // Every texture in one array (compute passes that shade any material: GpuMaterial::textures
+  // indexes it), set 1 of those passes. Null handles when the device cannot bind that many
+  // sampled images in one stage; textureTableProblem() then says why.
+  VkDescriptorSetLayout textureTableLayout() const { return textureTableLayout_; }
+  VkDescriptorSet textureTable() const { return textureTable_; }
+  uint32_t textureCount() const { return uint32_t(textures_.size()); }
+  const std::string& textureTableProblem() const { return textureTableProblem_; }
+
+  // The scene's primitives (grouped by material) and, at the last prepareFrame(), where each
+  // mesh's visible instances sit in the frame's instance buffer.
+  const std::vector<DrawItem>& draws() const { return draws_; }
+  bool isBlended(const DrawItem& item) const { return matches(item, DrawFilter::Blend); }
+  uint32_t meshFirstInstance(uint32_t mesh) const { return meshFirst_[mesh]; }
+  uint32_t meshVisibleInstances(uint32_t mesh) const { return meshVisible_[mesh]; }
+  // How many instances each mesh has (the most a frame can draw of it).
+  uint32_t meshInstanceCount(uint32_t mesh) const { return uint32_t(meshInstances_[mesh].size()); }
+  const Buffer& frameInstances() const { return frameInstances_; }
+
   // Culls the instances against `viewProj`'s frustum and writes the draw order for the frame's
   // draws, blended ones sorted back to front from `eye`. Call once per frame before recording
   // (the previous frame's GPU work must be done: the instances are in host-visible memory).
@@ -61,6 +87,8 @@ class GpuScene {
   void draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter,
             bool materialCulling = true) const;
   bool hasBlendDraws() const;
+  // Binds `material`'s textures as set 1 of a graphics pipeline `layout`.
+  void bindMaterialSet(VkCommandBuffer cmd, VkPipelineLayout layout, uint32_t material) const;
   // The instanced draws draw() records for `filter` this frame: one per primitive with a visible
   // instance (per run of one primitive, for blended draws sorted back to front).
   uint32_t drawCount(DrawFilter filter) const { return uint32_t(runs(filter).size()); }
@@ -73,7 +101,12 @@ class GpuScene {
   void uploadMaterials();
   void uploadTextures();
   void createMaterialSets();
+  void createTextureTable();
   bool matches(const DrawItem& item, DrawFilter filter) const;
+  // Where a material's base colour, metallic-roughness, normal, emissive and occlusion textures sit
+  // in textures_ (neutral textures where it has none).
+  using TextureSlots = std::array<uint32_t, 5>;
+  TextureSlots textureSlots(const Material& material) const;
   void bindMaterial(VkCommandBuffer cmd, VkPipelineLayout layout, uint32_t material,
                     bool materialCulling) const;
 
@@ -87,6 +120,7 @@ class GpuScene {
 
   Context& context_;
   const Scene& scene_;
+  Buffer positions_;
   Buffer vertices_;
   Buffer indices_;
   Buffer materials_;
@@ -106,6 +140,9 @@ class GpuScene {
   VkDescriptorSetLayout materialSetLayout_ = VK_NULL_HANDLE;
   VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
   std::vector<VkDescriptorSet> materialSets_;
+  VkDescriptorSetLayout textureTableLayout_ = VK_NULL_HANDLE;
+  VkDescriptorSet textureTable_ = VK_NULL_HANDLE;
+  std::string textureTableProblem_;
 };
 
 }  // namespace lll

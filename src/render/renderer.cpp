@@ -1,4 +1,5 @@
 #include "render/renderer.h"
+#include "render/visibility.h"
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -52,6 +53,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
         fmt::format("{} lights: at most {} are supported (the light array is one storage buffer)",
                     scene.lights.size(), gpu::kMaxLights));
   gpuScene_ = std::make_unique<GpuScene>(context, scene);
+  chooseSurfaces();
   createTargets();
   uniformBuffer_ =
       Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
@@ -72,7 +74,21 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   tonemap_ = Pipeline(context, tonemapLayout_, "post/tonemap.comp");
   if (auto options = particleOptions(scene, settings))
     particles_ = std::make_unique<ParticleSystem>(context, *options);
-  technique_ = findTechnique(settings.technique).create(context, *gpuScene_, settings_, targets_);
+  technique_ =
+      findTechnique(settings.technique).create(context, *gpuScene_, settings_, targets_, visibility_.get());
+}
+
+void Renderer::chooseSurfaces() {
+  if (settings_.surfaces == "gbuffer") return;
+  if (settings_.surfaces != "visibility")
+    throw InputError(fmt::format("--surfaces {}: expected visibility or gbuffer", settings_.surfaces));
+  surfacesFallback_ = VisibilityBuffer::problem(context_, *gpuScene_);
+  if (surfacesFallback_.empty()) {
+    visibility_ = std::make_unique<VisibilityBuffer>(context_, *gpuScene_);
+    return;
+  }
+  fmt::print(stderr, "lll: warning: --surfaces visibility: {}; rendering with --surfaces gbuffer\n",
+             surfacesFallback_);
 }
 
 Renderer::~Renderer() {
@@ -91,6 +107,10 @@ void Renderer::createTargets() {
                        "hdr");
   targets_.ldr =
       Image(context_, w, h, kLdrFormat, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "ldr");
+  if (visibility_)
+    targets_.visibility =
+        Image(context_, w, h, kVisibilityFormat,
+              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT, "visibility");
   hdrReadback_ =
       Buffer(context_, VkDeviceSize(w) * h * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
   ldrReadback_ =
@@ -172,6 +192,9 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
   auto s = technique_->stats();
   s.push_back({"instances", double(scene_.instances.size())});
   s.push_back({"visible_instances", double(gpuScene_->visibleInstances())});
+  // 1 when opaque surfaces came from the visibility buffer (its ids are lighting memory too).
+  s.push_back({"visibility-buffer", visibility_ ? 1.0 : 0.0});
+  if (visibility_) s.push_back({"visibility_bytes", 4.0 * settings_.width * settings_.height});
   if (particles_) {
     const auto p = particles_->stats();
     s.insert(s.end(), p.begin(), p.end());
@@ -181,10 +204,14 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
 
 void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advanceParticles) {
   gpuScene_->prepareFrame(uniforms_.viewProj, camera_.eye);
+  if (visibility_) visibility_->prepareFrame(*gpuScene_);
   timer_.reset(cmd);
-  FrameContext frame{context_,       cmd,       timer_,    *gpuScene_, targets_,
-                     uniformBuffer_, uniforms_, settings_, capture,    particles_.get()};
-  depthPrepass(frame);
+  FrameContext frame{context_,  cmd,       timer_,  *gpuScene_,       targets_,         uniformBuffer_,
+                     uniforms_, settings_, capture, particles_.get(), visibility_.get()};
+  if (visibility_)
+    visibility_->record(frame);
+  else
+    depthPrepass(frame);
   if (particles_) particles_->update(frame, advanceParticles);
   targets_.hdr.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                           VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,

@@ -16,6 +16,7 @@
 namespace lll {
 
 class Context;
+class VisibilityBuffer;
 
 struct HdrImage {
   uint32_t width = 0;
@@ -62,11 +63,14 @@ class Renderer {
   Technique& technique() { return *technique_; }
   GpuScene& gpuScene() { return *gpuScene_; }
   ParticleSystem* particles() { return particles_.get(); }
+  // The visibility buffer the frame is drawn with, or null (--surfaces gbuffer, or the fallback).
+  const VisibilityBuffer* visibility() const { return visibility_.get(); }
   // The technique's numbers for --stats, the scene's instances (all, and inside the frustum in the
   // last frame), then the particle system's.
   std::vector<std::pair<std::string, double>> stats() const;
 
  private:
+  void chooseSurfaces();
   void createTargets();
   void updateUniforms();
   void recordFrame(VkCommandBuffer cmd, bool capture, bool advanceParticles);
@@ -92,6 +96,8 @@ class Renderer {
   PipelineLayout tonemapLayout_;
   Pipeline tonemap_;
   std::unique_ptr<ParticleSystem> particles_;
+  std::unique_ptr<VisibilityBuffer> visibility_;  // null with --surfaces gbuffer
+  std::string surfacesFallback_;                  // why --surfaces visibility fell back to gbuffer, if it did
   std::unique_ptr<Technique> technique_;
 };
 

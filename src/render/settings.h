@@ -18,6 +18,10 @@ struct RenderSettings {
   std::string lllFill = "compute";   // shells | ray | compute
   std::string lllLink = "auto";      // compact | wide | auto
   std::string lllShade = "compute";  // compute (thin G-buffer + compute pass) | fragment
+  // Where opaque surfaces come from: visibility (one raster pass of ids, surfaces rebuilt in
+  // compute; falls back to gbuffer, with a warning, where the scene or device cannot) | gbuffer
+  // (the depth prepass, then geometry passes: G-buffer or fragment shading).
+  std::string surfaces = "visibility";
   uint32_t tileSize = 8;
   uint32_t linksPerTile = 32;      // initial link pool: tiles * this, grown on overflow
   std::string debugView = "none";  // none | heatmap | bounds | tiles

@@ -1,0 +1,190 @@
+// Rebuilding a pixel's surface from the visibility buffer (render/visibility.h) in a compute pass:
+// the id gives the surface record (primitive, instance) and the triangle; the triangle's three
+// vertices are fetched and transformed, barycentrics come from intersecting the pixel's ray with
+// the triangle (perspective-correct by construction), and the rays through the next pixel right
+// and down give the derivatives that texture filtering and normal mapping need. The material is
+// sampled with explicit gradients from one texture table (GpuScene::textureTable, set 1).
+//
+// Workgroups must be kVisibilityGroupSize x kVisibilityGroupSize and every invocation must call
+// rebuildSurface (its material loop has barriers).
+#ifndef LLL_VISIBILITY_SURFACE_GLSL
+#define LLL_VISIBILITY_SURFACE_GLSL
+#extension GL_EXT_control_flow_attributes : enable
+#include "common/gbuffer.glsl"
+#include "common/material_surface.glsl"
+
+layout(constant_id = 20) const uint kTriangleBits = 16u;
+layout(constant_id = 21) const uint kTextureCount = 2u;
+
+layout(std430, set = 0, binding = 16) readonly buffer SurfaceRecordBlock {
+  SurfaceRecord surfaceRecords[];
+};
+layout(std430, set = 0, binding = 17) readonly buffer InstanceBlock {
+  MeshInstance meshInstances[];
+};
+// lll::Vertex: position xyz, normal xyz, uv, tangent xyzw (12 floats).
+layout(std430, set = 0, binding = 18) readonly buffer VertexBlock {
+  float vertexData[];
+};
+layout(std430, set = 0, binding = 19) readonly buffer IndexBlock {
+  uint sceneIndices[];
+};
+layout(set = 0, binding = 20, r32ui) uniform readonly uimage2D visibilityImage;
+layout(set = 1, binding = 0) uniform sampler2D sceneTextures[kTextureCount];
+
+const uint kVisibilityGroupSize = 8u;
+
+struct TriangleVertex {
+  vec3 position;
+  vec3 normal;
+  vec2 uv;
+  vec4 tangent;
+};
+
+TriangleVertex fetchVertex(uint index) {
+  uint b = index * 12u;
+  TriangleVertex v;
+  v.position = vec3(vertexData[b], vertexData[b + 1u], vertexData[b + 2u]);
+  v.normal = vec3(vertexData[b + 3u], vertexData[b + 4u], vertexData[b + 5u]);
+  v.uv = vec2(vertexData[b + 6u], vertexData[b + 7u]);
+  v.tangent = vec4(vertexData[b + 8u], vertexData[b + 9u], vertexData[b + 10u], vertexData[b + 11u]);
+  return v;
+}
+
+// The ray through a point of the image (in pixels, y down), scaled to unit view depth: the hit at
+// ray parameter t lies at linear depth t.
+vec3 pixelRay(vec2 fragCoord) {
+  return reconstructPosition(fragCoord, 1.0) - frame.cameraPosition.xyz;
+}
+
+// Barycentrics (of p1 and p2) where `ray` from the eye meets the plane of the triangle p0 p1 p2,
+// and the ray parameter there.
+vec3 rayBarycentrics(vec3 ray, vec3 p0, vec3 e1, vec3 e2, vec3 n) {
+  float along = dot(ray, n);
+  float t = abs(along) > 1e-30 ? dot(p0 - frame.cameraPosition.xyz, n) / along : 0.0;
+  vec3 hit = frame.cameraPosition.xyz + t * ray - p0;
+  float area2 = max(dot(n, n), 1e-37);
+  return vec3(dot(cross(hit, e2), n) / area2, dot(cross(e1, hit), n) / area2, t);
+}
+
+// The geometry of the surface a pixel's id names.
+struct SurfaceGeometry {
+  vec3 position;
+  vec3 normal;
+  vec4 tangent;
+  vec2 uv;
+  SurfaceDerivatives d;
+  bool frontFacing;
+  float viewDepth;
+};
+
+SurfaceGeometry surfaceGeometry(uvec2 pixel, SurfaceRecord record, uint triangle) {
+  MeshInstance instance = meshInstances[record.instance];
+  uint first = record.firstIndex + 3u * triangle;
+  TriangleVertex v0 = fetchVertex(sceneIndices[first] + record.vertexOffset);
+  TriangleVertex v1 = fetchVertex(sceneIndices[first + 1u] + record.vertexOffset);
+  TriangleVertex v2 = fetchVertex(sceneIndices[first + 2u] + record.vertexOffset);
+  vec3 p0 = (instance.model * vec4(v0.position, 1.0)).xyz;
+  vec3 e1 = (instance.model * vec4(v1.position, 1.0)).xyz - p0;
+  vec3 e2 = (instance.model * vec4(v2.position, 1.0)).xyz - p0;
+  vec3 n = cross(e1, e2);  // counter-clockwise: the side the rasterizer calls front
+
+  // Derivatives as a rasterizer takes them: across the pixel's 2x2 quad, right column minus left
+  // and bottom row minus top, so texture levels of detail match a fragment shader's.
+  vec2 center = vec2(pixel) + 0.5;
+  vec2 side = vec2((pixel.x & 1u) == 0u ? 1.0 : -1.0, (pixel.y & 1u) == 0u ? 1.0 : -1.0);
+  vec3 b = rayBarycentrics(pixelRay(center), p0, e1, e2, n);
+  vec3 bx = rayBarycentrics(pixelRay(center + vec2(side.x, 0.0)), p0, e1, e2, n);
+  vec3 by = rayBarycentrics(pixelRay(center + vec2(0.0, side.y)), p0, e1, e2, n);
+  vec2 dbx = (bx.xy - b.xy) * side.x, dby = (by.xy - b.xy) * side.y;
+  SurfaceGeometry g;
+  g.position = p0 + b.x * e1 + b.y * e2;
+  g.viewDepth = b.z;
+  g.d.dpx = dbx.x * e1 + dbx.y * e2;
+  g.d.dpy = dby.x * e1 + dby.y * e2;
+  vec2 du1 = v1.uv - v0.uv, du2 = v2.uv - v0.uv;
+  g.d.duvx = dbx.x * du1 + dbx.y * du2;
+  g.d.duvy = dby.x * du1 + dby.y * du2;
+  g.uv = v0.uv + b.x * du1 + b.y * du2;
+  float w0 = 1.0 - b.x - b.y;
+  mat3 normalMatrix = mat3(instance.normalMatrix[0].xyz, instance.normalMatrix[1].xyz, instance.normalMatrix[2].xyz);
+  g.normal = normalMatrix * (w0 * v0.normal + b.x * v1.normal + b.y * v2.normal);
+  mat3 linear = mat3(instance.model);
+  vec3 objectTangent = w0 * v0.tangent.xyz + b.x * v1.tangent.xyz + b.y * v2.tangent.xyz;
+  // A primitive's vertices all have tangents (w = +-1 each) or none do (w = 0).
+  g.tangent = vec4(linear * objectTangent, v0.tangent.w * (determinant(linear) < 0.0 ? -1.0 : 1.0));
+  g.frontFacing = dot(n, frame.cameraPosition.xyz - p0) > 0.0;
+  return g;
+}
+
+shared uint visibilityNextMaterial;
+
+// A texture of the table at the level of detail Vulkan's sampler would pick from these gradients
+// (isotropic: the longer of the two scaled gradients). textureLod rather than textureGrad:
+// lavapipe's LLVM (Mesa 22.3) cannot compile textureGrad on a dynamically indexed sampler array
+// ("Cannot emit physreg copy instruction"); `index` must be uniform across the workgroup.
+vec4 sampleTextureTable(uint index, vec2 uv, SurfaceDerivatives d) {
+  vec2 size = vec2(textureSize(sceneTextures[index], 0));
+  vec2 dx = d.duvx * size, dy = d.duvy * size;
+  float lod = 0.5 * log2(max(max(dot(dx, dx), dot(dy, dy)), 1e-20));
+  return textureLod(sceneTextures[index], uv, lod);
+}
+
+// The surface at `pixel`, or false where the visibility pass drew nothing (or `inside` is false:
+// the workgroup's invocations beyond the image, which must call this too). `viewDepth` is the
+// linear depth of the rebuilt point.
+bool rebuildSurface(uvec2 pixel, bool inside, out Surface s, out float viewDepth) {
+  uint id = inside ? imageLoad(visibilityImage, ivec2(pixel)).r : kNoSurface;
+  bool covered = id != kNoSurface;
+  SurfaceRecord record = SurfaceRecord(0u, 0u, 0u, 0u);
+  SurfaceGeometry g;
+  g.position = frame.cameraPosition.xyz;
+  g.normal = vec3(0.0, 0.0, 1.0);
+  g.tangent = vec4(0.0);
+  g.uv = vec2(0.0);
+  g.d = SurfaceDerivatives(vec3(0.0), vec3(0.0), vec2(0.0), vec2(0.0));
+  g.frontFacing = true;
+  g.viewDepth = 0.0;
+  if (covered) {
+    record = surfaceRecords[id >> kTriangleBits];
+    g = surfaceGeometry(pixel, record, id & ((1u << kTriangleBits) - 1u));
+  }
+  viewDepth = g.viewDepth;
+  vec2 uv = g.uv;
+  SurfaceDerivatives d = g.d;
+
+  // The material, sampled in a loop over the materials the workgroup sees: each round takes the
+  // smallest material not yet done, so the texture index is the same for the whole workgroup
+  // (lavapipe has no non-uniform descriptor indexing; a subgroup-uniform index is not enough by
+  // the spec). Levels of detail come from the rays' derivatives: in compute there are no quads.
+  GpuMaterial m = materials[record.material];
+  MaterialSamples t;
+  t.baseColor = vec4(1.0);
+  t.metallicRoughness = vec4(1.0);
+  t.normal = vec3(0.5, 0.5, 1.0);
+  t.emissive = vec3(1.0);
+  t.occlusion = 1.0;
+  uint mine = covered ? record.material : 0xFFFFFFFFu;
+  for (;;) {
+    if (gl_LocalInvocationIndex == 0u) visibilityNextMaterial = 0xFFFFFFFFu;
+    barrier();
+    if (mine != 0xFFFFFFFFu) atomicMin(visibilityNextMaterial, mine);
+    barrier();
+    uint chosen = visibilityNextMaterial;
+    barrier();
+    if (chosen == 0xFFFFFFFFu) break;
+    GpuMaterial c = materials[chosen];
+    if (mine == chosen) {
+      t.baseColor = sampleTextureTable(c.textures.x, uv, d);
+      t.metallicRoughness = sampleTextureTable(c.textures.y, uv, d);
+      t.normal = sampleTextureTable(c.textures.z, uv, d).xyz;
+      t.emissive = sampleTextureTable(c.textures.w, uv, d).rgb;
+      t.occlusion = sampleTextureTable(c.flags.w, uv, d).r;
+      mine = 0xFFFFFFFFu;
+    }
+  }
+  s = assembleSurface(m, t, g.position, g.normal, g.tangent, d, g.frontFacing);
+  return covered;
+}
+
+#endif

@@ -1,0 +1,63 @@
+#pragma once
+// The visibility buffer (--surfaces visibility): one raster pass writes depth and, per pixel, a
+// 32-bit id of the triangle seen there; compute passes then rebuild the surface from the id
+// (shaders/common/visibility_surface.glsl: the triangle's vertices, barycentrics from the pixel's
+// ray, the material sampled with explicit gradients). The raster pass has a trivial fragment shader
+// and reads positions alone; all opaque draws go in one indirect multi-draw per cull mode, and only
+// alpha-masked primitives are drawn one by one (they need their material's texture).
+//
+// Ids: a surface record is one (primitive, visible instance) pair of this frame (gpu::SurfaceRecord);
+// a pixel's id is record << triangleBits | triangle, triangleBits enough for the largest primitive.
+// A scene whose records and triangles do not fit in 32 bits cannot use it (problem() says so).
+#include <string>
+#include <vector>
+
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "render/frame.h"
+
+namespace lll {
+
+class VisibilityBuffer {
+ public:
+  // Why `scene` cannot use the visibility buffer on `context`'s device; empty when it can.
+  static std::string problem(const Context& context, const GpuScene& scene);
+
+  VisibilityBuffer(Context& context, const GpuScene& scene);
+
+  // After GpuScene::prepareFrame: this frame's surface records, draw commands and record bases.
+  void prepareFrame(const GpuScene& scene);
+  // The "visibility" pass: clears and writes frame.targets.depth (left DEPTH_READ_ONLY_OPTIMAL,
+  // as the depth prepass leaves it) and frame.targets.visibility (left GENERAL, readable by
+  // compute shaders).
+  void record(FrameContext& frame) const;
+
+  // What common/visibility_surface.glsl reads, at its bindings (16 to 20).
+  void bindSurfaceData(DescriptorWriter& writer, const FrameContext& frame) const;
+  // Its specialization constants (the id layout, the texture table's length).
+  SpecializationConstants surfaceConstants(const GpuScene& scene) const;
+  uint32_t triangleBits() const { return triangleBits_; }
+  uint32_t recordCount() const { return recordCount_; }
+
+ private:
+  struct MaskedDraw {
+    uint32_t draw;  // index into GpuScene::draws()
+    uint32_t recordBase;
+  };
+
+  Context& context_;
+  uint32_t triangleBits_ = 0;
+  PipelineLayout layout_;
+  PipelineLayout maskedLayout_;
+  Pipeline opaque_;
+  Pipeline masked_;
+  Buffer records_;   // gpu::SurfaceRecord, rewritten every frame
+  Buffer commands_;  // VkDrawIndexedIndirectCommand: single-sided draws, then double-sided ones
+  Buffer bases_;     // each command's first record
+  uint32_t singleSided_ = 0;
+  uint32_t doubleSided_ = 0;
+  std::vector<MaskedDraw> maskedDraws_;
+  uint32_t recordCount_ = 0;
+};
+
+}  // namespace lll
