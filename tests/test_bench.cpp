@@ -59,7 +59,8 @@ TEST(BenchStats, PassOrderKeepsEveryFramesOwnOrder) {
 
 size_t variantsPerLightCount() {
   size_t n = 0;
-  for (const TechniqueInfo& t : techniques()) n += t.name == "lll" ? 4 : 1;  // 3 fills + fragment shading
+  // lll: 3 fills, the compute fill on G-buffer surfaces and with fragment shading
+  for (const TechniqueInfo& t : techniques()) n += t.name == "lll" ? 5 : 1;
   return n;
 }
 
@@ -85,14 +86,14 @@ TEST(BenchSuites, ForwardOverManyLightsIsSkippedOnCpuUnlessAsked) {
 
 TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {
   const auto threel = buildSuite("threel", SuiteOptions{.quick = true});
-  ASSERT_EQ(threel.size(), 20u);
+  ASSERT_EQ(threel.size(), 24u);
   std::set<std::string> labels, names;
   for (const Scenario& s : threel) {
     labels.insert(techniqueLabel(s.settings));
     names.insert(s.name);
     EXPECT_EQ(s.settings.tileSize, 8u);
   }
-  EXPECT_EQ(labels, (std::set<std::string>{"lll/shells", "lll/ray", "lll/compute",
+  EXPECT_EQ(labels, (std::set<std::string>{"lll/shells", "lll/ray", "lll/compute", "lll/compute/gbuffer",
                                            "lll/compute/fragment-shade", "forward"}));
   EXPECT_EQ(names, (std::set<std::string>{"threel16 32x18", "threel16 64x36", "threel256 32x18",
                                           "threel256 64x36"}));
@@ -203,7 +204,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   const fs::path dir = freshDir("bench-test");
   writeReport(report, dir);
 
-  ASSERT_EQ(report.results.size(), 20u);
+  ASSERT_EQ(report.results.size(), 24u);
   std::map<std::string, size_t> expectedRows;
   for (const ScenarioResult& r : report.results) {
     const std::string& technique = r.scenario.settings.technique;
@@ -225,7 +226,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   const auto json = nlohmann::json::parse(readText(dir / "results.json"));
   EXPECT_EQ(json["device"], context.info().name);
   EXPECT_EQ(json["commit"], gitCommit());
-  ASSERT_EQ(json["results"].size(), 20u);
+  ASSERT_EQ(json["results"].size(), 24u);
   for (const auto& r : json["results"]) {
     EXPECT_EQ(r["driver"], context.info().driver);
     EXPECT_FALSE(r["date"].get<std::string>().empty());

@@ -48,6 +48,7 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"label", techniqueLabel(s.settings)},
       {"fill", s.settings.technique == "lll" ? s.settings.lllFill : ""},
       {"shade", s.settings.technique == "lll" ? s.settings.lllShade : ""},
+      {"surfaces", s.settings.surfaces},
       {"tile", s.settings.tileSize},
       {"particles", s.settings.particles},
       {"particle_count", s.settings.particleCount},

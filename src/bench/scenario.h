@@ -18,7 +18,8 @@ struct Scenario {
   std::string skip;         // why the suite leaves it out (recorded, not run); empty to run it
 };
 
-// The light linked list's variant: its fill, with "/fragment-shade" when opaque surfaces are lit
+// The light linked list's variant: its fill, with "/gbuffer" when opaque surfaces come from the raster
+// G-buffer instead of the visibility buffer, "/fragment-shade" when they are lit
 // in the fragment shader rather than the default compute pass; empty for other techniques.
 std::string lllVariant(const RenderSettings& settings);
 // "lll/ray" for the light linked list (its fill matters as much as the technique), else the name.

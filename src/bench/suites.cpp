@@ -35,7 +35,8 @@ Scenario makeScenario(const std::string& suite, const std::string& name, const S
 }
 
 // One copy of `base` per technique in `names`; "lll" expands to one per fill when `everyFill`
-// (opaque shading in compute), plus the compute fill with the chapter's fragment shading.
+// (opaque shading in compute from the visibility buffer), plus the compute fill with surfaces from
+// the raster G-buffer and with the chapter's fragment shading.
 std::vector<Scenario> perTechnique(const Scenario& base, const std::vector<std::string>& names,
                                    bool everyFill) {
   std::vector<Scenario> out;
@@ -51,6 +52,9 @@ std::vector<Scenario> perTechnique(const Scenario& base, const std::vector<std::
       out.push_back(s);
     }
     s.settings.lllFill = "compute";
+    s.settings.surfaces = "gbuffer";
+    out.push_back(s);
+    s.settings.surfaces = "visibility";
     s.settings.lllShade = "fragment";
     out.push_back(s);
   }
@@ -160,7 +164,8 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
 
 std::string lllVariant(const RenderSettings& settings) {
   if (settings.technique != "lll") return "";
-  return settings.lllShade == "fragment" ? settings.lllFill + "/fragment-shade" : settings.lllFill;
+  if (settings.lllShade == "fragment") return settings.lllFill + "/fragment-shade";
+  return settings.surfaces == "gbuffer" ? settings.lllFill + "/gbuffer" : settings.lllFill;
 }
 
 std::string techniqueLabel(const RenderSettings& settings) {
