@@ -6,6 +6,11 @@
 
 const float kPi = 3.14159265358979;
 
+// Whether the scene has spot and box lights (lightTypeConstants, render/frame.h): a pass that sets
+// them false compiles those branches out of every light evaluation.
+layout(constant_id = 30) const bool kSceneHasSpots = true;
+layout(constant_id = 31) const bool kSceneHasBoxes = true;
+
 struct Surface {
   vec3 position;
   vec3 normal;  // unit, facing the viewer's side for double-sided materials
@@ -74,7 +79,7 @@ float rangeAttenuation(float distance, float range) {
 }
 
 float spotAttenuation(GpuLight light, vec3 towardsLight) {
-  if (uint(light.directionType.w) != kLightSpot) return 1.0;
+  if (!kSceneHasSpots || uint(light.directionType.w) != kLightSpot) return 1.0;
   float cd = dot(light.directionType.xyz, -towardsLight);
   float t = clamp(cd * light.spotParams.z + light.spotParams.w, 0.0, 1.0);
   return t * t;
@@ -103,7 +108,7 @@ void boxHalfAxes(GpuLight light, out vec3 x, out vec3 y, out vec3 z) {
 // How much of a light's intensity reaches a point `toLight` away from it (`distance` its length,
 // `l` its direction): inverse square times the light's window (range sphere, spot cone or box).
 float lightAttenuation(GpuLight light, vec3 toLight, vec3 l, float distance) {
-  if (uint(light.directionType.w) == kLightBox)
+  if (kSceneHasBoxes && uint(light.directionType.w) == kLightBox)
     return boxWindow(light, -toLight) / max(distance * distance, 1e-4);
   return rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
 }

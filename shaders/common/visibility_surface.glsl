@@ -15,6 +15,12 @@
 
 layout(constant_id = 20) const uint kTriangleBits = 16u;
 layout(constant_id = 21) const uint kTextureCount = 2u;
+// True on lavapipe, whose LLVM (Mesa 22.3) cannot compile textureGrad on an indexed sampler array
+// ("Cannot emit physreg copy instruction"): there the level of detail is computed here as
+// Vulkan's sampler defines it. Elsewhere textureGrad lets the texture unit pick it exactly as it
+// does for a fragment shader (GPUs approximate the definition; the forward reference is drawn
+// by fragments).
+layout(constant_id = 22) const bool kComputedLevelOfDetail = false;
 
 layout(std430, set = 0, binding = 16) readonly buffer SurfaceRecordBlock {
   SurfaceRecord surfaceRecords[];
@@ -119,11 +125,10 @@ SurfaceGeometry surfaceGeometry(uvec2 pixel, SurfaceRecord record, uint triangle
 
 shared uint visibilityNextMaterial;
 
-// A texture of the table at the level of detail Vulkan's sampler would pick from these gradients
-// (isotropic: the longer of the two scaled gradients). textureLod rather than textureGrad:
-// lavapipe's LLVM (Mesa 22.3) cannot compile textureGrad on a dynamically indexed sampler array
-// ("Cannot emit physreg copy instruction"); `index` must be uniform across the workgroup.
+// A texture of the table with these gradients; `index` must be uniform across the workgroup.
 vec4 sampleTextureTable(uint index, vec2 uv, SurfaceDerivatives d) {
+  if (!kComputedLevelOfDetail) return textureGrad(sceneTextures[index], uv, d.duvx, d.duvy);
+  // Vulkan's isotropic level of detail: the longer of the two gradients, in texels.
   vec2 size = vec2(textureSize(sceneTextures[index], 0));
   vec2 dx = d.duvx * size, dy = d.duvy * size;
   float lod = 0.5 * log2(max(max(dot(dx, dx), dot(dy, dy)), 1e-20));

@@ -16,7 +16,8 @@ class Forward final : public Technique {
   Forward(Context& context, const GpuScene& scene, const VisibilityBuffer* visibility)
       : layout_(meshPassLayout(context, scene)) {
     if (visibility) {
-      const SpecializationConstants constants = visibility->surfaceConstants(scene);
+      SpecializationConstants constants = visibility->surfaceConstants(scene);
+      constants.merge(lightTypeConstants(scene));
       computeLayout_ = PipelineLayout(context, {"lighting/forward_visibility.comp"},
                                       {scene.textureTableLayout()}, constants);
       opaqueCompute_ = Pipeline(context, computeLayout_, "lighting/forward_visibility.comp", constants);

@@ -88,6 +88,9 @@ uint32_t parseDebugView(const std::string& name) {
   throw InputError(fmt::format("--debug-view {}: expected none, heatmap, bounds or tiles", name));
 }
 
+// shaders/lighting/lll/shade_visibility.comp: a workgroup is one tile.
+constexpr uint32_t kWorkgroupIsTileConstant = 23;
+
 // Indexed mesh of a light shell on the GPU.
 struct ShellMesh {
   Buffer vertices;
@@ -205,11 +208,13 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
     gbuffer_ = std::make_unique<GBuffer>(context, scene, targets);
   createPipelines(scene);
   if (parseComputeShading(settings.lllShade) && visibility) {
-    shadeVisibilityLayout_ =
-        PipelineLayout(context, {"lighting/lll/shade_visibility.comp"}, {scene.textureTableLayout()},
-                       visibility->surfaceConstants(scene));
-    shadeVisibility_ = Pipeline(context, shadeVisibilityLayout_, "lighting/lll/shade_visibility.comp",
-                                visibility->surfaceConstants(scene));
+    SpecializationConstants constants = visibility->surfaceConstants(scene);
+    constants.merge(lightTypeConstants(scene));
+    constants[kWorkgroupIsTileConstant] = tile == gpu::kTileGroupSize && settings.debugView == "none";
+    shadeVisibilityLayout_ = PipelineLayout(context, {"lighting/lll/shade_visibility.comp"},
+                                            {scene.textureTableLayout()}, constants);
+    shadeVisibility_ =
+        Pipeline(context, shadeVisibilityLayout_, "lighting/lll/shade_visibility.comp", constants);
   }
   if (fill_ != LllFill::Compute) createShells(scene);
   allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile));

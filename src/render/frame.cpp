@@ -63,6 +63,15 @@ void drawSceneIntoHdr(FrameContext& frame, const Pipeline& pipeline, const Pipel
   vkCmdEndRendering(frame.cmd);
 }
 
+SpecializationConstants lightTypeConstants(const GpuScene& scene) {
+  bool spots = false, boxes = false;
+  for (const Light& light : scene.scene().lights) {
+    spots |= light.type == LightType::Spot;
+    boxes |= light.type == LightType::Box;
+  }
+  return {{30, spots ? 1u : 0u}, {31, boxes ? 1u : 0u}};
+}
+
 void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets) {
   vkCmdDispatch(cmd, divideRoundingUp(targets.width, gpu::kTileGroupSize),
                 divideRoundingUp(targets.height, gpu::kTileGroupSize), 1);

@@ -50,8 +50,6 @@ class GpuScene {
   const Buffer& materialBuffer() const { return materials_; }
   const Buffer& lightBuffer() const { return lights_; }
   uint32_t lightCount() const { return lightCount_; }
-  // Replaces the light array (e.g. lights animated by the CPU); grows the buffer when needed.
-  void uploadLights(const std::vector<Light>& lights);
 
   // Geometry for passes that fetch it themselves: the visibility pass's position-only stream
   // (tightly packed vec3) and, for rebuilding surfaces in compute, every vertex (lll::Vertex) and
@@ -99,6 +97,9 @@ class GpuScene {
   void uploadGeometry();
   void uploadInstances();
   void uploadMaterials();
+  // The scene's lights, once: passes specialize on which light types the scene has
+  // (lightTypeConstants, render/frame.h).
+  void uploadLights(const std::vector<Light>& lights);
   void uploadTextures();
   void createMaterialSets();
   void createTextureTable();

@@ -15,6 +15,7 @@ namespace {
 // Constant ids of common/visibility_surface.glsl and common/visibility.frag.
 constexpr uint32_t kTriangleBitsConstant = 20;
 constexpr uint32_t kTextureCountConstant = 21;
+constexpr uint32_t kComputedLevelOfDetailConstant = 22;
 
 bool masked(const GpuScene& scene, const DrawItem& d) {
   return scene.scene().materials[d.material].alphaMode == AlphaMode::Mask;
@@ -207,7 +208,9 @@ void VisibilityBuffer::bindSurfaceData(DescriptorWriter& writer, const FrameCont
 }
 
 SpecializationConstants VisibilityBuffer::surfaceConstants(const GpuScene& scene) const {
-  return {{kTriangleBitsConstant, triangleBits_}, {kTextureCountConstant, scene.textureCount()}};
+  return {{kTriangleBitsConstant, triangleBits_},
+          {kTextureCountConstant, scene.textureCount()},
+          {kComputedLevelOfDetailConstant, context_.isCpuDevice() ? 1u : 0u}};
 }
 
 }  // namespace lll
