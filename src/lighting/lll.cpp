@@ -88,9 +88,6 @@ uint32_t parseDebugView(const std::string& name) {
   throw InputError(fmt::format("--debug-view {}: expected none, heatmap, bounds or tiles", name));
 }
 
-// shaders/lighting/lll/shade_visibility.comp: a workgroup is one tile.
-constexpr uint32_t kWorkgroupIsTileConstant = 23;
-
 // Indexed mesh of a light shell on the GPU.
 struct ShellMesh {
   Buffer vertices;
@@ -210,7 +207,6 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   if (parseComputeShading(settings.lllShade) && visibility) {
     SpecializationConstants constants = visibility->surfaceConstants(scene);
     constants.merge(lightTypeConstants(scene));
-    constants[kWorkgroupIsTileConstant] = tile == gpu::kTileGroupSize && settings.debugView == "none";
     shadeVisibilityLayout_ = PipelineLayout(context, {"lighting/lll/shade_visibility.comp"},
                                             {scene.textureTableLayout()}, constants);
     shadeVisibility_ =
