@@ -28,7 +28,7 @@ TEST(Reflection, TonemapReadsHdrAndWritesLdrAsStorageImages) {
 
 TEST(Reflection, MeshPassMergesStagesAndSizesThePushConstants) {
   const ShaderInterface vertex = reflect("common/mesh.vert");
-  const ShaderInterface fragment = reflect("lighting/forward.frag");
+  const ShaderInterface fragment = reflect("lit/forward/shade_geometry.frag");
   EXPECT_EQ(fragment.pushConstantBytes, sizeof(gpu::DrawPush));  // the material index
   const ShaderInterface mesh = mergeInterfaces({vertex, fragment});
   EXPECT_EQ(mesh.stages, VkShaderStageFlags(VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT));
@@ -43,7 +43,7 @@ TEST(Reflection, MeshPassMergesStagesAndSizesThePushConstants) {
     EXPECT_EQ(textures[i].type, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
     EXPECT_EQ(textures[i].stages, VkShaderStageFlags(VK_SHADER_STAGE_FRAGMENT_BIT));
   }
-  EXPECT_EQ(mesh.pushConstantStages, VkShaderStageFlags(VK_SHADER_STAGE_FRAGMENT_BIT));
+  EXPECT_EQ(mesh.pushConstantStages, VkShaderStageFlags(VK_SHADER_STAGE_FRAGMENT_BIT));  // who declares them
 }
 
 TEST(Reflection, ConflictingStagesAreABug) {

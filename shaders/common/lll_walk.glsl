@@ -24,14 +24,6 @@ bool nextListedLight(inout uint link, inout uint steps, float linearDepth, out u
   return false;
 }
 
-// Sum of the lights in the tile's list whose depth bounds contain `linearDepth`.
-vec3 shadeFromLightList(Surface s, uint tileIndex, float linearDepth) {
-  vec3 color = vec3(0.0);
-  uint link = tileHeads[tileIndex], steps = 0u, light;
-  while (nextListedLight(link, steps, linearDepth, light)) color += evaluateLight(lights[light], s);
-  return color;
-}
-
 uint listLength(uint tileIndex) {
   uint count = 0u;
   uint link = tileHeads[tileIndex];

@@ -1,14 +1,8 @@
 // The particle draw's fragment shader: a round, noisy puff on the quad, faded where it meets the
 // scene (soft particles: the prepass depth, sampled) and premultiplied for BlendMode::Alpha; the
 // `additive` share leaves the destination untouched, so sparks add light rather than cover it.
-// PARTICLE_SHADING selects the lights added per pixel: none (the vertex shader's radiance is
-// complete), every light, or the tile's light list.
-#define PARTICLE_SHADING_NONE 0
-#define PARTICLE_SHADING_ALL_LIGHTS 1
-#define PARTICLE_SHADING_LIGHT_LIST 2
-#if PARTICLE_SHADING == PARTICLE_SHADING_LIGHT_LIST
-#define PARTICLE_LIGHT_LIST
-#endif
+// With PARTICLE_LIT (lit/particles_pixel.frag) every pixel adds the technique's lights
+// (particles/scatter_lights.glsl); without, the vertex shader's radiance is complete.
 #include "particles/random.glsl"
 #include "particles/scattering.glsl"
 
@@ -48,17 +42,11 @@ void main() {
   float fade = clamp((sceneLinearDepth - depth) / system.shading.w, 0.0, 1.0);
   float alpha = inAlbedoOpacity.a * puffDensity(r2, inPattern) * fade;
   vec3 radiance = inBaseRadiance;
-#if PARTICLE_SHADING != PARTICLE_SHADING_NONE
+#ifdef PARTICLE_LIT
   vec3 normal =
       normalize(cameraRight() * inOffset.x + cameraUp() * inOffset.y + cameraBack() * sqrt(1.0 - r2));
   vec3 towardEye = normalize(frame.cameraPosition.xyz - inWorldPosition);
-#if PARTICLE_SHADING == PARTICLE_SHADING_LIGHT_LIST
-  vec3 light =
-      scatterFromLightList(inWorldPosition, normal, towardEye, tileIndexOf(uvec2(gl_FragCoord.xy)), depth);
-#else
-  vec3 light = scatterAllLights(inWorldPosition, normal, towardEye);
-#endif
-  radiance += inAlbedoOpacity.rgb * light;
+  radiance += inAlbedoOpacity.rgb * scatterLights(inWorldPosition, normal, towardEye, uvec2(gl_FragCoord.xy), depth);
 #endif
   outColor = vec4(radiance * alpha, alpha * (1.0 - system.blend.x));
 }

@@ -1,5 +1,4 @@
 #version 460
 // Particles whose radiance the vertex shader computed: unlit (ambient and emission), or lit once
 // per particle (--particle-lighting vertex).
-#define PARTICLE_SHADING PARTICLE_SHADING_NONE
 #include "particles/draw_fragment.glsl"

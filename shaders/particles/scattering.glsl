@@ -5,14 +5,11 @@
 //   radiance = albedo / pi * E * (max(n.l + wrap, 0) / (1 + wrap) + back * max(-v.l, 0)^focus)
 // E is the light's intensity with KHR_lights_punctual attenuation, exactly as surfaces get it.
 // Pixel lighting uses the normal of a sphere under the quad; vertex lighting the normal facing the
-// camera. Define PARTICLE_LIGHT_LIST before including this to walk the tile's light list.
+// camera. The lit templates sum it over the technique's lights (particles/scatter_lights.glsl).
 #ifndef LLL_PARTICLE_SCATTERING_GLSL
 #define LLL_PARTICLE_SCATTERING_GLSL
 #include "common/brdf.glsl"
 #include "particles/particle_data.glsl"
-#ifdef PARTICLE_LIGHT_LIST
-#include "common/lll_walk.glsl"
-#endif
 
 // Light one light sends towards the eye per unit albedo, from a particle at `position`.
 vec3 scatterLight(GpuLight light, vec3 position, vec3 normal, vec3 towardEye) {
@@ -27,25 +24,6 @@ vec3 scatterLight(GpuLight light, vec3 position, vec3 normal, vec3 towardEye) {
   float back = system.shading.y * pow(max(dot(-towardEye, l), 0.0), system.shading.z);
   return light.colorIntensity.rgb * (light.colorIntensity.w * attenuation * (diffuse + back) / kPi);
 }
-
-vec3 scatterAllLights(vec3 position, vec3 normal, vec3 towardEye) {
-  vec3 sum = vec3(0.0);
-  uint lightCount = frame.counts.x;
-  for (uint i = 0u; i < lightCount; ++i) sum += scatterLight(lights[i], position, normal, towardEye);
-  return sum;
-}
-
-#ifdef PARTICLE_LIGHT_LIST
-// The particle's own depth picks the lights, as glass's does (common/lll_walk.glsl's walk with the
-// particle's scattering in place of the BRDF).
-vec3 scatterFromLightList(vec3 position, vec3 normal, vec3 towardEye, uint tileIndex, float linearDepth) {
-  vec3 sum = vec3(0.0);
-  uint link = tileHeads[tileIndex], steps = 0u, light;
-  while (nextListedLight(link, steps, linearDepth, light))
-    sum += scatterLight(lights[light], position, normal, towardEye);
-  return sum;
-}
-#endif
 
 // The camera's axes in world space: quads lie in the plane of `right` and `up`, `back` faces the eye.
 vec3 cameraRight() {

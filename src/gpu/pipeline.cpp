@@ -119,7 +119,10 @@ PipelineLayout::PipelineLayout(Context& context, std::initializer_list<std::stri
   for (const ReflectedBinding& b : merged.set(0))
     vkBindings.push_back({b.binding, b.type, b.count, b.stages, nullptr});
   pushSet_ = createPushSetLayout(context, vkBindings);
-  layout_ = createLayout(context, pushSet_, extraSets, merged.pushConstantBytes, merged.pushConstantStages);
+  // Push constants for every stage of the pipeline, whichever declare them: the code that pushes
+  // them (GpuScene::draw, for one) names the stages of a pass, not of each shader.
+  layout_ = createLayout(context, pushSet_, extraSets, merged.pushConstantBytes,
+                         merged.pushConstantBytes ? merged.stages : 0);
   for (const VkDescriptorSetLayoutBinding& b : vkBindings) pushBindings_.push_back(b.binding);
 }
 

@@ -4,8 +4,9 @@
 //                         accumulation target
 //   deferred-lights       each visible light as a bounding volume, additively blended
 //   deferred-edge-aa      (--aa edge) blend pixels on depth or normal discontinuities
-//   deferred-translucent  glass, unlit or forward-lit (--deferred-translucent); then particles,
-//                         lit the same way
+// Glass and particles are the shared passes', lit through the forward lighting interface (every
+// light per pixel, the separate forward pass engines add for them) or the unlit one
+// (--deferred-translucent unlit: ambient and emission only, the seeds' Figure 1.1).
 // G-buffer 12 B/px (RGBA8 base colour + metallic, RGBA16F normal + roughness); with the D32 depth
 // and the RGBA16F accumulation that every technique has, 24 B/px. Infinity used four RGBA16F
 // targets, 32 B/px plus its Z buffer: depth again in a colour channel, velocity, extinction and a
@@ -16,7 +17,6 @@
 #include "gpu/pipeline.h"
 #include "lighting/technique.h"
 #include "lighting/volume_lights.h"
-#include "particles/particle_system.h"
 #include "render/gbuffer.h"
 #include "scene/errors.h"
 
@@ -54,8 +54,7 @@ class Deferred final : public Technique {
  public:
   Deferred(Context& context, const GpuScene& scene, const RenderSettings& settings,
            const FrameTargets& targets)
-      : meshLayout_(meshPassLayout(context, scene)),
-        lightLayout_(context, kLightVolumeBindings),
+      : lightLayout_(context, kLightVolumeBindings),
         gbuffer_(context, scene, targets),
         volumes_(context, uint32_t(scene.scene().lights.size())),
         lightFragments_(context),
@@ -69,18 +68,18 @@ class Deferred final : public Technique {
       edgeAaLayout_ = PipelineLayout(context, kEdgeAaBindings);
       edgeAaPipeline_ = Pipeline(context, edgeAaLayout_, "lighting/deferred_edge_aa.comp");
     }
-    createScenePipelines(context, litTranslucents_);
     createLightPipelines(context);
   }
 
-  void render(FrameContext& frame) override {
+  OpaqueShading opaqueShading() const override { return OpaqueShading::Own; }
+
+  void shadeOpaque(FrameContext& frame) override {
     geometryPass(frame);
     lightPass(frame);
     if (edgeAa_) edgeAntiAliasingPass(frame);
-    translucentPass(frame);
-    if (frame.particles)
-      frame.particles->draw(frame, litTranslucents_ ? ParticleShading::AllLights : ParticleShading::Unlit);
   }
+
+  LightingInterface lighting() const override { return {litTranslucents_ ? "forward" : "unlit"}; }
 
   bool afterFrame() override {
     if (auto count = lightFragments_.read()) lastLightFragments_ = double(*count);
@@ -107,19 +106,6 @@ class Deferred final : public Technique {
   }
 
  private:
-  void createScenePipelines(Context& context, bool litTranslucents) {
-    GraphicsPipelineDesc desc;
-    desc.vertexShader = "common/mesh.vert";
-    desc.fragmentShader = "lighting/translucent.frag";
-    desc.depthFormat = kDepthFormat;
-    desc.depthWrite = false;
-    desc.colorFormats = {kHdrFormat};
-    desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
-    desc.blend = BlendMode::Alpha;
-    desc.specialization = {litTranslucents ? 1u : 0u};
-    translucentPipeline_ = Pipeline(context, meshLayout_, desc);
-  }
-
   // Infinity's states: depth test on, writes off, additive. Outside a volume its front faces are
   // drawn where they are nearer than the scene (reverse-Z GREATER_OR_EQUAL, Infinity's LESS);
   // with the camera inside, its back faces where they lie behind the scene (LESS_OR_EQUAL,
@@ -211,24 +197,11 @@ class Deferred final : public Technique {
     hdrFromComputeToAttachment(frame.cmd, t);
   }
 
-  // Translucent surfaces are not in the G-buffer; they blend over the lit opaque frame.
-  void translucentPass(FrameContext& frame) {
-    if (!frame.scene.hasBlendDraws()) return;
-    ScopedPass pass(frame.timer, frame.cmd, "deferred-translucent");
-    if (!edgeAa_)
-      memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    drawSceneIntoHdr(frame, translucentPipeline_, meshLayout_, DrawFilter::Blend, false);
-  }
-
-  PipelineLayout meshLayout_;
   PipelineLayout lightLayout_;
   PipelineLayout edgeAaLayout_;
   Pipeline outsidePipeline_;
   Pipeline insidePipeline_;
   Pipeline edgeAaPipeline_;
-  Pipeline translucentPipeline_;
   GBuffer gbuffer_;
   Image accumulation_;
   LightVolumeDraws volumes_;

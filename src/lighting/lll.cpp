@@ -14,7 +14,6 @@
 #include "gpu/vk_check.h"
 #include "lighting/light_volumes.h"
 #include "particles/particle_system.h"
-#include "render/gbuffer.h"
 #include "render/renderer.h"
 #include "render/visibility.h"
 #include "scene/errors.h"
@@ -48,9 +47,6 @@ const std::initializer_list<Binding> kBindings = {
     {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kAllStages},
     {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {11, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-    {12, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-    {13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
 };
 
 LllFill parseFill(const std::string& name) {
@@ -109,32 +105,31 @@ class LightLinkedList final : public Technique {
   LightLinkedList(Context& context, const GpuScene& scene, const RenderSettings& settings,
                   const FrameTargets& targets, const VisibilityBuffer* visibility);
   ~LightLinkedList() override;
-  void render(FrameContext& frame) override;
+  void buildLightData(FrameContext& frame) override;
+  OpaqueShading opaqueShading() const override { return opaqueShading_; }
+  LightingInterface lighting() const override;
   bool afterFrame() override;
   std::vector<std::pair<std::string, double>> stats() const override;
   TileLightLists readLists();
 
  private:
   void createBuffers();
-  void createPipelines(const GpuScene& scene);
+  void createPipelines();
   void createShells(const GpuScene& scene);
   void allocatePool(uint64_t links);
-  // The frame's bindings and the lists (0 to 7), what every pass reading the lists binds.
-  DescriptorWriter listDescriptors(const FrameContext& frame) const;
-  // listDescriptors and the fills' bounds and shell order.
+  // The frame's bindings, the lists, the fills' bounds and shell order: what the passes building
+  // the lists bind.
   DescriptorWriter descriptors(const FrameContext& frame) const;
   void clear(FrameContext& frame);
   void reduceTileDepth(FrameContext& frame);
   void fillCompute(FrameContext& frame);
   void fillRaster(FrameContext& frame);
   void drawShellBatch(FrameContext& frame, uint32_t first, uint32_t end, bool backFaces);
-  void shade(FrameContext& frame);
-  void shadeOpaqueInCompute(FrameContext& frame);
-  void shadeOpaqueFromVisibility(FrameContext& frame);
   void measureLists(FrameContext& frame);
 
   Context& context_;
   LllFill fill_;
+  OpaqueShading opaqueShading_;
   uint32_t linkFormat_;
   uint32_t linkBytes_;
   bool autoLinkFormat_;
@@ -165,24 +160,20 @@ class LightLinkedList final : public Technique {
 
   PipelineLayout layout_;
   PipelineLayout fillLayout_;
-  PipelineLayout shadeLayout_;
   Pipeline tileDepthPipeline_;
   Pipeline statsPipeline_;
   Pipeline computeFill_;
   Pipeline shellFront_[kShellShapes];
   Pipeline shellBack_[kShellShapes];
-  PipelineLayout shadeVisibilityLayout_;
-  Pipeline shadeVisibility_;  // compute shading from the visibility buffer
-  Pipeline shadeOpaque_;
-  Pipeline shadeBlend_;
-  Pipeline shadeCompute_;
-  std::unique_ptr<GBuffer> gbuffer_;  // --lll-shade compute only: its presence selects compute shading
 };
 
 LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const RenderSettings& settings,
                                  const FrameTargets& targets, const VisibilityBuffer* visibility)
     : context_(context),
       fill_(parseFill(settings.lllFill)),
+      opaqueShading_(!parseComputeShading(settings.lllShade) ? OpaqueShading::Geometry
+                     : visibility                            ? OpaqueShading::Visibility
+                                                             : OpaqueShading::GBuffer),
       linkFormat_(parseLinkFormat(settings.lllLink, scene.lightCount())),
       linkBytes_(linkFormat_ == gpu::kLinkCompact ? 8 : 16),
       autoLinkFormat_(settings.lllLink == "auto") {
@@ -201,17 +192,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   if (linkFormat_ == gpu::kLinkCompact)
     maxPoolLinks_ = std::min<uint64_t>(maxPoolLinks_, gpu::kCompactLinkEnd);
   createBuffers();
-  if (parseComputeShading(settings.lllShade) && !visibility)
-    gbuffer_ = std::make_unique<GBuffer>(context, scene, targets);
-  createPipelines(scene);
-  if (parseComputeShading(settings.lllShade) && visibility) {
-    SpecializationConstants constants = visibility->surfaceConstants(scene);
-    constants.merge(lightTypeConstants(scene));
-    shadeVisibilityLayout_ = PipelineLayout(context, {"lighting/lll/shade_visibility.comp"},
-                                            {scene.textureTableLayout()}, constants);
-    shadeVisibility_ =
-        Pipeline(context, shadeVisibilityLayout_, "lighting/lll/shade_visibility.comp", constants);
-  }
+  createPipelines();
   if (fill_ != LllFill::Compute) createShells(scene);
   allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile));
 }
@@ -247,15 +228,12 @@ void LightLinkedList::allocatePool(uint64_t links) {
   uniforms_.params.x = uint32_t(links);
 }
 
-void LightLinkedList::createPipelines(const GpuScene& scene) {
+void LightLinkedList::createPipelines() {
   layout_ = PipelineLayout(context_, kBindings);
   fillLayout_ = PipelineLayout(context_, kBindings, sizeof(gpu::FillPush), VK_SHADER_STAGE_VERTEX_BIT);
-  shadeLayout_ = PipelineLayout(context_, kBindings, sizeof(gpu::DrawPush), kGraphicsStages,
-                                {scene.materialSetLayout()});
   tileDepthPipeline_ = Pipeline(context_, layout_, "lighting/lll/tile_depth.comp");
   statsPipeline_ = Pipeline(context_, layout_, "lighting/lll/stats.comp");
   if (fill_ == LllFill::Compute) computeFill_ = Pipeline(context_, layout_, "lighting/lll/fill_compute.comp");
-  if (gbuffer_) shadeCompute_ = Pipeline(context_, layout_, "lighting/lll/shade.comp");
 
   GraphicsPipelineDesc fill;
   fill.vertexShader = "lighting/lll/fill_shell.vert";
@@ -273,18 +251,6 @@ void LightLinkedList::createPipelines(const GpuScene& scene) {
     fill.cullMode = VK_CULL_MODE_BACK_BIT;
     shellFront_[shape] = Pipeline(context_, fillLayout_, fill);
   }
-
-  GraphicsPipelineDesc shade;
-  shade.vertexShader = "common/mesh.vert";
-  shade.fragmentShader = "lighting/lll/shade.frag";
-  shade.colorFormats = {kHdrFormat};
-  shade.depthFormat = kDepthFormat;
-  shade.depthWrite = false;
-  shade.depthCompare = VK_COMPARE_OP_EQUAL;
-  shadeOpaque_ = Pipeline(context_, shadeLayout_, shade);
-  shade.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
-  shade.blend = BlendMode::Alpha;
-  shadeBlend_ = Pipeline(context_, shadeLayout_, shade);
 }
 
 void LightLinkedList::createShells(const GpuScene& scene) {
@@ -310,24 +276,15 @@ void LightLinkedList::createShells(const GpuScene& scene) {
   if (!order.empty()) shellOrder_.upload(std::span<const uint32_t>(order));
 }
 
-DescriptorWriter LightLinkedList::listDescriptors(const FrameContext& frame) const {
-  DescriptorWriter writer = meshPassDescriptors(frame);
-  writer.storage(3, uniformBuffer_.handle())
-      .storage(4, heads_.handle())
-      .storage(5, links_.handle())
-      .storage(6, counters_.handle())
-      .storage(7, tileDepth_.handle());
-  return writer;
-}
-
 DescriptorWriter LightLinkedList::descriptors(const FrameContext& frame) const {
-  DescriptorWriter writer = listDescriptors(frame);
+  DescriptorWriter writer = meshPassDescriptors(frame);
+  lighting().bind(writer);
   if (bounds_) writer.storage(8, bounds_.handle());
   if (shellOrder_) writer.storage(10, shellOrder_.handle());
   return writer;
 }
 
-void LightLinkedList::render(FrameContext& frame) {
+void LightLinkedList::buildLightData(FrameContext& frame) {
   uniforms_.grid.z =
       tileHalfDiagonalPixels_ * 2.0f * frame.uniforms.depthParams.w / float(frame.targets.height);
   uniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
@@ -338,10 +295,25 @@ void LightLinkedList::render(FrameContext& frame) {
     fillCompute(frame);
   else
     fillRaster(frame);
-  shade(frame);
+  // Every shading stage reads the lists: the shared passes' compute and fragment shaders, and the
+  // particles' vertex lighting (compute) and pixel lighting (fragment).
+  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   if (frame.capture) measureLists(frame);
   memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                 VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+}
+
+LightingInterface LightLinkedList::lighting() const {
+  return {"lll", [this](DescriptorWriter& writer) {
+            writer.storage(3, uniformBuffer_.handle())
+                .storage(4, heads_.handle())
+                .storage(5, links_.handle())
+                .storage(6, counters_.handle())
+                .storage(7, tileDepth_.handle());
+          }};
 }
 
 void LightLinkedList::clear(FrameContext& frame) {
@@ -423,82 +395,6 @@ void LightLinkedList::drawShellBatch(FrameContext& frame, uint32_t first, uint32
   vkCmdEndRendering(cmd);
 }
 
-void LightLinkedList::shade(FrameContext& frame) {
-  if (gbuffer_) gbuffer_->record(frame, "lll-gbuffer", frame.targets.hdr.view());
-  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-  if (gbuffer_) shadeOpaqueInCompute(frame);
-  if (shadeVisibility_) shadeOpaqueFromVisibility(frame);
-  const FrameTargets& t = frame.targets;
-  const struct {
-    const char* name;
-    const Pipeline& pipeline;
-    DrawFilter filter;
-  } passes[2] = {{"lll-shade-opaque", shadeOpaque_, DrawFilter::Opaque},
-                 {"lll-shade-blend", shadeBlend_, DrawFilter::Blend}};
-  for (const auto& p : passes) {
-    if (p.filter == DrawFilter::Opaque && (gbuffer_ || shadeVisibility_)) continue;
-    if (p.filter == DrawFilter::Blend && !frame.scene.hasBlendDraws()) continue;
-    ScopedPass pass(frame.timer, frame.cmd, p.name);
-    beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), p.filter == DrawFilter::Opaque}},
-                   t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-    p.pipeline.bind(frame.cmd);
-    descriptors(frame).push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadeLayout_.handle());
-    frame.scene.draw(frame.cmd, shadeLayout_.handle(), p.filter);
-    vkCmdEndRendering(frame.cmd);
-  }
-  if (frame.particles)
-    frame.particles->draw(
-        frame, ParticleShading::LightList,
-        {uniformBuffer_.handle(), heads_.handle(), links_.handle(), counters_.handle(), tileDepth_.handle()});
-}
-
-// The G-buffer pass left ambient and emission in the HDR target; one invocation per pixel adds
-// its tile's lights in place (storage image), then the target goes back to being an attachment
-// for the glass.
-void LightLinkedList::shadeOpaqueInCompute(FrameContext& frame) {
-  const FrameTargets& t = frame.targets;
-  ScopedPass pass(frame.timer, frame.cmd, "lll-shade-opaque");
-  t.hdr.transition(frame.cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-  shadeCompute_.bind(frame.cmd);
-  descriptors(frame)
-      .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(),
-             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-      .image(11, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target0().view(),
-             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      .image(12, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target1().view(),
-             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
-  dispatchPerPixel(frame.cmd, t);
-  hdrFromComputeToAttachment(frame.cmd, t);
-}
-
-// Every pixel's surface rebuilt from the visibility buffer, lit by its tile's list and written to
-// the HDR target (storage image), which then goes back to being an attachment for the glass.
-void LightLinkedList::shadeOpaqueFromVisibility(FrameContext& frame) {
-  const FrameTargets& t = frame.targets;
-  ScopedPass pass(frame.timer, frame.cmd, "lll-shade-opaque");
-  t.hdr.transition(frame.cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, 0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-  shadeVisibility_.bind(frame.cmd);
-  DescriptorWriter writer = listDescriptors(frame);
-  frame.visibility->bindSurfaceData(writer, frame);
-  writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, shadeVisibilityLayout_);
-  const VkDescriptorSet textures = frame.scene.textureTable();
-  vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, shadeVisibilityLayout_.handle(), 1, 1,
-                          &textures, 0, nullptr);
-  dispatchPerPixel(frame.cmd, t);
-  hdrFromComputeToAttachment(frame.cmd, t);
-}
-
 void LightLinkedList::measureLists(FrameContext& frame) {
   ScopedPass pass(frame.timer, frame.cmd, "lll-stats");
   statsPipeline_.bind(frame.cmd);
@@ -537,9 +433,6 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
       {"tiles", double(tiles_)},
   };
   if (bounds_) s.push_back({"bounds_bytes", double(bounds_.size())});
-  if (gbuffer_)
-    s.push_back({"gbuffer_bytes",
-                 GBuffer::kBytesPerPixel * gbuffer_->target0().width() * gbuffer_->target0().height()});
   if (measured_ && countersValid_) {
     s.push_back({"longest_list", double(lastCounters_.longestList)});
     s.push_back({"mean_list", double(lastCounters_.totalListLength) /

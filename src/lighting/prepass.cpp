@@ -7,15 +7,14 @@
 //                        back faces shade where the stencil is set and clear it; lights covering
 //                        few pixels skip the stencil step and are drawn like deferred volumes
 //   prepass-combine      the scene again with its full material: C(material, buffers)
-//   prepass-translucent  glass forward-lit, as R2 did for what did not factor; then particles,
-//                        forward-lit too
+// Glass and particles are the shared passes', forward-lit through the forward lighting interface,
+// as R2 did for what did not factor.
 // Per pixel: normal buffer 8 B + diffuse and specular buffers 16 B + depth-stencil 5 B (D32S8).
 // The approximation in C is explained in shaders/lighting/prepass_combine.frag.
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "lighting/technique.h"
 #include "lighting/volume_lights.h"
-#include "particles/particle_system.h"
 
 namespace lll {
 
@@ -130,13 +129,15 @@ class Prepass final : public Technique {
     createLightPipelines(context);
   }
 
-  void render(FrameContext& frame) override {
+  OpaqueShading opaqueShading() const override { return OpaqueShading::Own; }
+
+  void shadeOpaque(FrameContext& frame) override {
     normalsPass(frame);
     lightPass(frame);
     combinePass(frame);
-    translucentPass(frame);
-    if (frame.particles) frame.particles->draw(frame, ParticleShading::AllLights);
   }
+
+  LightingInterface lighting() const override { return {"forward"}; }
 
   std::vector<std::pair<std::string, double>> stats() const override {
     const double depthStencilBytes = depthStencilFormat_ == VK_FORMAT_D32_SFLOAT_S8_UINT ? 5 : 4;
@@ -170,11 +171,6 @@ class Prepass final : public Technique {
     desc.depthWrite = false;
     desc.depthCompare = VK_COMPARE_OP_EQUAL;  // one combine per pixel: the prepass decided
     combinePipeline_ = Pipeline(context, meshLayout_, desc);
-    desc.fragmentShader = "lighting/translucent.frag";
-    desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
-    desc.blend = BlendMode::Alpha;
-    desc.specialization = {1u};  // every light, forward
-    translucentPipeline_ = Pipeline(context, meshLayout_, desc);
   }
 
   // Marking counts, per pixel, the volume's faces in front of the scene (z-pass: front +1, back
@@ -308,15 +304,6 @@ class Prepass final : public Technique {
     vkCmdEndRendering(frame.cmd);
   }
 
-  void translucentPass(FrameContext& frame) {
-    if (!frame.scene.hasBlendDraws()) return;
-    ScopedPass pass(frame.timer, frame.cmd, "prepass-translucent");
-    memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    drawSceneIntoHdr(frame, translucentPipeline_, meshLayout_, DrawFilter::Blend, false);
-  }
-
   static void toShaderRead(VkCommandBuffer cmd, const Image& image) {
     image.transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
@@ -328,7 +315,6 @@ class Prepass final : public Technique {
   VkFormat depthStencilFormat_;
   Pipeline normalsPipeline_;
   Pipeline combinePipeline_;
-  Pipeline translucentPipeline_;
   Pipeline smallPipeline_;
   Pipeline shadePipeline_;
   Pipeline markZPassPipeline_;

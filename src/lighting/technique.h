@@ -1,23 +1,36 @@
 #pragma once
-// A lighting technique: the passes that turn the depth prepass and the scene into lit HDR radiance.
-// One technique = one .cpp file in src/lighting/ plus its shaders, registered in registry.cpp.
+// A lighting technique: what turns the visibility (or depth) pass and the scene into lit HDR
+// radiance. One technique = one .cpp file in src/lighting/ plus its shaders (at least its lighting
+// interface, shaders/lighting/<name>/lighting.glsl), registered in registry.cpp.
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "render/frame.h"
+#include "render/lighting_interface.h"
 
 namespace lll {
 
+// The frame every technique shares (render/renderer.h): visibility (or depth) pass -> the
+// technique's light data passes -> opaque shading (its own, or the shared pass through its lighting
+// interface) -> glass -> particles -> tonemap. A technique is the parts that are its own.
 class Technique {
  public:
   virtual ~Technique() = default;
 
-  // Records the technique's passes, each in a ScopedPass. On entry frame.targets.depth holds the
-  // prepass (DEPTH_READ_ONLY_OPTIMAL) and hdr is COLOR_ATTACHMENT_OPTIMAL with undefined contents;
-  // on exit hdr holds the lit frame, still COLOR_ATTACHMENT_OPTIMAL.
-  virtual void render(FrameContext& frame) = 0;
+  // The passes that build this frame's light data (lll: its lists), recorded after the visibility
+  // or depth pass: frame.targets.depth is DEPTH_READ_ONLY_OPTIMAL.
+  virtual void buildLightData(FrameContext& frame) { (void)frame; }
+
+  // How opaque surfaces are lit; for OpaqueShading::Own the technique's shadeOpaque records it.
+  virtual OpaqueShading opaqueShading() const = 0;
+  // Own opaque shading: on entry hdr is COLOR_ATTACHMENT_OPTIMAL with undefined contents; on exit
+  // it holds the lit opaque frame, still COLOR_ATTACHMENT_OPTIMAL.
+  virtual void shadeOpaque(FrameContext& frame) { (void)frame; }
+
+  // The lighting interface the shared passes (opaque shading unless Own, glass, particles) use.
+  virtual LightingInterface lighting() const = 0;
 
   // Called once the frame's GPU work completed. Returning true asks the renderer to record the
   // same frame again (the light linked list grows its pool on overflow and says so here).

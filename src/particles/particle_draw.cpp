@@ -17,31 +17,36 @@ ParticleLighting parseParticleLighting(const std::string& name) {
   throw InputError(fmt::format("--particle-lighting {}: expected pixel or vertex", name));
 }
 
-const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(ParticleShading shading) {
-  auto found = drawPipelines_.find(shading);
+const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameContext& frame,
+                                                                  const LightingInterface& lighting) {
+  auto found = drawPipelines_.find(lighting.name);
   if (found != drawPipelines_.end()) return found->second;
-  const bool perParticle = lighting_ == ParticleLighting::Vertex && shading != ParticleShading::Unlit;
+  const bool perParticle = lighting_ == ParticleLighting::Vertex;
+  const SpecializationConstants constants = lightTypeConstants(frame.scene);
   GraphicsPipelineDesc desc;
   desc.vertexShader = perParticle ? "particles/draw_vertex_lit.vert" : "particles/draw.vert";
-  desc.fragmentShader = perParticle || shading == ParticleShading::Unlit ? "particles/draw_prelit.frag"
-                        : shading == ParticleShading::AllLights          ? "particles/draw_all_lights.frag"
-                                                                         : "particles/draw_light_list.frag";
+  desc.fragmentShader =
+      perParticle ? "particles/draw_prelit.frag" : litShader(lighting, "particles_pixel.frag");
   desc.vertexInput = VertexInput::None;
   desc.cullMode = VK_CULL_MODE_NONE;  // a turned quad may face either way
   desc.depthWrite = false;
   desc.blend = BlendMode::Alpha;
   desc.colorFormats = {kHdrFormat};
   desc.depthFormat = kDepthFormat;
+  desc.constants = constants;
   DrawPipelines pipelines;
-  pipelines.draw = Pipeline(context_, layout_, desc);
-  if (perParticle)
-    pipelines.light = Pipeline(context_, layout_,
-                               shading == ParticleShading::AllLights ? "particles/light_all_lights.comp"
-                                                                     : "particles/light_light_list.comp");
-  return drawPipelines_.emplace(shading, std::move(pipelines)).first->second;
+  pipelines.drawLayout = PipelineLayout(context_, {desc.vertexShader, desc.fragmentShader});
+  pipelines.draw = Pipeline(context_, pipelines.drawLayout, desc);
+  if (perParticle) {
+    const std::string shader = litShader(lighting, "particles_vertex.comp");
+    pipelines.lightLayout = PipelineLayout(context_, {shader});
+    pipelines.light = Pipeline(context_, pipelines.lightLayout, shader, constants);
+  }
+  return drawPipelines_.emplace(lighting.name, std::move(pipelines)).first->second;
 }
 
-DescriptorWriter ParticleSystem::descriptors(const FrameContext& frame, const LightListBuffers& lists) const {
+DescriptorWriter ParticleSystem::descriptors(const FrameContext& frame,
+                                             const LightingInterface& lighting) const {
   DescriptorWriter writer;
   writer.storage(0, frame.uniformBuffer.handle())
       .storage(1, frame.scene.lightBuffer().handle())
@@ -49,35 +54,28 @@ DescriptorWriter ParticleSystem::descriptors(const FrameContext& frame, const Li
       .storage(12, particles_.handle())
       .storage(13, drawOrder_.handle())
       .storage(14, counters_.handle());
-  if (lists.heads)
-    writer.storage(3, lists.uniforms)
-        .storage(4, lists.heads)
-        .storage(5, lists.links)
-        .storage(6, lists.counters)
-        .storage(7, lists.tileDepth);
+  lighting.bind(writer);
   if (radiance_) writer.storage(15, radiance_.handle());
   return writer;
 }
 
 void ParticleSystem::lightParticles(FrameContext& frame, const DrawPipelines& pipelines,
-                                    const LightListBuffers& lists) {
+                                    const LightingInterface& lighting) {
   VkCommandBuffer cmd = frame.cmd;
   ScopedPass pass(frame.timer, cmd, "particles-light");
-  // The technique's light lists may have been written by fragment shaders (the raster fills).
+  // The technique's light data may have been written by fragment shaders (lll's raster fills).
   memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
   pipelines.light.bind(cmd);
-  descriptors(frame, lists).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+  descriptors(frame, lighting).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.lightLayout);
   vkCmdDispatchIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, dispatch));
   memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                 VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
-void ParticleSystem::draw(FrameContext& frame, ParticleShading shading, const LightListBuffers& lists) {
-  if (shading == ParticleShading::LightList && !lists.heads)
-    throw std::logic_error("ParticleSystem::draw: light-list shading needs the technique's light lists");
-  const DrawPipelines& pipelines = pipelinesFor(shading);
-  if (pipelines.light) lightParticles(frame, pipelines, lists);
+void ParticleSystem::draw(FrameContext& frame, const LightingInterface& lighting) {
+  const DrawPipelines& pipelines = pipelinesFor(frame, lighting);
+  if (pipelines.light) lightParticles(frame, pipelines, lighting);
   VkCommandBuffer cmd = frame.cmd;
   const FrameTargets& t = frame.targets;
   ScopedPass pass(frame.timer, cmd, "particles-draw");
@@ -88,10 +86,10 @@ void ParticleSystem::draw(FrameContext& frame, ParticleShading shading, const Li
   beginRendering(cmd, t.width, t.height, {{t.hdr.view(), false}}, t.depth.view(),
                  VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
   pipelines.draw.bind(cmd);
-  descriptors(frame, lists)
+  descriptors(frame, lighting)
       .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(),
              VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-      .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.handle());
+      .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.drawLayout);
   vkCmdDrawIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, draw), 1,
                     sizeof(VkDrawIndirectCommand));
   vkCmdEndRendering(cmd);

@@ -16,27 +16,6 @@ namespace lll {
 
 namespace {
 
-constexpr VkShaderStageFlags kAllStages =
-    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
-
-// Set 0 of every particle pass: frame.glsl's 0 and 1, lll_data.glsl's 3..7 (written only when the
-// technique walks light lists), particle_data.glsl's 11..15 and the scene depth (16).
-const std::initializer_list<Binding> kParticleBindings = {
-    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {13, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {14, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {15, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kAllStages},
-};
-
 uint32_t checkedCapacity(const ParticleSystemOptions& options) {
   const uint32_t count = options.count ? options.count : options.preset.count;
   if (count == 0 || count > gpu::kMaxParticles)
@@ -66,7 +45,7 @@ ParticleSystem::ParticleSystem(Context& context, const ParticleSystemOptions& op
       // has always died when its next one is born.
       stepsPerLifetime_(double(options.preset.lifetimeMax) * gpu::kParticleStepsPerSecond),
       sorter_(context, capacity_),
-      layout_(context, kParticleBindings, sizeof(gpu::ParticleStepPush), VK_SHADER_STAGE_COMPUTE_BIT) {
+      layout_(context, {"particles/simulate.comp", "particles/sort_keys.comp", "particles/indirect.comp"}) {
   createBuffers();
   uploadUniforms(options.source, options.seed);
   simulate_ = Pipeline(context, layout_, "particles/simulate.comp");
@@ -155,7 +134,7 @@ void ParticleSystem::recordStep(VkCommandBuffer cmd) {
   DescriptorWriter()
       .storage(11, uniforms_.handle())
       .storage(12, particles_.handle())
-      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
   const gpu::ParticleStepPush push = stepPush(steps_++);
   vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vkCmdDispatch(cmd, divideRoundingUp(capacity_, gpu::kParticleGroupSize), 1, 1);
@@ -199,7 +178,7 @@ void ParticleSystem::sort(FrameContext& frame) {
       .storage(12, particles_.handle())
       .storage(13, drawOrder_.handle())
       .storage(14, counters_.handle())
-      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
   const gpu::SortPush push{glm::uvec4(0, 0, sorter_.paddedCount(), 0)};
   vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vkCmdDispatch(cmd, divideRoundingUp(sorter_.paddedCount(), gpu::kParticleGroupSize), 1, 1);
@@ -214,7 +193,7 @@ void ParticleSystem::buildIndirect(FrameContext& frame) {
   DescriptorWriter()
       .storage(11, uniforms_.handle())
       .storage(14, counters_.handle())
-      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
   vkCmdDispatch(cmd, 1, 1, 1);
 }
 

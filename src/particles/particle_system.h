@@ -21,6 +21,7 @@
 #include "gpu/resources.h"
 #include "particles/bitonic_sort.h"
 #include "particles/presets.h"
+#include "render/lighting_interface.h"
 #include "shared/particle_types.h"
 
 namespace lll {
@@ -30,12 +31,6 @@ struct FrameContext;
 struct FrameTargets;
 
 // How a technique lights its particles.
-enum class ParticleShading {
-  Unlit,      // ambient and emission only (deferred's unlit translucents, the seeds' Figure 1.1)
-  AllLights,  // every light (forward, and the forward-lit translucent passes)
-  LightList,  // the tile's light linked list at the particle's own depth (lll)
-};
-
 // Where lighting is evaluated (--particle-lighting).
 enum class ParticleLighting {
   Pixel,   // every covered pixel, with a sphere-like normal across the quad
@@ -44,15 +39,6 @@ enum class ParticleLighting {
 
 // Throws InputError for anything but "pixel" or "vertex".
 ParticleLighting parseParticleLighting(const std::string& name);
-
-// The light linked list's buffers as shaders/common/lll_data.glsl binds them (3..7).
-struct LightListBuffers {
-  VkBuffer uniforms = VK_NULL_HANDLE;
-  VkBuffer heads = VK_NULL_HANDLE;
-  VkBuffer links = VK_NULL_HANDLE;
-  VkBuffer counters = VK_NULL_HANDLE;
-  VkBuffer tileDepth = VK_NULL_HANDLE;
-};
 
 struct ParticleSystemOptions {
   ParticlePreset preset;
@@ -75,8 +61,10 @@ class ParticleSystem {
   // the renderer records the same frame again), then sort for the frame's camera and build the
   // indirect arguments.
   void update(FrameContext& frame, bool advance);
-  // The technique's particle passes, inside its frame after its glass; hdr stays a colour attachment.
-  void draw(FrameContext& frame, ParticleShading shading, const LightListBuffers& lists = {});
+  // The particle passes after the glass, lit by the technique's lighting interface (per particle in
+  // particles-light with --particle-lighting vertex, per pixel in particles-draw otherwise); hdr
+  // stays a colour attachment.
+  void draw(FrameContext& frame, const LightingInterface& lighting);
 
   uint64_t steps() const { return steps_; }
   const ParticlePreset& preset() const { return preset_; }
@@ -90,7 +78,9 @@ class ParticleSystem {
 
  private:
   struct DrawPipelines {
+    PipelineLayout drawLayout;
     Pipeline draw;
+    PipelineLayout lightLayout;
     Pipeline light;  // the per-particle lighting pass (vertex lighting); empty otherwise
   };
   void createBuffers();
@@ -100,9 +90,9 @@ class ParticleSystem {
   void recordStep(VkCommandBuffer cmd);
   void sort(FrameContext& frame);
   void buildIndirect(FrameContext& frame);
-  const DrawPipelines& pipelinesFor(ParticleShading shading);
-  DescriptorWriter descriptors(const FrameContext& frame, const LightListBuffers& lists) const;
-  void lightParticles(FrameContext& frame, const DrawPipelines& pipelines, const LightListBuffers& lists);
+  const DrawPipelines& pipelinesFor(const FrameContext& frame, const LightingInterface& lighting);
+  DescriptorWriter descriptors(const FrameContext& frame, const LightingInterface& lighting) const;
+  void lightParticles(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
 
   Context& context_;
   ParticlePreset preset_;
@@ -121,7 +111,7 @@ class ParticleSystem {
   Pipeline simulate_;
   Pipeline keys_;
   Pipeline indirect_;
-  std::map<ParticleShading, DrawPipelines> drawPipelines_;  // made on first use: each technique needs one
+  std::map<std::string, DrawPipelines> drawPipelines_;  // by lighting interface, made on first use
 };
 
 }  // namespace lll

@@ -1,4 +1,5 @@
 #include "render/renderer.h"
+#include "render/lit_passes.h"
 #include "render/visibility.h"
 
 #include <fmt/format.h>
@@ -76,6 +77,8 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
     particles_ = std::make_unique<ParticleSystem>(context, *options);
   technique_ =
       findTechnique(settings.technique).create(context, *gpuScene_, settings_, targets_, visibility_.get());
+  lit_ = std::make_unique<LitPasses>(context, *gpuScene_, targets_, visibility_.get(),
+                                     technique_->opaqueShading(), technique_->lighting());
 }
 
 void Renderer::chooseSurfaces() {
@@ -190,6 +193,8 @@ void Renderer::advanceParticles(uint32_t steps) {
 
 std::vector<std::pair<std::string, double>> Renderer::stats() const {
   auto s = technique_->stats();
+  const auto lit = lit_->stats();
+  s.insert(s.end(), lit.begin(), lit.end());
   s.push_back({"instances", double(scene_.instances.size())});
   s.push_back({"visible_instances", double(gpuScene_->visibleInstances())});
   // 1 when opaque surfaces came from the visibility buffer (its ids are lighting memory too).
@@ -217,7 +222,15 @@ void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advancePartic
                           VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
-  technique_->render(frame);
+  // The frame every technique shares: its light data, opaque shading (its own or the shared pass
+  // through its lighting interface), then glass and particles through that interface.
+  technique_->buildLightData(frame);
+  if (technique_->opaqueShading() == OpaqueShading::Own)
+    technique_->shadeOpaque(frame);
+  else
+    lit_->shadeOpaque(frame);
+  lit_->shadeGlass(frame);
+  if (particles_) particles_->draw(frame, technique_->lighting());
   tonemap(frame);
   if (capture) captureImages(cmd);
 }

@@ -17,6 +17,7 @@ namespace lll {
 
 class Context;
 class VisibilityBuffer;
+class LitPasses;
 
 struct HdrImage {
   uint32_t width = 0;
@@ -99,6 +100,7 @@ class Renderer {
   std::unique_ptr<VisibilityBuffer> visibility_;  // null with --surfaces gbuffer
   std::string surfacesFallback_;                  // why --surfaces visibility fell back to gbuffer, if it did
   std::unique_ptr<Technique> technique_;
+  std::unique_ptr<LitPasses> lit_;  // the shared passes, with the technique's lighting interface
 };
 
 }  // namespace lll

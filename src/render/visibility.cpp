@@ -160,7 +160,8 @@ void VisibilityBuffer::record(FrameContext& frame) const {
     const auto drawGroup = [&](uint32_t first, uint32_t count, VkCullModeFlags cull) {
       if (count == 0) return;
       const gpu::VisibilityPush push{glm::uvec4(0, 0, first, 0)};
-      vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(push), &push);
+      vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                         sizeof(push), &push);
       vkCmdSetCullMode(cmd, cull);
       vkCmdDrawIndexedIndirect(cmd, commands_.handle(), VkDeviceSize(first) * stride, count, stride);
     };

@@ -1,11 +1,9 @@
-#version 460
-// Shading with the light linked list in a compute pass (--lll-shade compute): each invocation reads
-// its pixel's surface from the thin G-buffer and the prepass depth, walks its tile's list and adds
-// the lights to the ambient and emission the G-buffer pass left in the HDR target. With 8x8
-// groups and 8-pixel tiles a group walks one list, so its loads are uniform across the group.
-#extension GL_EXT_samplerless_texture_functions : require
+// Opaque shading from the thin G-buffer (--surfaces gbuffer with compute shading): each
+// invocation reads its pixel's surface from the G-buffer and the depth, and adds the lights of the
+// technique's lighting interface to the ambient and emission the G-buffer pass left in the HDR
+// target.
 #include "common/gbuffer.glsl"
-#include "lighting/lll/shade.glsl"
+#include "common/lighting.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -23,7 +21,8 @@ void main() {
   float linearDepth = linearizeDepth(depth);
   vec3 position = reconstructPosition(vec2(pixel) + 0.5, linearDepth);
   Surface s = surfaceFromGbuffer(texelFetch(gbuffer0, p, 0), texelFetch(gbuffer1, p, 0), position);
-  bool opaque;
-  vec3 color = shadeSurface(s, pixel, linearDepth, imageLoad(hdr, p).rgb, opaque);
+  bool replaced;
+  vec3 color =
+      lightingView(s, pixel, linearDepth, imageLoad(hdr, p).rgb + lightSurface(s, pixel, linearDepth), replaced);
   imageStore(hdr, p, vec4(color, 1.0));
 }

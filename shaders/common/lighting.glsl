@@ -1,0 +1,28 @@
+// What the shared lit passes (shaders/lit/*: opaque shading, glass, particles) compute with a
+// technique's lighting interface, written once. Each interface, shaders/lighting/<name>/lighting.glsl,
+// provides its light data's bindings (3 to 10) and
+//   LightCursor lightsAt(uvec2 pixel, float viewDepth);      the lights that may reach a point
+//   bool nextLight(inout LightCursor cursor, out uint light); the next one (index into lights[])
+//   vec3 lightingView(Surface s, uvec2 pixel, float viewDepth, vec3 color, out bool replaced);
+//                                                             a debug view over or instead of color
+// and cmake/EmbedShaders.cmake compiles every template with every interface.
+#ifndef LLL_LIGHTING_GLSL
+#define LLL_LIGHTING_GLSL
+#include "common/material_surface.glsl"
+
+// Radiance the lights reflect from `s` towards the eye.
+vec3 lightSurface(Surface s, uvec2 pixel, float viewDepth) {
+  vec3 sum = vec3(0.0);
+  LightCursor cursor = lightsAt(pixel, viewDepth);
+  uint light;
+  while (nextLight(cursor, light)) sum += evaluateLight(lights[light], s);
+  return sum;
+}
+
+// Everything that leaves `s` towards the eye: ambient, emission and the lights, or the debug view
+// that replaces them (`replaced`: shown as is, glass included).
+vec3 shadePixel(Surface s, uvec2 pixel, float viewDepth, out bool replaced) {
+  return lightingView(s, pixel, viewDepth, ambientAndEmissive(s) + lightSurface(s, pixel, viewDepth), replaced);
+}
+
+#endif

@@ -1,0 +1,54 @@
+// The light linked list's lighting interface (shaders/common/lighting.glsl says what an interface
+// provides): the lights of the pixel's tile list whose depth bounds hold the point, and the debug
+// views (--debug-view heatmap | bounds | tiles).
+#ifndef LLL_LIGHTING_INTERFACE_GLSL
+#define LLL_LIGHTING_INTERFACE_GLSL
+#include "common/debug_colors.glsl"
+#include "common/lll_walk.glsl"
+
+struct LightCursor {
+  uint link;
+  uint steps;
+  float viewDepth;
+};
+
+LightCursor lightsAt(uvec2 pixel, float viewDepth) {
+  return LightCursor(tileHeads[tileIndexOf(pixel)], 0u, viewDepth);
+}
+
+bool nextLight(inout LightCursor cursor, out uint light) {
+  return nextListedLight(cursor.link, cursor.steps, cursor.viewDepth, light);
+}
+
+// As ThreeL's view: a listed light's colour where it reaches the surface, grey where the list has
+// it but the surface is out of its range (the cost of a coarse shape), black with no list entry.
+vec3 boundsView(Surface s, uvec2 pixel, float viewDepth) {
+  vec3 reached = vec3(0.0);
+  bool listed = false;
+  LightCursor cursor = lightsAt(pixel, viewDepth);
+  uint index;
+  while (nextLight(cursor, index)) {
+    listed = true;
+    GpuLight light = lights[index];
+    if (any(greaterThan(evaluateLight(light, s), vec3(0.0)))) reached = max(reached, light.colorIntensity.rgb);
+  }
+  return any(greaterThan(reached, vec3(0.0))) ? reached : (listed ? vec3(0.25) : vec3(0.0));
+}
+
+// The heatmap and bounds views replace the surface (glass included); tiles draws the grid over it.
+vec3 lightingView(Surface s, uvec2 pixel, float viewDepth, vec3 color, out bool replaced) {
+  uint view = lll.params.z;
+  replaced = view == kDebugHeatmap || view == kDebugBounds;
+  if (view == kDebugHeatmap) {
+    uint count = listLength(tileIndexOf(pixel));
+    return count == 0u ? vec3(0.0) : heat(float(count) / float(frame.display.y));
+  }
+  if (view == kDebugBounds) return boundsView(s, pixel, viewDepth);
+  if (view == kDebugTiles) {
+    uvec2 inTile = pixel % frame.counts.y;
+    if (inTile.x == 0u || inTile.y == 0u) return vec3(1.0, 1.0, 0.0);
+  }
+  return color;
+}
+
+#endif

@@ -1,0 +1,33 @@
+#pragma once
+// What a technique gives the passes every technique shares (opaque shading, for techniques without
+// their own; glass; particles): the GLSL lighting interface those passes are compiled with
+// (shaders/lighting/<name>/lighting.glsl, see shaders/common/lighting.glsl) and the light data
+// they read through it.
+#include <functional>
+#include <string>
+
+#include "gpu/pipeline.h"
+
+namespace lll {
+
+struct LightingInterface {
+  std::string name;  // "forward", "lll", "unlit", ...: the shaders/lighting/<name> folder
+  // Writes the interface's light data into a lit pass's descriptors (set 0, bindings 3 to 10).
+  std::function<void(DescriptorWriter&)> bind = [](DescriptorWriter&) {};
+};
+
+// The shared shader `templateName` (shaders/lit/<templateName>.glsl) compiled with `lighting`'s
+// interface, as cmake/EmbedShaders.cmake registers it.
+inline std::string litShader(const LightingInterface& lighting, const std::string& templateName) {
+  return "lit/" + lighting.name + "/" + templateName;
+}
+
+// How a technique's opaque surfaces are lit.
+enum class OpaqueShading {
+  Own,         // by the technique's own passes (deferred's light volumes, the pre-pass)
+  Visibility,  // the shared compute pass, surfaces rebuilt from the visibility buffer
+  GBuffer,     // the shared compute pass over the thin G-buffer, drawn from the geometry
+  Geometry,    // a geometry pass lighting each fragment (forward on the geometry, lll fragment)
+};
+
+}  // namespace lll

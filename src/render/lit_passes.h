@@ -1,0 +1,55 @@
+#pragma once
+// The passes every technique shares, written once and compiled with each technique's lighting
+// interface (render/lighting_interface.h):
+//   shade-opaque   opaque surfaces, unless the technique lights them itself: in compute from the
+//                  visibility buffer, in compute over the thin G-buffer (after a "gbuffer" pass),
+//                  or per fragment of a geometry pass
+//   glass          blended primitives on the geometry, back to front, at their own depth
+// (particles are drawn by the particle system with the same interface: particles/particle_system.h).
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gpu/pipeline.h"
+#include "render/frame.h"
+#include "render/gbuffer.h"
+#include "render/lighting_interface.h"
+
+namespace lll {
+
+class LitPasses {
+ public:
+  LitPasses(Context& context, const GpuScene& scene, const FrameTargets& targets,
+            const VisibilityBuffer* visibility, OpaqueShading opaque, LightingInterface lighting);
+  ~LitPasses();
+  LitPasses(const LitPasses&) = delete;
+  LitPasses& operator=(const LitPasses&) = delete;
+
+  // Opaque shading (nothing for OpaqueShading::Own). hdr: COLOR_ATTACHMENT_OPTIMAL before and after.
+  void shadeOpaque(FrameContext& frame);
+  // The blended primitives over the lit frame.
+  void shadeGlass(FrameContext& frame);
+
+  // Memory this owns, for --stats and the bench (the G-buffer of OpaqueShading::GBuffer).
+  std::vector<std::pair<std::string, double>> stats() const;
+
+ private:
+  DescriptorWriter litDescriptors(const FrameContext& frame) const;
+  // A geometry pass onto hdr (cleared first when `clearHdr`), depth-tested against the depth pass.
+  void drawGeometry(FrameContext& frame, const Pipeline& pipeline, DrawFilter filter, bool clearHdr);
+
+  Context& context_;
+  OpaqueShading opaque_;
+  LightingInterface lighting_;
+  double pixels_;
+  PipelineLayout computeLayout_;
+  Pipeline compute_;
+  std::unique_ptr<GBuffer> gbuffer_;
+  VkSampler depthSampler_ = VK_NULL_HANDLE;
+  PipelineLayout meshLayout_;
+  Pipeline geometryOpaque_;
+  Pipeline glass_;
+};
+
+}  // namespace lll
