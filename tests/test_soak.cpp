@@ -3,6 +3,12 @@
 // technique renders smoke (from its steady state) for LLL_SOAK_FRAMES frames (default 120) in this
 // process, every frame simulated and drawn; the heap in use over its last 10 frames must stay
 // within 8 MB of that over frames 10 to 19.
+//
+// The heap is measured on a context of its own without the validation layers: the Debian layer
+// (1.3.239) keeps about 25 KB of its own per submitted frame (seen: +9.8 MB over 400 frames with
+// LLL_TEST_VALIDATION, +0.0 without, the same renderer), which is not ours to bound. Validation
+// over a run is still checked: the first frames of every case render on the shared, validated
+// context too.
 #include <gtest/gtest.h>
 #include <malloc.h>
 #ifdef __SANITIZE_ADDRESS__
@@ -14,6 +20,7 @@ extern "C" size_t __sanitizer_get_current_allocated_bytes();
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 
 #include "particles/presets.h"
@@ -45,6 +52,18 @@ uint32_t soakFrames() {
   return frames ? uint32_t(std::strtoul(frames, nullptr, 10)) : 120u;
 }
 
+// The test device, without validation layers.
+Context& unvalidatedContext() {
+  static std::unique_ptr<Context> context = [] {
+    ContextOptions options;
+    const char* device = std::getenv("LLL_TEST_DEVICE");
+    options.device = device != nullptr && *device ? device : "cpu";
+    options.quiet = true;
+    return std::make_unique<Context>(options);
+  }();
+  return *context;
+}
+
 struct SoakCase {
   const char* name;
   const char* technique;
@@ -67,9 +86,15 @@ TEST_P(Soak, MemoryStaysFlatOverFrames) {
   settings.particles = "smoke";
   settings.particleCount = 1024;
   settings.particleLighting = c.particleLighting;
-  Context& context = test::gpuContext();
-  const size_t messagesBefore = context.validationMessages().size();
-  Renderer renderer(context, scene, settings);
+  {
+    Context& validated = test::gpuContext();
+    const size_t messagesBefore = validated.validationMessages().size();
+    Renderer renderer(validated, scene, settings);
+    renderer.advanceParticles(stepsToSteadyState(renderer.particles()->preset()));
+    for (uint32_t i = 1; i <= kWarmupFrames; ++i) renderer.renderFrame(i == kWarmupFrames);
+    EXPECT_EQ(validated.validationMessages().size(), messagesBefore);
+  }
+  Renderer renderer(unvalidatedContext(), scene, settings);
   // A growing plume needs more of the rasterizer's memory each frame, legitimately: start from
   // the steady state, where as many particles die as are born.
   renderer.advanceParticles(stepsToSteadyState(renderer.particles()->preset()));
@@ -88,7 +113,6 @@ TEST_P(Soak, MemoryStaysFlatOverFrames) {
       "soak %s: %u frames, heap in use %.1f MiB from frame %u, %.1f MiB at the end (%+.2f), peak %.1f\n",
       c.name, frames, atWarmup, kWarmupFrames, atEnd, atEnd - atWarmup, peak);
   EXPECT_LE(atEnd - atWarmup, kAllowedGrowthMiB);
-  EXPECT_EQ(context.validationMessages().size(), messagesBefore);
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, Soak,

@@ -68,6 +68,8 @@ class Image {
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
   VkImageAspectFlags aspect() const;
+  // Every mip level of the image's one layer, its whole aspect.
+  VkImageSubresourceRange subresourceRange() const { return {aspect(), 0, mipLevels_, 0, 1}; }
   explicit operator bool() const { return image_ != VK_NULL_HANDLE; }
 
   // Records a layout transition with a full barrier between the given stages/accesses.

@@ -128,73 +128,71 @@ class Deferred final : public Technique {
     insidePipeline_ = Pipeline(context, lightLayout_, desc);
   }
 
-  VkImageView accumulationView(const FrameTargets& t) const {
-    return edgeAa_ ? accumulation_.view() : t.hdr.view();
-  }
+  const Image& accumulation(const FrameTargets& t) const { return edgeAa_ ? accumulation_ : t.hdr; }
 
   void geometryPass(FrameContext& frame) {
-    if (accumulation_)
-      accumulation_.transition(frame.cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
-                               VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                               VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    gbuffer_.record(frame, "deferred-gbuffer", accumulationView(frame.targets));
+    gbuffer_.record(frame, "deferred-gbuffer", accumulation(frame.targets));
   }
 
   // The CPU culls the lights and groups them by shape (points, spots) and by camera side; each
   // group is one instanced draw with one pipeline, so no state changes between its lights.
   void lightPass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
+    constexpr VkPipelineStageFlags2 kFragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
     lightFragments_.reset(frame.cmd);
-    ScopedPass pass(frame.timer, frame.cmd, "deferred-lights");
     volumes_.prepare(frame.scene.scene().lights, frame.uniforms,
                      [](const PlacedLightVolume& v) { return v.cameraInside ? kInside : kOutside; });
-    beginRendering(frame.cmd, t.width, t.height, {{accumulationView(t), false}}, t.depth.view(),
-                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-    DescriptorWriter writer;
-    writer.storage(0, frame.uniformBuffer.handle())
-        .storage(1, frame.scene.lightBuffer().handle())
-        .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-        .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target0().view(),
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-        .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    volumes_.addBindings(writer).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                      lightLayout_.handle());
-    volumes_.bindGeometry(frame.cmd);
-    lightFragments_.begin(frame.cmd);
-    for (const VolumeRun& run : volumes_.runs()) {
-      (run.group == kInside ? insidePipeline_ : outsidePipeline_).bind(frame.cmd);
-      volumes_.draw(frame.cmd, run.shape, run.first, run.count);
-    }
-    lightFragments_.end(frame.cmd);
-    vkCmdEndRendering(frame.cmd);
+    frame.graph.pass(
+        "deferred-lights",
+        {uses(accumulation(t), Use::ColorBlend), uses(t.depth, Use::DepthTest),
+         uses(t.depth, Use::Sampled, kFragment), uses(gbuffer_.target0(), Use::Sampled, kFragment),
+         uses(gbuffer_.target1(), Use::Sampled, kFragment)},
+        [&](VkCommandBuffer cmd) {
+          beginRendering(cmd, t.width, t.height, {{accumulation(t).view(), false}}, t.depth.view(),
+                         VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+          DescriptorWriter writer;
+          writer.storage(0, frame.uniformBuffer.handle())
+              .storage(1, frame.scene.lightBuffer().handle())
+              .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(),
+                     VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+              .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target0().view(),
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+          volumes_.addBindings(writer).push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                            lightLayout_.handle());
+          volumes_.bindGeometry(cmd);
+          lightFragments_.begin(cmd);
+          for (const VolumeRun& run : volumes_.runs()) {
+            (run.group == kInside ? insidePipeline_ : outsidePipeline_).bind(cmd);
+            volumes_.draw(cmd, run.shape, run.first, run.count);
+          }
+          lightFragments_.end(cmd);
+          vkCmdEndRendering(cmd);
+        });
   }
 
   void edgeAntiAliasingPass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
-    ScopedPass pass(frame.timer, frame.cmd, "deferred-edge-aa");
-    accumulation_.transition(
-        frame.cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    // hdr holds nothing yet (the opaque light went into the accumulation target), but the frame's
-    // first transition of it must be done before this one: chain on that transition's stage.
-    t.hdr.transition(frame.cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, 0,
-                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    edgeAaPipeline_.bind(frame.cmd);
-    DescriptorWriter()
-        .storage(0, frame.uniformBuffer.handle())
-        .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-        .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, accumulation_.view(),
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-        .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-        .image(8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-        .push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, edgeAaLayout_.handle());
-    dispatchPerPixel(frame.cmd, t);
-    hdrFromComputeToAttachment(frame.cmd, t);
+    constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    frame.graph.pass(
+        "deferred-edge-aa",
+        {uses(accumulation_, Use::Sampled, kCompute), uses(t.depth, Use::Sampled, kCompute),
+         uses(gbuffer_.target1(), Use::Sampled, kCompute), uses(t.hdr, Use::StorageWrite, kCompute)},
+        [&](VkCommandBuffer cmd) {
+          edgeAaPipeline_.bind(cmd);
+          DescriptorWriter()
+              .storage(0, frame.uniformBuffer.handle())
+              .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(),
+                     VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+              .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, accumulation_.view(),
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+              .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, edgeAaLayout_.handle());
+          dispatchPerPixel(cmd, t);
+        });
   }
 
   PipelineLayout lightLayout_;

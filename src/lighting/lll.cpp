@@ -125,6 +125,7 @@ class LightLinkedList final : public Technique {
   void fillCompute(FrameContext& frame);
   void fillRaster(FrameContext& frame);
   void drawShellBatch(FrameContext& frame, uint32_t first, uint32_t end, bool backFaces);
+  std::vector<ResourceUse> fillUses(VkPipelineStageFlags2 stages) const;
   void measureLists(FrameContext& frame);
 
   Context& context_;
@@ -295,80 +296,95 @@ void LightLinkedList::buildLightData(FrameContext& frame) {
     fillCompute(frame);
   else
     fillRaster(frame);
-  // Every shading stage reads the lists: the shared passes' compute and fragment shaders, and the
-  // particles' vertex lighting (compute) and pixel lighting (fragment).
-  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   if (frame.capture) measureLists(frame);
-  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  // afterFrame reads the link counter (overflow) and the statistics.
+  frame.graph.barriers({uses(counters_, Use::HostRead)});
 }
 
 LightingInterface LightLinkedList::lighting() const {
-  return {"lll", [this](DescriptorWriter& writer) {
+  return {"lll",
+          [this](DescriptorWriter& writer) {
             writer.storage(3, uniformBuffer_.handle())
                 .storage(4, heads_.handle())
                 .storage(5, links_.handle())
                 .storage(6, counters_.handle())
                 .storage(7, tileDepth_.handle());
-          }};
+          },
+          {&heads_, &links_, &tileDepth_}};
 }
 
 void LightLinkedList::clear(FrameContext& frame) {
-  ScopedPass pass(frame.timer, frame.cmd, "lll-clear");
-  vkCmdFillBuffer(frame.cmd, heads_.handle(), 0, VK_WHOLE_SIZE, gpu::kLinkEnd);
-  vkCmdFillBuffer(frame.cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
-  if (bounds_) vkCmdFillBuffer(frame.cmd, bounds_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
-  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  std::vector<ResourceUse> cleared = {uses(heads_, Use::TransferWrite), uses(counters_, Use::TransferWrite)};
+  if (bounds_) cleared.push_back(uses(bounds_, Use::TransferWrite));
+  frame.graph.pass("lll-clear", cleared, [&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, heads_.handle(), 0, VK_WHOLE_SIZE, gpu::kLinkEnd);
+    vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+    if (bounds_) vkCmdFillBuffer(cmd, bounds_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
+  });
 }
 
 void LightLinkedList::reduceTileDepth(FrameContext& frame) {
-  ScopedPass pass(frame.timer, frame.cmd, "lll-tile-depth");
-  tileDepthPipeline_.bind(frame.cmd);
-  // Only this pass samples the depth buffer: binding it while shading reads it as an attachment
-  // makes lavapipe resolve the depth image for every draw.
-  descriptors(frame)
-      .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frame.targets.depth.view(),
-             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-      .push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
-  vkCmdDispatch(frame.cmd, divideRoundingUp(tilesX_, gpu::kTileGroupSize),
-                divideRoundingUp(tilesY_, gpu::kTileGroupSize), 1);
-  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  frame.graph.pass(
+      "lll-tile-depth",
+      {uses(frame.targets.depth, Use::Sampled, kCompute), uses(tileDepth_, Use::StorageWrite, kCompute)},
+      [&](VkCommandBuffer cmd) {
+        tileDepthPipeline_.bind(cmd);
+        // Only this pass samples the depth buffer: binding it while shading reads it as an
+        // attachment makes lavapipe resolve the depth image for every draw.
+        descriptors(frame)
+            .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frame.targets.depth.view(),
+                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+        vkCmdDispatch(cmd, divideRoundingUp(tilesX_, gpu::kTileGroupSize),
+                      divideRoundingUp(tilesY_, gpu::kTileGroupSize), 1);
+      });
+}
+
+// What a fill reads and writes, in `stages`.
+std::vector<ResourceUse> LightLinkedList::fillUses(VkPipelineStageFlags2 stages) const {
+  std::vector<ResourceUse> out = {
+      uses(tileDepth_, Use::StorageRead, stages), uses(heads_, Use::StorageReadWrite, stages),
+      uses(links_, Use::StorageWrite, stages), uses(counters_, Use::StorageReadWrite, stages)};
+  if (bounds_) out.push_back(uses(bounds_, Use::StorageReadWrite, stages));
+  if (shellOrder_) out.push_back(uses(shellOrder_, Use::StorageRead, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT));
+  return out;
 }
 
 void LightLinkedList::fillCompute(FrameContext& frame) {
-  ScopedPass pass(frame.timer, frame.cmd, "lll-fill-compute");
-  computeFill_.bind(frame.cmd);
-  descriptors(frame).push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
-  vkCmdDispatch(frame.cmd, divideRoundingUp(tilesX_, 8), divideRoundingUp(tilesY_, 8), 1);
+  frame.graph.pass("lll-fill-compute", fillUses(VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT),
+                   [&](VkCommandBuffer cmd) {
+                     computeFill_.bind(cmd);
+                     descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+                     vkCmdDispatch(cmd, divideRoundingUp(tilesX_, 8), divideRoundingUp(tilesY_, 8), 1);
+                   });
 }
 
+// Batches of shells in one pass; the barriers between them are the pass's own (the bounds buffer
+// is cleared and refilled per batch, front faces store before back faces read).
 void LightLinkedList::fillRaster(FrameContext& frame) {
-  ScopedPass pass(frame.timer, frame.cmd, fill_ == LllFill::Ray ? "lll-fill-ray" : "lll-fill-shells");
-  const uint32_t shellLights = shapeStart_[kShellShapes];
-  for (uint32_t first = 0; first < shellLights; first += kShellBatch) {
-    const uint32_t end = std::min(shellLights, first + kShellBatch);
-    if (fill_ == LllFill::Shells) {
-      if (first > 0) {  // a new batch reuses the ids: forget the previous batch's bounds
-        memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
-                      VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        vkCmdFillBuffer(frame.cmd, bounds_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
-        memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-      }
-      drawShellBatch(frame, first, end, false);
-      // Every front face has stored its depth before any back face reads it.
-      memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-    }
-    drawShellBatch(frame, first, end, true);
-  }
+  frame.graph.pass(
+      fill_ == LllFill::Ray ? "lll-fill-ray" : "lll-fill-shells",
+      fillUses(VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT), [&](VkCommandBuffer cmd) {
+        const uint32_t shellLights = shapeStart_[kShellShapes];
+        for (uint32_t first = 0; first < shellLights; first += kShellBatch) {
+          const uint32_t end = std::min(shellLights, first + kShellBatch);
+          if (fill_ == LllFill::Shells) {
+            if (first > 0) {  // a new batch reuses the ids: forget the previous batch's bounds
+              memoryBarrier(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+                            VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+              vkCmdFillBuffer(cmd, bounds_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
+              memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+            }
+            drawShellBatch(frame, first, end, false);
+            // Every front face has stored its depth before any back face reads it.
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+          }
+          drawShellBatch(frame, first, end, true);
+        }
+      });
 }
 
 void LightLinkedList::drawShellBatch(FrameContext& frame, uint32_t first, uint32_t end, bool backFaces) {
@@ -396,10 +412,15 @@ void LightLinkedList::drawShellBatch(FrameContext& frame, uint32_t first, uint32
 }
 
 void LightLinkedList::measureLists(FrameContext& frame) {
-  ScopedPass pass(frame.timer, frame.cmd, "lll-stats");
-  statsPipeline_.bind(frame.cmd);
-  descriptors(frame).push(context_, frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
-  vkCmdDispatch(frame.cmd, divideRoundingUp(tiles_, 64), 1, 1);
+  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  frame.graph.pass("lll-stats",
+                   {uses(heads_, Use::StorageRead, kCompute), uses(links_, Use::StorageRead, kCompute),
+                    uses(counters_, Use::StorageReadWrite, kCompute)},
+                   [&](VkCommandBuffer cmd) {
+                     statsPipeline_.bind(cmd);
+                     descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+                     vkCmdDispatch(cmd, divideRoundingUp(tiles_, 64), 1, 1);
+                   });
 }
 
 bool LightLinkedList::afterFrame() {

@@ -217,59 +217,45 @@ class Prepass final : public Technique {
 
   void normalsPass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
-    ScopedPass pass(frame.timer, frame.cmd, "prepass-normals");
-    normals_.transition(frame.cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
-                        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    depthStencil_.transition(
-        frame.cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
-        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-    beginDepthStencilRendering(frame.cmd, t, {{normals_.view(), true}}, depthStencil_.view(),
-                               VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, true);
-    normalsPipeline_.bind(frame.cmd);
-    meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                    meshLayout_.handle());
-    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque);
-    vkCmdEndRendering(frame.cmd);
-    toShaderRead(frame.cmd, normals_);
-    const VkPipelineStageFlags2 tests =
-        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-    depthStencil_.transition(
-        frame.cmd, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-        VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, tests,
-        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, tests,
-        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+    frame.graph.pass("prepass-normals",
+                     {uses(normals_, Use::ColorWrite), uses(depthStencil_, Use::DepthStencilWrite)},
+                     [&](VkCommandBuffer cmd) {
+                       beginDepthStencilRendering(cmd, t, {{normals_.view(), true}}, depthStencil_.view(),
+                                                  VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, true);
+                       normalsPipeline_.bind(cmd);
+                       meshPassDescriptors(frame).push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                                       meshLayout_.handle());
+                       frame.scene.draw(cmd, meshLayout_.handle(), DrawFilter::Opaque);
+                       vkCmdEndRendering(cmd);
+                     });
   }
 
   void lightPass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
-    ScopedPass pass(frame.timer, frame.cmd, "prepass-lights");
+    constexpr VkPipelineStageFlags2 kFragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
     volumes_.prepare(frame.scene.scene().lights, frame.uniforms, &drawGroup);
-    for (const Image* image : {&diffuse_, &specular_})
-      image->transition(frame.cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
-                        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                        VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    beginDepthStencilRendering(frame.cmd, t, {{diffuse_.view(), true}, {specular_.view(), true}},
-                               depthStencil_.view(),
-                               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, false);
-    DescriptorWriter writer;
-    writer.storage(0, frame.uniformBuffer.handle())
-        .storage(1, frame.scene.lightBuffer().handle())
-        .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-        .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, normals_.view(),
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    volumes_.addBindings(writer).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                      lightLayout_.handle());
-    volumes_.bindGeometry(frame.cmd);
-    counts_ = {};
-    for (const VolumeRun& run : volumes_.runs()) drawRun(frame.cmd, run);
-    vkCmdEndRendering(frame.cmd);
-    toShaderRead(frame.cmd, diffuse_);
-    toShaderRead(frame.cmd, specular_);
+    frame.graph.pass("prepass-lights",
+                     {uses(diffuse_, Use::ColorWrite), uses(specular_, Use::ColorWrite),
+                      uses(depthStencil_, Use::StencilWrite), uses(t.depth, Use::Sampled, kFragment),
+                      uses(normals_, Use::Sampled, kFragment)},
+                     [&](VkCommandBuffer cmd) {
+                       beginDepthStencilRendering(
+                           cmd, t, {{diffuse_.view(), true}, {specular_.view(), true}}, depthStencil_.view(),
+                           VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, false);
+                       DescriptorWriter writer;
+                       writer.storage(0, frame.uniformBuffer.handle())
+                           .storage(1, frame.scene.lightBuffer().handle())
+                           .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(),
+                                  VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+                           .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, normals_.view(),
+                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+                       volumes_.addBindings(writer).push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                                         lightLayout_.handle());
+                       volumes_.bindGeometry(cmd);
+                       counts_ = {};
+                       for (const VolumeRun& run : volumes_.runs()) drawRun(cmd, run);
+                       vkCmdEndRendering(cmd);
+                     });
   }
 
   void drawRun(VkCommandBuffer cmd, const VolumeRun& run) {
@@ -291,23 +277,23 @@ class Prepass final : public Technique {
 
   void combinePass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
-    ScopedPass pass(frame.timer, frame.cmd, "prepass-combine");
-    beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), true}}, t.depth.view(),
-                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-    combinePipeline_.bind(frame.cmd);
-    meshPassDescriptors(frame)
-        .image(3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, diffuse_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-        .image(4, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, specular_.view(),
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-        .push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, meshLayout_.handle());
-    frame.scene.draw(frame.cmd, meshLayout_.handle(), DrawFilter::Opaque);
-    vkCmdEndRendering(frame.cmd);
-  }
-
-  static void toShaderRead(VkCommandBuffer cmd, const Image& image) {
-    image.transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    constexpr VkPipelineStageFlags2 kFragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+    frame.graph.pass("prepass-combine",
+                     {uses(t.hdr, Use::ColorWrite), uses(t.depth, Use::DepthTest),
+                      uses(diffuse_, Use::Sampled, kFragment), uses(specular_, Use::Sampled, kFragment)},
+                     [&](VkCommandBuffer cmd) {
+                       beginRendering(cmd, t.width, t.height, {{t.hdr.view(), true}}, t.depth.view(),
+                                      VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+                       combinePipeline_.bind(cmd);
+                       meshPassDescriptors(frame)
+                           .image(3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, diffuse_.view(),
+                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+                           .image(4, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, specular_.view(),
+                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+                           .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, meshLayout_.handle());
+                       frame.scene.draw(cmd, meshLayout_.handle(), DrawFilter::Opaque);
+                       vkCmdEndRendering(cmd);
+                     });
   }
 
   PipelineLayout meshLayout_;

@@ -61,38 +61,50 @@ DescriptorWriter ParticleSystem::descriptors(const FrameContext& frame,
 
 void ParticleSystem::lightParticles(FrameContext& frame, const DrawPipelines& pipelines,
                                     const LightingInterface& lighting) {
-  VkCommandBuffer cmd = frame.cmd;
-  ScopedPass pass(frame.timer, cmd, "particles-light");
-  // The technique's light data may have been written by fragment shaders (lll's raster fills).
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-  pipelines.light.bind(cmd);
-  descriptors(frame, lighting).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.lightLayout);
-  vkCmdDispatchIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, dispatch));
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  frame.graph.pass(
+      "particles-light",
+      std::vector<ResourceUse>{
+          uses(counters_, Use::IndirectRead), uses(counters_, Use::StorageRead, kCompute),
+          uses(uniforms_, Use::StorageRead, kCompute), uses(particles_, Use::StorageRead, kCompute),
+          uses(drawOrder_, Use::StorageRead, kCompute), uses(radiance_, Use::StorageWrite, kCompute)} +
+          lighting.reads(kCompute),
+      [&](VkCommandBuffer cmd) {
+        pipelines.light.bind(cmd);
+        descriptors(frame, lighting)
+            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.lightLayout);
+        vkCmdDispatchIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, dispatch));
+      });
 }
 
 void ParticleSystem::draw(FrameContext& frame, const LightingInterface& lighting) {
   const DrawPipelines& pipelines = pipelinesFor(frame, lighting);
   if (pipelines.light) lightParticles(frame, pipelines, lighting);
-  VkCommandBuffer cmd = frame.cmd;
   const FrameTargets& t = frame.targets;
-  ScopedPass pass(frame.timer, cmd, "particles-draw");
+  constexpr VkPipelineStageFlags2 kShaders =
+      VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+  std::vector<ResourceUse> reads{uses(t.hdr, Use::ColorBlend),
+                                 uses(t.depth, Use::DepthTest),
+                                 uses(t.depth, Use::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT),
+                                 uses(counters_, Use::IndirectRead),
+                                 uses(counters_, Use::StorageRead, kShaders),
+                                 uses(uniforms_, Use::StorageRead, kShaders),
+                                 uses(particles_, Use::StorageRead, kShaders),
+                                 uses(drawOrder_, Use::StorageRead, kShaders)};
+  if (radiance_) reads.push_back(uses(radiance_, Use::StorageRead, kShaders));
   // Blends over what the technique drew last, in whichever pass that was.
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-  beginRendering(cmd, t.width, t.height, {{t.hdr.view(), false}}, t.depth.view(),
-                 VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-  pipelines.draw.bind(cmd);
-  descriptors(frame, lighting)
-      .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(),
-             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-      .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.drawLayout);
-  vkCmdDrawIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, draw), 1,
-                    sizeof(VkDrawIndirectCommand));
-  vkCmdEndRendering(cmd);
+  frame.graph.pass("particles-draw", reads + lighting.reads(kShaders), [&](VkCommandBuffer cmd) {
+    beginRendering(cmd, t.width, t.height, {{t.hdr.view(), false}}, t.depth.view(),
+                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+    pipelines.draw.bind(cmd);
+    descriptors(frame, lighting)
+        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(),
+               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+        .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.drawLayout);
+    vkCmdDrawIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, draw), 1,
+                      sizeof(VkDrawIndirectCommand));
+    vkCmdEndRendering(cmd);
+  });
 }
 
 }  // namespace lll

@@ -138,39 +138,38 @@ void ParticleSystem::recordStep(VkCommandBuffer cmd) {
   const gpu::ParticleStepPush push = stepPush(steps_++);
   vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vkCmdDispatch(cmd, divideRoundingUp(capacity_, gpu::kParticleGroupSize), 1, 1);
-  computeToCompute(cmd);
 }
 
 void ParticleSystem::recordSteps(VkCommandBuffer cmd, uint32_t steps) {
-  for (uint32_t i = 0; i < steps; ++i) recordStep(cmd);
+  // Outside a frame (catching up before the first one): each step reads the one before it.
+  for (uint32_t i = 0; i < steps; ++i) {
+    recordStep(cmd);
+    computeToCompute(cmd);
+  }
 }
 
 void ParticleSystem::update(FrameContext& frame, bool advance) {
-  VkCommandBuffer cmd = frame.cmd;
-  if (advance) {
-    ScopedPass pass(frame.timer, cmd, "particles-simulate");
-    recordStep(cmd);
-  }
-  {
-    ScopedPass pass(frame.timer, cmd, "particles-sort");
+  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  FrameGraph& graph = frame.graph;
+  if (advance)
+    graph.pass(
+        "particles-simulate",
+        {uses(uniforms_, Use::StorageRead, kCompute), uses(particles_, Use::StorageReadWrite, kCompute)},
+        [&](VkCommandBuffer cmd) { recordStep(cmd); });
+  graph.pass("particles-sort", {uses(counters_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+    graph.barriers({uses(uniforms_, Use::StorageRead, kCompute), uses(particles_, Use::StorageRead, kCompute),
+                    uses(drawOrder_, Use::StorageWrite, kCompute),
+                    uses(counters_, Use::StorageReadWrite, kCompute)});
     sort(frame);
-  }
-  {
-    ScopedPass pass(frame.timer, cmd, "particles-indirect");
-    buildIndirect(frame);
-  }
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+  });
+  graph.pass("particles-indirect",
+             {uses(uniforms_, Use::StorageRead, kCompute), uses(counters_, Use::StorageReadWrite, kCompute)},
+             [&](VkCommandBuffer cmd) { buildIndirect(cmd); });
 }
 
 void ParticleSystem::sort(FrameContext& frame) {
   VkCommandBuffer cmd = frame.cmd;
-  vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   keys_.bind(cmd);
   DescriptorWriter()
       .storage(0, frame.uniformBuffer.handle())
@@ -182,13 +181,12 @@ void ParticleSystem::sort(FrameContext& frame) {
   const gpu::SortPush push{glm::uvec4(0, 0, sorter_.paddedCount(), 0)};
   vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vkCmdDispatch(cmd, divideRoundingUp(sorter_.paddedCount(), gpu::kParticleGroupSize), 1, 1);
+  // The merge stages' barriers are the sort's own (see BitonicSorter).
   computeToCompute(cmd);
   sorter_.record(cmd, drawOrder_);
 }
 
-void ParticleSystem::buildIndirect(FrameContext& frame) {
-  VkCommandBuffer cmd = frame.cmd;
-  computeToCompute(cmd);
+void ParticleSystem::buildIndirect(VkCommandBuffer cmd) {
   indirect_.bind(cmd);
   DescriptorWriter()
       .storage(11, uniforms_.handle())

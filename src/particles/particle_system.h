@@ -89,7 +89,7 @@ class ParticleSystem {
   gpu::ParticleStepPush stepPush(uint64_t step) const;
   void recordStep(VkCommandBuffer cmd);
   void sort(FrameContext& frame);
-  void buildIndirect(FrameContext& frame);
+  void buildIndirect(VkCommandBuffer cmd);
   const DrawPipelines& pipelinesFor(const FrameContext& frame, const LightingInterface& lighting);
   DescriptorWriter descriptors(const FrameContext& frame, const LightingInterface& lighting) const;
   void lightParticles(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);

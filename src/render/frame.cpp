@@ -77,11 +77,4 @@ void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets) {
                 divideRoundingUp(targets.height, gpu::kTileGroupSize), 1);
 }
 
-void hdrFromComputeToAttachment(VkCommandBuffer cmd, const FrameTargets& targets) {
-  targets.hdr.transition(cmd, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                         VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-}
-
 }  // namespace lll

@@ -7,6 +7,7 @@
 #include "gpu/pass_timer.h"
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
+#include "render/frame_graph.h"
 #include "render/gpu_scene.h"
 #include "render/settings.h"
 #include "shared/gpu_types.h"
@@ -17,9 +18,7 @@ class Context;
 class ParticleSystem;
 class VisibilityBuffer;
 
-// Screen-sized targets. Layouts between passes: depth stays DEPTH_READ_ONLY_OPTIMAL after the
-// prepass (read-only depth attachment and sampled); hdr is COLOR_ATTACHMENT_OPTIMAL while the
-// technique runs; ldr is GENERAL (storage, written by the tonemap).
+// Screen-sized targets. Their layouts are the frame graph's business (render/frame_graph.h).
 struct FrameTargets {
   uint32_t width = 0;
   uint32_t height = 0;
@@ -34,7 +33,7 @@ struct FrameTargets {
 struct FrameContext {
   Context& context;
   VkCommandBuffer cmd;
-  PassTimer& timer;
+  FrameGraph& graph;  // every pass goes through it: it derives the barriers and times the pass
   const GpuScene& scene;
   const FrameTargets& targets;
   const Buffer& uniformBuffer;  // FrameUniforms
@@ -95,8 +94,5 @@ void drawSceneIntoHdr(FrameContext& frame, const Pipeline& pipeline, const Pipel
 
 // One invocation per pixel of the frame, in kTileGroupSize x kTileGroupSize groups.
 void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets);
-
-// A compute pass wrote hdr in GENERAL layout; give it back to the colour attachment passes.
-void hdrFromComputeToAttachment(VkCommandBuffer cmd, const FrameTargets& targets);
 
 }  // namespace lll

@@ -11,7 +11,6 @@
 #include <vulkan/vulkan.h>
 
 #include <functional>
-#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -22,19 +21,20 @@ namespace lll {
 
 // How a pass uses a resource.
 enum class Use {
-  ColorWrite,        // colour attachment, overwritten or cleared (earlier contents not needed)
-  ColorBlend,        // colour attachment, loaded and blended over
-  DepthWrite,        // depth attachment, cleared and written
-  DepthTest,         // depth attachment, read-only test
-  DepthStencilWrite, // depth-stencil attachment written (stencil marking, depth copy)
-  Sampled,           // sampled image or texel fetch, in `stages`
-  StorageRead,       // storage image or buffer, read in `stages`
-  StorageWrite,      // storage image or buffer, written in `stages` (earlier contents not needed)
-  StorageReadWrite,  // storage image or buffer, read and written in `stages`
-  TransferRead,      // source of a copy
-  TransferWrite,     // destination of a copy or fill
-  IndirectRead,      // indirect draw or dispatch arguments
-  HostRead,          // read by the CPU after the frame's submission
+  ColorWrite,         // colour attachment, overwritten or cleared (earlier contents not needed)
+  ColorBlend,         // colour attachment, loaded and blended over
+  DepthWrite,         // depth attachment, cleared and written
+  DepthTest,          // depth attachment, read-only test
+  DepthStencilWrite,  // depth-stencil attachment, cleared and written
+  StencilWrite,       // depth-stencil attachment: depth tested read-only, stencil written
+  Sampled,            // sampled image or texel fetch, in `stages`
+  StorageRead,        // storage image or buffer, read in `stages`
+  StorageWrite,       // storage image or buffer, written in `stages` (earlier contents not needed)
+  StorageReadWrite,   // storage image or buffer, read and written in `stages`
+  TransferRead,       // source of a copy
+  TransferWrite,      // destination of a copy or fill
+  IndirectRead,       // indirect draw or dispatch arguments
+  HostRead,           // read by the CPU after the frame's submission
 };
 
 struct ResourceUse {
@@ -51,18 +51,24 @@ inline ResourceUse uses(const Buffer& buffer, Use use, VkPipelineStageFlags2 sta
   return {nullptr, &buffer, use, stages};
 }
 
+// Two passes' worth of uses as one list (a pass's own, then its lighting interface's).
+inline std::vector<ResourceUse> operator+(std::vector<ResourceUse> a, const std::vector<ResourceUse>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
 class FrameGraph {
  public:
   FrameGraph(VkCommandBuffer cmd, PassTimer& timer);
 
   // Emits the barriers `uses` need, then records `record` as a GPU-timed pass named `name`.
-  void pass(const std::string& name, std::initializer_list<ResourceUse> uses,
+  void pass(const std::string& name, const std::vector<ResourceUse>& uses,
             const std::function<void(VkCommandBuffer)>& record);
   // As pass(), without a timestamp pair: a step of the frame too small to time on its own.
-  void step(std::initializer_list<ResourceUse> uses, const std::function<void(VkCommandBuffer)>& record);
+  void step(const std::vector<ResourceUse>& uses, const std::function<void(VkCommandBuffer)>& record);
 
   // Barriers for `uses` alone, for steps inside a pass that need them between their own commands.
-  void barriers(std::initializer_list<ResourceUse> uses);
+  void barriers(const std::vector<ResourceUse>& uses);
 
   VkCommandBuffer commandBuffer() const { return cmd_; }
 
@@ -72,8 +78,9 @@ class FrameGraph {
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
     VkPipelineStageFlags2 writeStages = 0;  // the last write
     VkAccessFlags2 writeAccess = 0;
-    VkPipelineStageFlags2 readStages = 0;  // reads since the last write
-    VkAccessFlags2 readAccess = 0;         // those already made visible
+    VkPipelineStageFlags2 readStages = 0;     // reads since the last write
+    VkPipelineStageFlags2 visibleStages = 0;  // where the last write is visible already
+    VkAccessFlags2 visibleAccess = 0;
   };
   State& state(const void* resource);
 

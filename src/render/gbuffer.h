@@ -20,11 +20,9 @@ class GBuffer {
   GBuffer() = default;
   GBuffer(Context& context, const GpuScene& scene, const FrameTargets& targets);
 
-  // Draws the opaque scene once (depth EQUAL the prepass) into `accumulation` (cleared; must be
-  // COLOR_ATTACHMENT_OPTIMAL) and the two targets. Afterwards the targets are
-  // SHADER_READ_ONLY_OPTIMAL for fragment and compute shaders and the accumulation writes are
-  // visible to colour attachment reads and writes.
-  void record(FrameContext& frame, const char* passName, VkImageView accumulation) const;
+  // Draws the opaque scene once (depth EQUAL the depth pass) into `accumulation` (cleared: ambient
+  // and emission) and the two targets, as the frame-graph pass `passName`.
+  void record(FrameContext& frame, const char* passName, const Image& accumulation) const;
 
   const Image& target0() const { return target0_; }
   const Image& target1() const { return target1_; }

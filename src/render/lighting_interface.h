@@ -5,8 +5,10 @@
 // they read through it.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "gpu/pipeline.h"
+#include "render/frame_graph.h"
 
 namespace lll {
 
@@ -14,6 +16,15 @@ struct LightingInterface {
   std::string name;  // "forward", "lll", "unlit", ...: the shaders/lighting/<name> folder
   // Writes the interface's light data into a lit pass's descriptors (set 0, bindings 3 to 10).
   std::function<void(DescriptorWriter&)> bind = [](DescriptorWriter&) {};
+  // The buffers it reads, for the frame graph.
+  std::vector<const Buffer*> buffers;
+
+  // What a lit pass reading the light data in `stages` declares.
+  std::vector<ResourceUse> reads(VkPipelineStageFlags2 stages) const {
+    std::vector<ResourceUse> out;
+    for (const Buffer* b : buffers) out.push_back(uses(*b, Use::StorageRead, stages));
+    return out;
+  }
 };
 
 // The shared shader `templateName` (shaders/lit/<templateName>.glsl) compiled with `lighting`'s

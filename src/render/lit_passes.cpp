@@ -60,53 +60,70 @@ DescriptorWriter LitPasses::litDescriptors(const FrameContext& frame) const {
 
 void LitPasses::shadeOpaque(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
-  VkCommandBuffer cmd = frame.cmd;
-  if (opaque_ == OpaqueShading::Own) return;
-  if (opaque_ == OpaqueShading::Geometry) {
-    ScopedPass pass(frame.timer, cmd, "shade-opaque");
-    drawGeometry(frame, geometryOpaque_, DrawFilter::Opaque, true);
-    return;
+  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  switch (opaque_) {
+    case OpaqueShading::Own:
+      return;
+    case OpaqueShading::Geometry:
+      frame.graph.pass(
+          "shade-opaque",
+          std::vector<ResourceUse>{uses(t.hdr, Use::ColorWrite), uses(t.depth, Use::DepthTest)} +
+              lighting_.reads(VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT),
+          [&](VkCommandBuffer) { drawGeometry(frame, geometryOpaque_, DrawFilter::Opaque, true); });
+      return;
+    case OpaqueShading::GBuffer:
+      // The G-buffer pass leaves ambient and emission in hdr; the compute pass adds the lights.
+      gbuffer_->record(frame, "gbuffer", t.hdr);
+      frame.graph.pass("shade-opaque",
+                       std::vector<ResourceUse>{uses(t.hdr, Use::StorageReadWrite, kCompute),
+                                                uses(t.depth, Use::Sampled, kCompute),
+                                                uses(gbuffer_->target0(), Use::Sampled, kCompute),
+                                                uses(gbuffer_->target1(), Use::Sampled, kCompute)} +
+                           lighting_.reads(kCompute),
+                       [&](VkCommandBuffer cmd) {
+                         DescriptorWriter writer = litDescriptors(frame);
+                         writer
+                             .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(),
+                                    VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+                             .image(11, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target0().view(),
+                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+                             .image(12, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target1().view(),
+                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+                         dispatch(frame, cmd, writer);
+                       });
+      return;
+    case OpaqueShading::Visibility:
+      // Every pixel written whole, from its rebuilt surface.
+      frame.graph.pass("shade-opaque",
+                       std::vector<ResourceUse>{uses(t.hdr, Use::StorageWrite, kCompute),
+                                                uses(t.visibility, Use::StorageRead, kCompute)} +
+                           lighting_.reads(kCompute),
+                       [&](VkCommandBuffer cmd) {
+                         DescriptorWriter writer = litDescriptors(frame);
+                         frame.visibility->bindSurfaceData(writer, frame);
+                         const VkDescriptorSet textures = frame.scene.textureTable();
+                         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, computeLayout_.handle(),
+                                                 1, 1, &textures, 0, nullptr);
+                         dispatch(frame, cmd, writer);
+                       });
+      return;
   }
-  // Compute: the G-buffer pass left ambient and emission in hdr (read and added to); from the
-  // visibility buffer every pixel is written whole.
-  if (gbuffer_) gbuffer_->record(frame, "gbuffer", t.hdr.view());
-  ScopedPass pass(frame.timer, cmd, "shade-opaque");
-  const bool fromGbuffer = opaque_ == OpaqueShading::GBuffer;
-  t.hdr.transition(cmd, fromGbuffer ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
-                   VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                   fromGbuffer ? VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT : VkAccessFlags2(0),
-                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
+
+void LitPasses::dispatch(FrameContext& frame, VkCommandBuffer cmd, DescriptorWriter& writer) {
   compute_.bind(cmd);
-  DescriptorWriter writer = litDescriptors(frame);
-  writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
-  if (fromGbuffer) {
-    writer
-        .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(),
-               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-        .image(11, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target0().view(),
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-        .image(12, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target1().view(),
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-  } else {
-    frame.visibility->bindSurfaceData(writer, frame);
-    const VkDescriptorSet textures = frame.scene.textureTable();
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, computeLayout_.handle(), 1, 1, &textures, 0,
-                            nullptr);
-  }
-  writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, computeLayout_);
-  dispatchPerPixel(cmd, t);
-  hdrFromComputeToAttachment(cmd, t);
+  writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, frame.targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, computeLayout_);
+  dispatchPerPixel(cmd, frame.targets);
 }
 
 void LitPasses::shadeGlass(FrameContext& frame) {
   if (!frame.scene.hasBlendDraws()) return;
-  ScopedPass pass(frame.timer, frame.cmd, "glass");
-  // Blends over what the opaque shading drew, in whichever pass that was.
-  memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-  drawGeometry(frame, glass_, DrawFilter::Blend, false);
+  const FrameTargets& t = frame.targets;
+  frame.graph.pass("glass",
+                   std::vector<ResourceUse>{uses(t.hdr, Use::ColorBlend), uses(t.depth, Use::DepthTest)} +
+                       lighting_.reads(VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT),
+                   [&](VkCommandBuffer) { drawGeometry(frame, glass_, DrawFilter::Blend, false); });
 }
 
 void LitPasses::drawGeometry(FrameContext& frame, const Pipeline& pipeline, DrawFilter filter,

@@ -26,7 +26,7 @@ class LitPasses {
   LitPasses(const LitPasses&) = delete;
   LitPasses& operator=(const LitPasses&) = delete;
 
-  // Opaque shading (nothing for OpaqueShading::Own). hdr: COLOR_ATTACHMENT_OPTIMAL before and after.
+  // Opaque shading (nothing for OpaqueShading::Own).
   void shadeOpaque(FrameContext& frame);
   // The blended primitives over the lit frame.
   void shadeGlass(FrameContext& frame);
@@ -36,6 +36,8 @@ class LitPasses {
 
  private:
   DescriptorWriter litDescriptors(const FrameContext& frame) const;
+  // The compute pass with `writer`'s bindings and hdr.
+  void dispatch(FrameContext& frame, VkCommandBuffer cmd, DescriptorWriter& writer);
   // A geometry pass onto hdr (cleared first when `clearHdr`), depth-tested against the depth pass.
   void drawGeometry(FrameContext& frame, const Pipeline& pipeline, DrawFilter filter, bool clearHdr);
 

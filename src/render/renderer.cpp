@@ -211,17 +211,14 @@ void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advancePartic
   gpuScene_->prepareFrame(uniforms_.viewProj, camera_.eye);
   if (visibility_) visibility_->prepareFrame(*gpuScene_);
   timer_.reset(cmd);
-  FrameContext frame{context_,  cmd,       timer_,  *gpuScene_,       targets_,         uniformBuffer_,
+  FrameGraph graph(cmd, timer_);
+  FrameContext frame{context_,  cmd,       graph,   *gpuScene_,       targets_,         uniformBuffer_,
                      uniforms_, settings_, capture, particles_.get(), visibility_.get()};
   if (visibility_)
     visibility_->record(frame);
   else
     depthPrepass(frame);
   if (particles_) particles_->update(frame, advanceParticles);
-  targets_.hdr.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
-                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
   // The frame every technique shares: its light data, opaque shading (its own or the shared pass
   // through its lighting interface), then glass and particles through that interface.
   technique_->buildLightData(frame);
@@ -232,65 +229,51 @@ void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advancePartic
   lit_->shadeGlass(frame);
   if (particles_) particles_->draw(frame, technique_->lighting());
   tonemap(frame);
-  if (capture) captureImages(cmd);
+  if (capture) captureImages(graph);
 }
 
 void Renderer::depthPrepass(FrameContext& frame) {
-  VkCommandBuffer cmd = frame.cmd;
-  ScopedPass pass(timer_, cmd, "depth-prepass");
-  targets_.depth.transition(
-      cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
-      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-  beginRendering(cmd, targets_.width, targets_.height, {}, targets_.depth.view(),
-                 VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
-  depthOpaque_.bind(cmd);
-  meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depthLayout_.handle());
-  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::OpaqueOnly);
-  depthMask_.bind(cmd);
-  gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::MaskOnly);
-  vkCmdEndRendering(cmd);
-  targets_.depth.transition(
-      cmd, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
-      VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT |
-          VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+  frame.graph.pass("depth-prepass", {uses(targets_.depth, Use::DepthWrite)}, [&](VkCommandBuffer cmd) {
+    beginRendering(cmd, targets_.width, targets_.height, {}, targets_.depth.view(),
+                   VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
+    depthOpaque_.bind(cmd);
+    meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depthLayout_.handle());
+    gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::OpaqueOnly);
+    depthMask_.bind(cmd);
+    gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::MaskOnly);
+    vkCmdEndRendering(cmd);
+  });
 }
 
 void Renderer::tonemap(FrameContext& frame) {
-  VkCommandBuffer cmd = frame.cmd;
-  ScopedPass pass(timer_, cmd, "tonemap");
-  targets_.hdr.transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT);
-  targets_.ldr.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                          VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-  tonemap_.bind(cmd);
-  DescriptorWriter()
-      .storage(0, uniformBuffer_.handle())
-      .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapLayout_.handle());
-  dispatchPerPixel(cmd, targets_);
+  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  frame.graph.pass(
+      "tonemap",
+      {uses(targets_.hdr, Use::StorageRead, kCompute), uses(targets_.ldr, Use::StorageWrite, kCompute)},
+      [&](VkCommandBuffer cmd) {
+        tonemap_.bind(cmd);
+        DescriptorWriter()
+            .storage(0, uniformBuffer_.handle())
+            .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapLayout_.handle());
+        dispatchPerPixel(cmd, targets_);
+      });
 }
 
-void Renderer::captureImages(VkCommandBuffer cmd) {
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-  VkBufferImageCopy copy{};
-  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  copy.imageExtent = {targets_.width, targets_.height, 1};
-  vkCmdCopyImageToBuffer(cmd, targets_.hdr.handle(), VK_IMAGE_LAYOUT_GENERAL, hdrReadback_.handle(), 1,
-                         &copy);
-  vkCmdCopyImageToBuffer(cmd, targets_.ldr.handle(), VK_IMAGE_LAYOUT_GENERAL, ldrReadback_.handle(), 1,
-                         &copy);
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+void Renderer::captureImages(FrameGraph& graph) {
+  graph.step({uses(targets_.hdr, Use::TransferRead), uses(targets_.ldr, Use::TransferRead),
+              uses(hdrReadback_, Use::TransferWrite), uses(ldrReadback_, Use::TransferWrite)},
+             [&](VkCommandBuffer cmd) {
+               VkBufferImageCopy copy{};
+               copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+               copy.imageExtent = {targets_.width, targets_.height, 1};
+               vkCmdCopyImageToBuffer(cmd, targets_.hdr.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                      hdrReadback_.handle(), 1, &copy);
+               vkCmdCopyImageToBuffer(cmd, targets_.ldr.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                      ldrReadback_.handle(), 1, &copy);
+             });
+  graph.barriers({uses(hdrReadback_, Use::HostRead), uses(ldrReadback_, Use::HostRead)});
 }
 
 HdrImage Renderer::hdrImage() const {

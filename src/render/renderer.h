@@ -77,7 +77,7 @@ class Renderer {
   void recordFrame(VkCommandBuffer cmd, bool capture, bool advanceParticles);
   void depthPrepass(FrameContext& frame);
   void tonemap(FrameContext& frame);
-  void captureImages(VkCommandBuffer cmd);
+  void captureImages(FrameGraph& graph);
 
   Context& context_;
   const Scene& scene_;

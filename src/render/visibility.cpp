@@ -129,75 +129,60 @@ void VisibilityBuffer::prepareFrame(const GpuScene& scene) {
 
 void VisibilityBuffer::record(FrameContext& frame) const {
   const FrameTargets& t = frame.targets;
-  VkCommandBuffer cmd = frame.cmd;
-  ScopedPass pass(frame.timer, cmd, "visibility");
-  t.depth.transition(
-      cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
-      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-  t.visibility.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
-                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-  VkClearColorValue noSurface{};
-  noSurface.uint32[0] = gpu::kNoSurface;
-  beginRendering(cmd, t.width, t.height, {{t.visibility.view(), true, noSurface}}, t.depth.view(),
-                 VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
-  const VkDeviceSize offsets[2] = {0, 0};
-  const GpuScene& scene = frame.scene;
-  const VkBuffer streams[2] = {scene.positionBuffer().handle(), scene.frameInstances().handle()};
-  vkCmdBindIndexBuffer(cmd, scene.indexBuffer().handle(), 0, VK_INDEX_TYPE_UINT32);
-  if (singleSided_ + doubleSided_ > 0) {
-    vkCmdBindVertexBuffers(cmd, 0, 2, streams, offsets);
-    opaque_.bind(cmd);
-    DescriptorWriter()
-        .storage(0, frame.uniformBuffer.handle())
-        .storage(16, bases_.handle())
-        .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-    const uint32_t stride = sizeof(VkDrawIndexedIndirectCommand);
-    // gl_DrawID restarts at 0 in each call: the push constant says where the call's commands begin.
-    const auto drawGroup = [&](uint32_t first, uint32_t count, VkCullModeFlags cull) {
-      if (count == 0) return;
-      const gpu::VisibilityPush push{glm::uvec4(0, 0, first, 0)};
-      vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                         sizeof(push), &push);
-      vkCmdSetCullMode(cmd, cull);
-      vkCmdDrawIndexedIndirect(cmd, commands_.handle(), VkDeviceSize(first) * stride, count, stride);
-    };
-    drawGroup(0, singleSided_, VK_CULL_MODE_BACK_BIT);
-    drawGroup(singleSided_, doubleSided_, VK_CULL_MODE_NONE);
-  }
-  if (!maskedDraws_.empty()) {
-    const VkBuffer meshStreams[2] = {scene.vertexBuffer().handle(), scene.frameInstances().handle()};
-    vkCmdBindVertexBuffers(cmd, 0, 2, meshStreams, offsets);
-    masked_.bind(cmd);
-    DescriptorWriter()
-        .storage(0, frame.uniformBuffer.handle())
-        .storage(2, scene.materialBuffer().handle())
-        .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, maskedLayout_);
-    for (const MaskedDraw& m : maskedDraws_) {
-      const DrawItem& d = scene.draws()[m.draw];
-      scene.bindMaterialSet(cmd, maskedLayout_.handle(), d.material);
-      const gpu::VisibilityPush push{glm::uvec4(m.recordBase, d.material, 0, 0)};
-      vkCmdPushConstants(cmd, maskedLayout_.handle(),
-                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push), &push);
-      vkCmdSetCullMode(cmd, doubleSided(scene, d) ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
-      vkCmdDrawIndexed(cmd, d.indexCount, scene.meshVisibleInstances(d.mesh), d.firstIndex,
-                       int32_t(d.vertexOffset), scene.meshFirstInstance(d.mesh));
-    }
-  }
-  vkCmdEndRendering(cmd);
-  t.depth.transition(
-      cmd, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
-      VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT |
-          VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-  t.visibility.transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+  frame.graph.pass(
+      "visibility", {uses(t.depth, Use::DepthWrite), uses(t.visibility, Use::ColorWrite)},
+      [&](VkCommandBuffer cmd) {
+        VkClearColorValue noSurface{};
+        noSurface.uint32[0] = gpu::kNoSurface;
+        beginRendering(cmd, t.width, t.height, {{t.visibility.view(), true, noSurface}}, t.depth.view(),
+                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
+        const VkDeviceSize offsets[2] = {0, 0};
+        const GpuScene& scene = frame.scene;
+        const VkBuffer streams[2] = {scene.positionBuffer().handle(), scene.frameInstances().handle()};
+        vkCmdBindIndexBuffer(cmd, scene.indexBuffer().handle(), 0, VK_INDEX_TYPE_UINT32);
+        if (singleSided_ + doubleSided_ > 0) {
+          vkCmdBindVertexBuffers(cmd, 0, 2, streams, offsets);
+          opaque_.bind(cmd);
+          DescriptorWriter()
+              .storage(0, frame.uniformBuffer.handle())
+              .storage(16, bases_.handle())
+              .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
+          const uint32_t stride = sizeof(VkDrawIndexedIndirectCommand);
+          // gl_DrawID restarts at 0 in each call: the push constant says where the call's commands begin.
+          const auto drawGroup = [&](uint32_t first, uint32_t count, VkCullModeFlags cull) {
+            if (count == 0) return;
+            const gpu::VisibilityPush push{glm::uvec4(0, 0, first, 0)};
+            vkCmdPushConstants(cmd, layout_.handle(),
+                               VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
+                               &push);
+            vkCmdSetCullMode(cmd, cull);
+            vkCmdDrawIndexedIndirect(cmd, commands_.handle(), VkDeviceSize(first) * stride, count, stride);
+          };
+          drawGroup(0, singleSided_, VK_CULL_MODE_BACK_BIT);
+          drawGroup(singleSided_, doubleSided_, VK_CULL_MODE_NONE);
+        }
+        if (!maskedDraws_.empty()) {
+          const VkBuffer meshStreams[2] = {scene.vertexBuffer().handle(), scene.frameInstances().handle()};
+          vkCmdBindVertexBuffers(cmd, 0, 2, meshStreams, offsets);
+          masked_.bind(cmd);
+          DescriptorWriter()
+              .storage(0, frame.uniformBuffer.handle())
+              .storage(2, scene.materialBuffer().handle())
+              .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, maskedLayout_);
+          for (const MaskedDraw& m : maskedDraws_) {
+            const DrawItem& d = scene.draws()[m.draw];
+            scene.bindMaterialSet(cmd, maskedLayout_.handle(), d.material);
+            const gpu::VisibilityPush push{glm::uvec4(m.recordBase, d.material, 0, 0)};
+            vkCmdPushConstants(cmd, maskedLayout_.handle(),
+                               VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
+                               &push);
+            vkCmdSetCullMode(cmd, doubleSided(scene, d) ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+            vkCmdDrawIndexed(cmd, d.indexCount, scene.meshVisibleInstances(d.mesh), d.firstIndex,
+                             int32_t(d.vertexOffset), scene.meshFirstInstance(d.mesh));
+          }
+        }
+        vkCmdEndRendering(cmd);
+      });
 }
 
 void VisibilityBuffer::bindSurfaceData(DescriptorWriter& writer, const FrameContext& frame) const {

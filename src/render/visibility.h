@@ -27,9 +27,7 @@ class VisibilityBuffer {
 
   // After GpuScene::prepareFrame: this frame's surface records, draw commands and record bases.
   void prepareFrame(const GpuScene& scene);
-  // The "visibility" pass: clears and writes frame.targets.depth (left DEPTH_READ_ONLY_OPTIMAL,
-  // as the depth prepass leaves it) and frame.targets.visibility (left GENERAL, readable by
-  // compute shaders).
+  // The "visibility" pass: clears and writes frame.targets.depth and frame.targets.visibility.
   void record(FrameContext& frame) const;
 
   // What common/visibility_surface.glsl reads, at its bindings (16 to 20).
