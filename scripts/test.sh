@@ -15,9 +15,9 @@ bash "$root/scripts/build.sh" "$root/build-asan" -DLLL_SANITIZE=ON
 # AddressSanitizer and UndefinedBehaviorSanitizer check stays on and fails the test.
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-# The soak's 120 frames per technique ran in the release build; here its shortest run (30 frames)
+# The soak's 120 frames per technique ran in the release build; here its shortest run (70 frames)
 # checks AddressSanitizer's own heap count, which keeps the whole command under 20 minutes.
-export LLL_SOAK_FRAMES=30
+export LLL_SOAK_FRAMES=70
 (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs" --timeout 900)
 unset ASAN_OPTIONS UBSAN_OPTIONS LLL_SOAK_FRAMES
 

@@ -1,8 +1,8 @@
 // Long runs must not grow (issue 16): lavapipe once compiled, and never freed, a shader variant on
 // every bind of a shader whose branches depended on uniform-block values, about 1 MB a frame. Each
 // technique renders smoke (from its steady state) for LLL_SOAK_FRAMES frames (default 120) in this
-// process, every frame simulated and drawn; the heap in use over its last 10 frames must stay
-// within 8 MB of that over frames 10 to 19.
+// process, every frame simulated and drawn; the heap in use over its last 20 frames must stay
+// within 8 MB of that over frames 10 to 29.
 //
 // The heap is measured on a context of its own without the validation layers: the Debian layer
 // (1.3.239) keeps about 25 KB of its own per submitted frame (seen: +9.8 MB over 400 frames with
@@ -32,7 +32,7 @@ namespace {
 
 constexpr double kAllowedGrowthMiB = 8.0;
 constexpr uint32_t kWarmupFrames = 10;
-constexpr uint32_t kWindow = 10;
+constexpr uint32_t kWindow = 20;
 
 // Heap in use: what a leak grows. The resident set is too noisy to bound at 8 MB here: lavapipe's
 // rasterizer threads take and give back several MB from frame to frame (seen 138 -> 145 -> 138).
@@ -98,13 +98,19 @@ TEST_P(Soak, MemoryStaysFlatOverFrames) {
   // A growing plume needs more of the rasterizer's memory each frame, legitimately: start from
   // the steady state, where as many particles die as are born.
   renderer.advanceParticles(stepsToSteadyState(renderer.particles()->preset()));
-  const uint32_t frames = std::max(soakFrames(), 2 * kWarmupFrames + kWindow);
-  // The least over a window of frames: a frame that happens to hold a large temporary (seen: 9 MB
-  // for one frame when the machine was loaded) is not a leak, and a leak raises the least too.
+  const uint32_t frames = std::max(soakFrames(), kWarmupFrames + 3 * kWindow);  // windows apart
+  // The least over a window of frames: a frame that happens to hold a large temporary is not a
+  // leak, and a leak raises the least too. Seen with lavapipe: a 9.95 MB block alive after some
+  // frames and not others (prepass, 200 frames, sampled every 5: absent at 20-35, 45, 60, 110,
+  // 175, 190), the rasterizer's binning memory freed by its thread after the fence signals; over
+  // 10 frames it was once present throughout the last window and absent from the first.
   double atWarmup = INFINITY, atEnd = INFINITY, peak = 0.0;
+  const char* traceEnv = std::getenv("LLL_SOAK_TRACE");  // print the heap every N frames
+  const uint32_t trace = traceEnv ? uint32_t(std::strtoul(traceEnv, nullptr, 10)) : 0u;
   for (uint32_t i = 1; i <= frames; ++i) {
     renderer.renderFrame(i == frames);
     const double heap = heapInUseMiB();
+    if (trace != 0 && i % trace == 0) std::printf("soak %s: frame %u heap %.2f MiB\n", c.name, i, heap);
     if (i >= kWarmupFrames && i < kWarmupFrames + kWindow) atWarmup = std::min(atWarmup, heap);
     if (i > frames - kWindow) atEnd = std::min(atEnd, heap);
     peak = std::max(peak, heap);
