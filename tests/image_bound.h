@@ -28,6 +28,11 @@ inline constexpr ImageBound kSmokeBound{40.0, 2, 0.999, 16};
 // differently coloured lights overlap on a coloured metal move: camp, all metal, at 1,024
 // coloured lights: 14 of 255 at worst, 99.90% of pixels within 2 (lavapipe and H200).
 inline constexpr ImageBound kPrepassBound{45.0, 2, 0.995, 24};
+// The compute rasterizer against the hardware pass: where a snapped edge passes exactly through a
+// pixel centre the two may give the pixel to different triangles (lavapipe rounds its viewport
+// transform its own way): seen on lavapipe, 2 pixels of the atrium at 160x90 moved by 29 of 255,
+// 1 of the 64x36 one by 47, the rest identical; on the H200 every image test passes unchanged.
+inline constexpr ImageBound kRasterBound{45.0, 2, 0.999, 64};
 
 // Compares and fails the current test where the candidate leaves `bound`; prints and records the
 // numbers and appends them to the CSV file $LLL_TEST_IMAGE_REPORT when that is set (how the GPU

@@ -59,8 +59,9 @@ TEST(BenchStats, PassOrderKeepsEveryFramesOwnOrder) {
 
 size_t variantsPerLightCount() {
   size_t n = 0;
-  // lll: 3 fills, the compute fill on G-buffer surfaces and with fragment shading
-  for (const TechniqueInfo& t : techniques()) n += t.name == "lll" ? 5 : 1;
+  // lll: 3 fills, the compute fill with the hardware rasterizing the visibility buffer, on G-buffer
+  // surfaces and with fragment shading
+  for (const TechniqueInfo& t : techniques()) n += t.name == "lll" ? 6 : 1;
   return n;
 }
 
@@ -86,15 +87,16 @@ TEST(BenchSuites, ForwardOverManyLightsIsSkippedOnCpuUnlessAsked) {
 
 TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {
   const auto threel = buildSuite("threel", SuiteOptions{.quick = true});
-  ASSERT_EQ(threel.size(), 24u);
+  ASSERT_EQ(threel.size(), 28u);
   std::set<std::string> labels, names;
   for (const Scenario& s : threel) {
     labels.insert(techniqueLabel(s.settings));
     names.insert(s.name);
     EXPECT_EQ(s.settings.tileSize, 8u);
   }
-  EXPECT_EQ(labels, (std::set<std::string>{"lll/shells", "lll/ray", "lll/compute", "lll/compute/gbuffer",
-                                           "lll/compute/fragment-shade", "forward"}));
+  EXPECT_EQ(labels,
+            (std::set<std::string>{"lll/shells", "lll/ray", "lll/compute", "lll/compute/hardware-raster",
+                                   "lll/compute/gbuffer", "lll/compute/fragment-shade", "forward"}));
   EXPECT_EQ(names, (std::set<std::string>{"threel16 32x18", "threel16 64x36", "threel256 32x18",
                                           "threel256 64x36"}));
   EXPECT_THROW(buildSuite("nope", SuiteOptions{}), InputError);
@@ -204,7 +206,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   const fs::path dir = freshDir("bench-test");
   writeReport(report, dir);
 
-  ASSERT_EQ(report.results.size(), 24u);
+  ASSERT_EQ(report.results.size(), 28u);
   std::map<std::string, size_t> expectedRows;
   for (const ScenarioResult& r : report.results) {
     const std::string& technique = r.scenario.settings.technique;
@@ -226,7 +228,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   const auto json = nlohmann::json::parse(readText(dir / "results.json"));
   EXPECT_EQ(json["device"], context.info().name);
   EXPECT_EQ(json["commit"], gitCommit());
-  ASSERT_EQ(json["results"].size(), 24u);
+  ASSERT_EQ(json["results"].size(), 28u);
   for (const auto& r : json["results"]) {
     EXPECT_EQ(r["driver"], context.info().driver);
     EXPECT_FALSE(r["date"].get<std::string>().empty());

@@ -72,6 +72,25 @@ struct VisibilityPush {
 };
 LLL_CHECK_SIZE(VisibilityPush, 16);
 
+// The compute rasterizer's push constants (render/compute_raster.h).
+struct RasterPush {
+  uvec4 counts;  // x triangles this frame, y opaque records, z of them single-sided (the first ones),
+                 // w workgroups per row of the dispatch
+  uvec4 large;   // x capacity of the large-triangle list, y largest bounding box (pixels) rasterized
+                 // by one thread, z bins per row, w entries per bin
+};
+LLL_CHECK_SIZE(RasterPush, 32);
+
+// A triangle whose bounding box is too large for one thread: the per-pixel pass tests it. Vertices
+// snapped to 1/256 pixel and ordered so that the inside is positive; depth is z/w at each vertex.
+struct RasterTriangle {
+  ivec4 v01;     // x0 y0 x1 y1
+  ivec4 v2;      // x2 y2, z the pixel id, w: bit k set when edge k (v1v2, v2v0, v0v1) is top or left
+  vec4 depth;    // z0 z1 z2, w unused
+  ivec4 bounds;  // first and last pixel covered: x0 y0 x1 y1
+};
+LLL_CHECK_SIZE(RasterTriangle, 64);
+
 // Per-draw push constants of every mesh pass.
 struct DrawPush {
   uvec4 ids;  // x material index, yzw unused

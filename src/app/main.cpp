@@ -78,6 +78,10 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
          "opaque surfaces: visibility (one raster pass of triangle ids, surfaces rebuilt in compute) | "
          "gbuffer (depth prepass, then geometry passes)")
       ->check(CLI::IsMember({"visibility", "gbuffer"}));
+  cmd.add_option("--raster", s.raster,
+                 "who rasterizes the visibility buffer: hardware | compute (64-bit atomics, one thread per "
+                 "small triangle) | auto (compute on a GPU, hardware on a CPU device)")
+      ->check(CLI::IsMember({"hardware", "compute", "auto"}));
   cmd.add_option("--debug-view", s.debugView, "none | heatmap | bounds | tiles (lll)")
       ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));
   cmd.add_option(

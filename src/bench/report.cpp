@@ -49,6 +49,7 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"fill", s.settings.technique == "lll" ? s.settings.lllFill : ""},
       {"shade", s.settings.technique == "lll" ? s.settings.lllShade : ""},
       {"surfaces", s.settings.surfaces},
+      {"raster", s.settings.raster},
       {"tile", s.settings.tileSize},
       {"particles", s.settings.particles},
       {"particle_count", s.settings.particleCount},

@@ -35,8 +35,9 @@ Scenario makeScenario(const std::string& suite, const std::string& name, const S
 }
 
 // One copy of `base` per technique in `names`; "lll" expands to one per fill when `everyFill`
-// (opaque shading in compute from the visibility buffer), plus the compute fill with surfaces from
-// the raster G-buffer and with the chapter's fragment shading.
+// (opaque shading in compute from the visibility buffer, --raster auto), plus the compute fill with
+// the visibility buffer drawn by the hardware, with surfaces from the raster G-buffer, and with the
+// chapter's fragment shading.
 std::vector<Scenario> perTechnique(const Scenario& base, const std::vector<std::string>& names,
                                    bool everyFill) {
   std::vector<Scenario> out;
@@ -52,6 +53,9 @@ std::vector<Scenario> perTechnique(const Scenario& base, const std::vector<std::
       out.push_back(s);
     }
     s.settings.lllFill = "compute";
+    s.settings.raster = "hardware";  // the visibility buffer drawn by the hardware, whatever auto picks
+    out.push_back(s);
+    s.settings.raster = "auto";
     s.settings.surfaces = "gbuffer";
     out.push_back(s);
     s.settings.surfaces = "visibility";
@@ -165,7 +169,8 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
 std::string lllVariant(const RenderSettings& settings) {
   if (settings.technique != "lll") return "";
   if (settings.lllShade == "fragment") return settings.lllFill + "/fragment-shade";
-  return settings.surfaces == "gbuffer" ? settings.lllFill + "/gbuffer" : settings.lllFill;
+  if (settings.surfaces == "gbuffer") return settings.lllFill + "/gbuffer";
+  return settings.raster == "hardware" ? settings.lllFill + "/hardware-raster" : settings.lllFill;
 }
 
 std::string techniqueLabel(const RenderSettings& settings) {

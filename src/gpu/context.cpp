@@ -357,7 +357,9 @@ void Context::createDevice() {
   VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
   // The visibility buffer (render/visibility.h) draws with gl_DrawID/gl_BaseInstance in indirect
   // multi-draws and writes gl_PrimitiveID from its fragment shader (Geometry capability).
-  VkPhysicalDeviceVulkan11Features supported11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+  VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceVulkan11Features supported11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES,
+                                               &supported12};
   VkPhysicalDeviceFeatures2 supported2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported11};
   vkGetPhysicalDeviceFeatures2(physical_, &supported2);
   visibilityBuffer_ = supported11.shaderDrawParameters && supported.multiDrawIndirect &&
@@ -369,6 +371,10 @@ void Context::createDevice() {
   features.features.drawIndirectFirstInstance = visibilityBuffer_;
   features.features.geometryShader = visibilityBuffer_;
   features.features.fragmentStoresAndAtomics = VK_TRUE;
+  // The compute rasterizer (render/compute_raster.h): 64-bit atomic max of (depth, id) per pixel.
+  computeRaster_ = supported.shaderInt64 && supported12.shaderBufferInt64Atomics;
+  features.features.shaderInt64 = computeRaster_;
+  f12.shaderBufferInt64Atomics = computeRaster_;
   features.features.samplerAnisotropy = supported.samplerAnisotropy;
   features.features.independentBlend = supported.independentBlend;
   features.features.depthClamp = supported.depthClamp;  // light volumes must not lose far faces

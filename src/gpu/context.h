@@ -55,6 +55,8 @@ class Context {
   // shaderDrawParameters, multiDrawIndirect, drawIndirectFirstInstance and geometryShader are
   // enabled: what the visibility buffer's pass needs (render/visibility.h).
   bool visibilityBufferFeatures() const { return visibilityBuffer_; }
+  // shaderInt64 and shaderBufferInt64Atomics, which the compute rasterizer needs.
+  bool computeRasterFeatures() const { return computeRaster_; }
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
                           VkMemoryPropertyFlags preferred = 0) const;
@@ -93,6 +95,7 @@ class Context {
   bool validation_ = false;
   bool pipelineStatistics_ = false;
   bool visibilityBuffer_ = false;
+  bool computeRaster_ = false;
   mutable std::mutex messagesMutex_;
   std::vector<std::string> messages_;
 };

@@ -13,13 +13,24 @@ std::unique_ptr<Technique> createDeferred(Context&, const GpuScene&, const Rende
 std::unique_ptr<Technique> createPrepass(Context&, const GpuScene&, const RenderSettings&,
                                          const FrameTargets&, const VisibilityBuffer*);
 
+namespace {
+bool always(const RenderSettings&) {
+  return true;
+}
+bool lllFragmentShading(const RenderSettings& settings) {
+  return settings.lllShade == "fragment";
+}
+}  // namespace
+
 const std::vector<TechniqueInfo>& techniques() {
   static const std::vector<TechniqueInfo> table = {
       {"forward", "brute force: every pixel evaluates every light (the reference)", &createForward},
-      {"deferred", "Infinity's deferred lighting: G-buffer, then lights drawn as volumes", &createDeferred},
-      {"prepass", "Resistance 2's light pre-pass: normals, stencil-volume lights, material", &createPrepass},
+      {"deferred", "Infinity's deferred lighting: G-buffer, then lights drawn as volumes", &createDeferred,
+       &always},
+      {"prepass", "Resistance 2's light pre-pass: normals, stencil-volume lights, material", &createPrepass,
+       &always},
       {"lll", "light linked list: per-tile light lists built on the GPU (--lll-fill shells|ray|compute)",
-       &createLightLinkedList},
+       &createLightLinkedList, &lllFragmentShading},
   };
   return table;
 }

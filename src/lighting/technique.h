@@ -47,6 +47,10 @@ struct TechniqueInfo {
   std::unique_ptr<Technique> (*create)(Context& context, const GpuScene& scene,
                                        const RenderSettings& settings, const FrameTargets& targets,
                                        const VisibilityBuffer* visibility);
+  // Whether, with these settings, the technique draws opaque geometry again with an EQUAL depth
+  // test against the visibility pass (a G-buffer, the pre-pass's normals, fragment shading): that
+  // needs the hardware's depth bit for bit, so --raster auto keeps the hardware pass for it.
+  bool (*redrawsOpaque)(const RenderSettings& settings) = nullptr;
 };
 
 const std::vector<TechniqueInfo>& techniques();

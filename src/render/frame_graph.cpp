@@ -48,6 +48,13 @@ Access describe(const ResourceUse& u) {
               true,
               true,
               true};
+    case Use::DepthReadWrite:
+      return {kFragmentTests,
+              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+              VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+              true,
+              true,
+              false};
     case Use::DepthTest:
       return {kFragmentTests,
               VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT,

@@ -25,6 +25,7 @@ enum class Use {
   ColorBlend,         // colour attachment, loaded and blended over
   DepthWrite,         // depth attachment, cleared and written
   DepthTest,          // depth attachment, read-only test
+  DepthReadWrite,     // depth attachment, loaded, tested and written
   DepthStencilWrite,  // depth-stencil attachment, cleared and written
   StencilWrite,       // depth-stencil attachment: depth tested read-only, stencil written
   Sampled,            // sampled image or texel fetch, in `stages`

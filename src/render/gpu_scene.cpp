@@ -158,7 +158,8 @@ void GpuScene::uploadGeometry() {
   std::vector<glm::vec3> positions;
   positions.reserve(scene_.vertices.size());
   for (const Vertex& v : scene_.vertices) positions.push_back(v.position);
-  positions_ = Buffer(context_, positions.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+  positions_ = Buffer(context_, positions.size() * sizeof(glm::vec3),
+                      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                       MemoryUse::Device, "positions");
   positions_.upload(std::span<const glm::vec3>(positions));
   meshInstances_.resize(scene_.meshes.size());

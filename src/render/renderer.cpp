@@ -1,4 +1,5 @@
 #include "render/renderer.h"
+#include "render/compute_raster.h"
 #include "render/lit_passes.h"
 #include "render/visibility.h"
 
@@ -18,6 +19,11 @@
 namespace lll {
 
 namespace {
+
+// --raster auto: the compute rasterizer where it was measured faster than the hardware pass.
+bool computeRasterWins(const Context& context) {
+  return !context.isCpuDevice();
+}
 
 // A frame needing more than this many re-renders has a bug, not a small pool.
 constexpr uint32_t kMaxRerenders = 8;
@@ -82,14 +88,37 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
 }
 
 void Renderer::chooseSurfaces() {
-  if (settings_.surfaces == "gbuffer") return;
+  const std::string& raster = settings_.raster;
+  if (raster != "hardware" && raster != "compute" && raster != "auto")
+    throw InputError(fmt::format("--raster {}: expected hardware, compute or auto", raster));
+  if (settings_.surfaces == "gbuffer") {
+    if (raster == "compute")
+      throw InputError("--raster compute rasterizes the visibility buffer: it needs --surfaces visibility");
+    return;
+  }
   if (settings_.surfaces != "visibility")
     throw InputError(fmt::format("--surfaces {}: expected visibility or gbuffer", settings_.surfaces));
   surfacesFallback_ = VisibilityBuffer::problem(context_, *gpuScene_);
   if (surfacesFallback_.empty()) {
-    visibility_ = std::make_unique<VisibilityBuffer>(context_, *gpuScene_);
+    std::string computeProblem = ComputeRaster::problem(context_, settings_.width, settings_.height);
+    const TechniqueInfo& technique = findTechnique(settings_.technique);
+    if (computeProblem.empty() && technique.redrawsOpaque && technique.redrawsOpaque(settings_))
+      computeProblem = fmt::format(
+          "--technique {} (with these options) draws opaque geometry again with an EQUAL depth test, "
+          "which needs the hardware pass's depth",
+          settings_.technique);
+    if (raster == "compute" && !computeProblem.empty())
+      throw InputError(fmt::format("--raster compute: {}", computeProblem));
+    // auto: compute where the measurement says it wins (bench/README.md, "Compute rasterization").
+    const bool compute =
+        raster == "compute" || (raster == "auto" && computeProblem.empty() && computeRasterWins(context_));
+    visibility_ =
+        std::make_unique<VisibilityBuffer>(context_, *gpuScene_, compute, settings_.width, settings_.height);
     return;
   }
+  if (raster == "compute")
+    throw InputError(
+        fmt::format("--raster compute: the visibility buffer is unavailable: {}", surfacesFallback_));
   fmt::print(stderr, "lll: warning: --surfaces visibility: {}; rendering with --surfaces gbuffer\n",
              surfacesFallback_);
 }
@@ -103,7 +132,9 @@ void Renderer::createTargets() {
   targets_.width = w;
   targets_.height = h;
   targets_.depth = Image(context_, w, h, kDepthFormat,
-                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "depth");
+                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                             VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // the compute rasterizer's copy
+                         "depth");
   targets_.hdr = Image(context_, w, h, kHdrFormat,
                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
                            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
@@ -199,6 +230,7 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
   s.push_back({"visible_instances", double(gpuScene_->visibleInstances())});
   // 1 when opaque surfaces came from the visibility buffer (its ids are lighting memory too).
   s.push_back({"visibility-buffer", visibility_ ? 1.0 : 0.0});
+  s.push_back({"compute-raster", visibility_ && visibility_->computeRaster() ? 1.0 : 0.0});
   if (visibility_) s.push_back({"visibility_bytes", 4.0 * settings_.width * settings_.height});
   if (particles_) {
     const auto p = particles_->stats();

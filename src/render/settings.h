@@ -22,6 +22,9 @@ struct RenderSettings {
   // compute; falls back to gbuffer, with a warning, where the scene or device cannot) | gbuffer
   // (the depth prepass, then geometry passes: G-buffer or fragment shading).
   std::string surfaces = "visibility";
+  // Who rasterizes the visibility buffer's opaque triangles: hardware | compute
+  // (render/compute_raster.h) | auto (compute where it was measured faster: a discrete GPU).
+  std::string raster = "auto";
   uint32_t tileSize = 8;
   uint32_t linksPerTile = 32;      // initial link pool: tiles * this, grown on overflow
   std::string debugView = "none";  // none | heatmap | bounds | tiles

@@ -66,7 +66,8 @@ std::string VisibilityBuffer::problem(const Context& context, const GpuScene& sc
   return {};
 }
 
-VisibilityBuffer::VisibilityBuffer(Context& context, const GpuScene& scene)
+VisibilityBuffer::VisibilityBuffer(Context& context, const GpuScene& scene, bool computeRaster,
+                                   uint32_t width, uint32_t height)
     : context_(context), triangleBits_(idLayout(scene).triangleBits) {
   const SpecializationConstants constants = {{kTriangleBitsConstant, triangleBits_}};
   layout_ = PipelineLayout(context, {"common/visibility.vert", "common/visibility.frag"});
@@ -93,13 +94,19 @@ VisibilityBuffer::VisibilityBuffer(Context& context, const GpuScene& scene)
                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryUse::Upload, "visibility-draws");
   bases_ = Buffer(context, draws * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload,
                   "visibility-record-bases");
+  if (computeRaster)
+    compute_ = std::make_unique<ComputeRaster>(context, width, height, uint32_t(maxRecords), triangleBits_);
 }
+
+VisibilityBuffer::~VisibilityBuffer() = default;
 
 void VisibilityBuffer::prepareFrame(const GpuScene& scene) {
   auto* records = static_cast<gpu::SurfaceRecord*>(records_.mapped());
   auto* commands = static_cast<VkDrawIndexedIndirectCommand*>(commands_.mapped());
   auto* bases = static_cast<uint32_t*>(bases_.mapped());
+  uint32_t* starts = compute_ ? compute_->triangleStarts() : nullptr;
   recordCount_ = 0;
+  triangleCount_ = 0;
   singleSided_ = doubleSided_ = 0;
   maskedDraws_.clear();
   const std::vector<DrawItem>& draws = scene.draws();
@@ -112,8 +119,13 @@ void VisibilityBuffer::prepareFrame(const GpuScene& scene) {
       const int dGroup = masked(scene, d) ? 2 : doubleSided(scene, d) ? 1 : 0;
       if (dGroup != group) continue;
       const uint32_t first = scene.meshFirstInstance(d.mesh);
-      for (uint32_t k = 0; k < visible; ++k)
+      for (uint32_t k = 0; k < visible; ++k) {
         records[recordCount_ + k] = {d.firstIndex, d.vertexOffset, d.material, first + k};
+        if (starts && group < 2) {
+          starts[recordCount_ + k] = triangleCount_;
+          triangleCount_ += d.indexCount / 3;
+        }
+      }
       if (group == 2) {
         maskedDraws_.push_back({i, recordCount_});
       } else {
@@ -124,11 +136,30 @@ void VisibilityBuffer::prepareFrame(const GpuScene& scene) {
       }
       recordCount_ += visible;
     }
+    if (group == 0) singleSidedRecords_ = recordCount_;
+    if (group == 1) {
+      opaqueRecords_ = recordCount_;
+      if (starts) starts[recordCount_] = triangleCount_;
+    }
   }
 }
 
 void VisibilityBuffer::record(FrameContext& frame) const {
   const FrameTargets& t = frame.targets;
+  if (compute_) {
+    compute_->record(frame, records_, opaqueRecords_, singleSidedRecords_, triangleCount_);
+    if (maskedDraws_.empty()) return;
+    frame.graph.pass("visibility-masked",
+                     {uses(t.depth, Use::DepthReadWrite), uses(t.visibility, Use::ColorBlend)},
+                     [&](VkCommandBuffer cmd) {
+                       beginRendering(cmd, t.width, t.height, {{t.visibility.view(), false, {}}},
+                                      t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, false);
+                       vkCmdBindIndexBuffer(cmd, frame.scene.indexBuffer().handle(), 0, VK_INDEX_TYPE_UINT32);
+                       drawMasked(cmd, frame);
+                       vkCmdEndRendering(cmd);
+                     });
+    return;
+  }
   frame.graph.pass(
       "visibility", {uses(t.depth, Use::DepthWrite), uses(t.visibility, Use::ColorWrite)},
       [&](VkCommandBuffer cmd) {
@@ -161,28 +192,32 @@ void VisibilityBuffer::record(FrameContext& frame) const {
           drawGroup(0, singleSided_, VK_CULL_MODE_BACK_BIT);
           drawGroup(singleSided_, doubleSided_, VK_CULL_MODE_NONE);
         }
-        if (!maskedDraws_.empty()) {
-          const VkBuffer meshStreams[2] = {scene.vertexBuffer().handle(), scene.frameInstances().handle()};
-          vkCmdBindVertexBuffers(cmd, 0, 2, meshStreams, offsets);
-          masked_.bind(cmd);
-          DescriptorWriter()
-              .storage(0, frame.uniformBuffer.handle())
-              .storage(2, scene.materialBuffer().handle())
-              .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, maskedLayout_);
-          for (const MaskedDraw& m : maskedDraws_) {
-            const DrawItem& d = scene.draws()[m.draw];
-            scene.bindMaterialSet(cmd, maskedLayout_.handle(), d.material);
-            const gpu::VisibilityPush push{glm::uvec4(m.recordBase, d.material, 0, 0)};
-            vkCmdPushConstants(cmd, maskedLayout_.handle(),
-                               VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
-                               &push);
-            vkCmdSetCullMode(cmd, doubleSided(scene, d) ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
-            vkCmdDrawIndexed(cmd, d.indexCount, scene.meshVisibleInstances(d.mesh), d.firstIndex,
-                             int32_t(d.vertexOffset), scene.meshFirstInstance(d.mesh));
-          }
-        }
+        drawMasked(cmd, frame);
         vkCmdEndRendering(cmd);
       });
+}
+
+void VisibilityBuffer::drawMasked(VkCommandBuffer cmd, const FrameContext& frame) const {
+  if (maskedDraws_.empty()) return;
+  const GpuScene& scene = frame.scene;
+  const VkDeviceSize offsets[2] = {0, 0};
+  const VkBuffer meshStreams[2] = {scene.vertexBuffer().handle(), scene.frameInstances().handle()};
+  vkCmdBindVertexBuffers(cmd, 0, 2, meshStreams, offsets);
+  masked_.bind(cmd);
+  DescriptorWriter()
+      .storage(0, frame.uniformBuffer.handle())
+      .storage(2, scene.materialBuffer().handle())
+      .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, maskedLayout_);
+  for (const MaskedDraw& m : maskedDraws_) {
+    const DrawItem& d = scene.draws()[m.draw];
+    scene.bindMaterialSet(cmd, maskedLayout_.handle(), d.material);
+    const gpu::VisibilityPush push{glm::uvec4(m.recordBase, d.material, 0, 0)};
+    vkCmdPushConstants(cmd, maskedLayout_.handle(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                       0, sizeof(push), &push);
+    vkCmdSetCullMode(cmd, doubleSided(scene, d) ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+    vkCmdDrawIndexed(cmd, d.indexCount, scene.meshVisibleInstances(d.mesh), d.firstIndex,
+                     int32_t(d.vertexOffset), scene.meshFirstInstance(d.mesh));
+  }
 }
 
 void VisibilityBuffer::bindSurfaceData(DescriptorWriter& writer, const FrameContext& frame) const {

@@ -9,11 +9,17 @@
 // Ids: a surface record is one (primitive, visible instance) pair of this frame (gpu::SurfaceRecord);
 // a pixel's id is record << triangleBits | triangle, triangleBits enough for the largest primitive.
 // A scene whose records and triangles do not fit in 32 bits cannot use it (problem() says so).
+//
+// The opaque triangles are drawn by the hardware (--raster hardware) or by compute passes that
+// follow the same rules (--raster compute, render/compute_raster.h); alpha-masked ones always by
+// the hardware.
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
+#include "render/compute_raster.h"
 #include "render/frame.h"
 
 namespace lll {
@@ -23,7 +29,11 @@ class VisibilityBuffer {
   // Why `scene` cannot use the visibility buffer on `context`'s device; empty when it can.
   static std::string problem(const Context& context, const GpuScene& scene);
 
-  VisibilityBuffer(Context& context, const GpuScene& scene);
+  // With `computeRaster`, opaque triangles are rasterized in compute into a width x height image
+  // (ComputeRaster::problem must be empty).
+  VisibilityBuffer(Context& context, const GpuScene& scene, bool computeRaster = false, uint32_t width = 0,
+                   uint32_t height = 0);
+  ~VisibilityBuffer();
 
   // After GpuScene::prepareFrame: this frame's surface records, draw commands and record bases.
   void prepareFrame(const GpuScene& scene);
@@ -36,12 +46,16 @@ class VisibilityBuffer {
   SpecializationConstants surfaceConstants(const GpuScene& scene) const;
   uint32_t triangleBits() const { return triangleBits_; }
   uint32_t recordCount() const { return recordCount_; }
+  bool computeRaster() const { return compute_ != nullptr; }
 
  private:
   struct MaskedDraw {
     uint32_t draw;  // index into GpuScene::draws()
     uint32_t recordBase;
   };
+
+  // The alpha-masked draws, one by one, into the bound attachments.
+  void drawMasked(VkCommandBuffer cmd, const FrameContext& frame) const;
 
   Context& context_;
   uint32_t triangleBits_ = 0;
@@ -56,6 +70,11 @@ class VisibilityBuffer {
   uint32_t doubleSided_ = 0;
   std::vector<MaskedDraw> maskedDraws_;
   uint32_t recordCount_ = 0;
+  uint32_t singleSidedRecords_ = 0;  // records of single-sided opaque primitives come first,
+  uint32_t opaqueRecords_ = 0;       // then double-sided ones, then masked ones
+  uint32_t triangleCount_ = 0;       // opaque triangles this frame (the compute rasterizer's work)  // opaque
+                                     // triangles this frame (the compute rasterizer's work)
+  std::unique_ptr<ComputeRaster> compute_;
 };
 
 }  // namespace lll

@@ -1,0 +1,58 @@
+#pragma once
+// The visibility buffer's opaque triangles rasterized in compute (--raster compute): on GPUs with
+// few graphics-capable units the hardware pass is fragment-bound, and a compute pass can do the
+// same work on every unit (Nanite and Schütz's point/triangle rasterizers use this shape).
+//
+// Three steps, each in the frame graph:
+//  - "visibility" (common/raster_triangles.comp): one invocation per triangle transforms, clips,
+//    culls and snaps it as the hardware would, then covers a small bounding box itself with a
+//    64-bit atomic max of (depth << 32 | id + 1) per pixel, or appends the triangle to a list;
+//    large ones are listed once and their slot appended to each 32x32-pixel bin they touch;
+//  - "visibility-resolve" (common/raster_resolve.comp): one invocation per pixel tests its bin's
+//    large triangles against its centre (a workgroup skips those missing its tile), keeps the
+//    nearest key, and writes the id image and a depth buffer;
+//  - the depth buffer is copied into the depth image that later passes test and sample.
+// Coverage follows Vulkan's rules (8 sub-pixel bits, top-left edges, counter-clockwise front
+// faces), so ids match the hardware pass pixel for pixel up to snapping ties. Alpha-masked
+// primitives still go through the hardware pass afterwards (they need their texture).
+#include <string>
+
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "render/frame.h"
+
+namespace lll {
+
+class ComputeRaster {
+ public:
+  // Why `context`'s device cannot rasterize a width x height image this way; empty when it can.
+  static std::string problem(const Context& context, uint32_t width, uint32_t height);
+
+  ComputeRaster(Context& context, uint32_t width, uint32_t height, uint32_t maxRecords,
+                uint32_t triangleBits);
+
+  // The first triangle of each opaque record this frame, written by VisibilityBuffer::prepareFrame:
+  // room for maxRecords + 1 entries.
+  uint32_t* triangleStarts() const { return static_cast<uint32_t*>(starts_.mapped()); }
+
+  // Rasterizes `triangles` triangles of `records` opaque records (the first `singleSided` of them
+  // back-face culled) into frame.targets.visibility and frame.targets.depth.
+  void record(FrameContext& frame, const Buffer& surfaceRecords, uint32_t records, uint32_t singleSided,
+              uint32_t triangles) const;
+
+ private:
+  Context& context_;
+  PipelineLayout layout_;
+  Pipeline triangles_;
+  Pipeline resolve_;
+  Buffer starts_;           // uint per record + 1, rewritten every frame
+  Buffer keys_;             // uint64 per pixel
+  Buffer large_;            // count, then RasterTriangle entries
+  Buffer bins_;             // per 32x32-pixel bin: its count of large triangles, then their slots
+  Buffer depth_;            // float per pixel, copied into the depth image
+  uint32_t largestOwnBox_;  // bounding boxes up to this many pixels are covered by their thread
+  uint32_t binsPerRow_ = 0;
+  uint32_t binCount_ = 0;
+};
+
+}  // namespace lll

@@ -1,0 +1,123 @@
+// The compute rasterizer (render/compute_raster.h) against the hardware pass it replaces: the same
+// frames, drawn with --raster compute and --raster hardware, must agree within a per-pixel bound
+// (kRasterBound: edge ties aside, identical). Cases that take each of its paths: small triangles
+// covered by their own thread, large ones listed per bin, bins that overflow, triangles clipped by
+// the near plane and the guard band, back faces of single-sided and double-sided primitives.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "render/compute_raster.h"
+#include "render/visibility.h"
+#include "scene/builtin_scenes.h"
+#include "scene/errors.h"
+#include "scene/scene_source.h"
+#include "test_support.h"
+
+namespace lll {
+namespace {
+
+// Renders with the given raster and checks that it is the one used.
+test::Rendered renderWith(const Scene& scene, RenderSettings settings, const std::string& raster) {
+  settings.raster = raster;
+  {
+    Renderer renderer(test::gpuContext(), scene, settings);
+    EXPECT_NE(renderer.visibility(), nullptr);
+    if (renderer.visibility())
+      EXPECT_EQ(renderer.visibility()->computeRaster(), raster == "compute") << raster;
+  }
+  return test::render(scene, settings);
+}
+
+void expectSameFrames(const Scene& scene, const RenderSettings& settings, const std::string& label) {
+  const test::Rendered hardware = renderWith(scene, settings, "hardware");
+  const test::Rendered compute = renderWith(scene, settings, "compute");
+  test::expectWithinBound(compute.ldr, hardware.ldr, test::kRasterBound, "compute raster " + label);
+}
+
+bool skipWithoutFeatures() {
+  return !ComputeRaster::problem(test::gpuContext(), 160, 90).empty();
+}
+
+struct RasterCase {
+  const char* scene;
+  const char* technique;
+  const char* camera;  // empty: the scene's own
+};
+
+class ComputeRasterFrames : public ::testing::TestWithParam<RasterCase> {};
+
+TEST_P(ComputeRasterFrames, MatchTheHardwarePass) {
+  if (skipWithoutFeatures()) GTEST_FAIL() << ComputeRaster::problem(test::gpuContext(), 160, 90);
+  const RasterCase& c = GetParam();
+  const std::string path = std::string(c.scene) == "atrium" || std::string(c.scene) == "plane"
+                               ? c.scene
+                               : std::string(LLL_ASSETS_DIR) + "/" + c.scene + "/" + c.scene + ".gltf";
+  const Scene scene = loadScene(SceneRequest{path, 16, 3});
+  RenderSettings settings;
+  settings.width = 160;
+  settings.height = 90;
+  settings.technique = c.technique;
+  settings.camera = c.camera;
+  expectSameFrames(scene, settings, std::string(c.scene) + " " + c.technique);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ComputeRasterFrames,
+                         ::testing::Values(RasterCase{"atrium", "lll", ""},
+                                           RasterCase{"atrium", "forward", ""}, RasterCase{"camp", "lll", ""},
+                                           RasterCase{"space", "forward", ""},
+                                           RasterCase{"garage", "lll", ""},
+                                           // Just above a floor that runs far behind the camera: its
+                                           // triangles cross the near plane and leave the guard band.
+                                           RasterCase{"plane", "forward", "0,0.05,0,3,0,-40"},
+                                           // Inside the atrium's colonnade: pillars cut by the near plane.
+                                           RasterCase{"atrium", "lll", "-7,1.2,0.3,8,2,0.3"}),
+                         [](const auto& info) {
+                           return std::string(info.param.scene) + "_" + info.param.technique +
+                                  (*info.param.camera ? "_near" : "");
+                         });
+
+// Every triangle listed for the per-pixel pass (a threshold of one pixel), so that bins fill and
+// overflow (a bin of the 64x36 frame gets far more than its 1,024 slots) and the whole list is
+// walked there.
+TEST(ComputeRaster, EveryTriangleThroughTheBinsStillMatches) {
+  if (skipWithoutFeatures()) GTEST_FAIL() << ComputeRaster::problem(test::gpuContext(), 160, 90);
+  const Scene scene = *makeBuiltinScene("atrium");
+  RenderSettings settings;
+  settings.width = 64;
+  settings.height = 36;
+  settings.technique = "forward";
+  const test::Rendered hardware = renderWith(scene, settings, "hardware");
+  setenv("LLL_RASTER_OWN_BOX", "1", 1);
+  const test::Rendered compute = renderWith(scene, settings, "compute");
+  unsetenv("LLL_RASTER_OWN_BOX");
+  test::expectWithinBound(compute.ldr, hardware.ldr, test::kRasterBound,
+                          "compute raster, all triangles binned");
+}
+
+TEST(ComputeRaster, TechniquesThatRedrawGeometryKeepTheHardwarePass) {
+  const Scene scene = *makeBuiltinScene("plane");
+  RenderSettings settings;
+  settings.width = 32;
+  settings.height = 18;
+  for (const char* technique : {"deferred", "prepass"}) {
+    settings.technique = technique;
+    settings.raster = "compute";
+    EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError) << technique;
+    settings.raster = "auto";
+    Renderer renderer(test::gpuContext(), scene, settings);
+    ASSERT_NE(renderer.visibility(), nullptr);
+    EXPECT_FALSE(renderer.visibility()->computeRaster()) << technique;
+  }
+  settings.technique = "lll";
+  settings.lllShade = "fragment";
+  settings.raster = "compute";
+  EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError);
+  settings.surfaces = "gbuffer";
+  settings.lllShade = "compute";
+  EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError);
+}
+
+}  // namespace
+}  // namespace lll
