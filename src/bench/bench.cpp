@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 
+#include "bench/alu_probe.h"
 #include "bench/progress.h"
 #include "lighting/technique.h"
 #include "particles/presets.h"
@@ -101,11 +102,14 @@ Measured measure(Context& context, const Scene& scene, const Scenario& s, FrameC
   Renderer renderer(context, scene, s.settings);
   // Particles start with none alive: time the plume at its steady state.
   if (renderer.particles()) renderer.advanceParticles(stepsToSteadyState(renderer.particles()->preset()));
+  std::optional<AluProbe> probe;
+  if (s.aluProbe) probe.emplace(context, scene, s.settings.width, s.settings.height);
   std::vector<FrameResult> timed;
   for (uint32_t i = 0; i < counts.warmup + counts.timed; ++i) {
     stopIfRequested();
     FrameResult frame = renderer.renderFrame(false);
     if (i == 0) requireParticlePass(s, frame);
+    if (probe) frame.passes.push_back(probe->run(uint32_t(scene.lights.size())));
     if (i >= counts.warmup) timed.push_back(std::move(frame));
   }
   r.passes = summarizePasses(timed);

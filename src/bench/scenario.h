@@ -16,6 +16,9 @@ struct Scenario {
   SceneRequest scene;
   RenderSettings settings;  // size, technique and its options, particles
   std::string skip;         // why the suite leaves it out (recorded, not run); empty to run it
+  // Also time the ALU roofline probe (bench/alu_probe.h) with every light at every pixel, after each
+  // timed frame: its pass "alu-probe" (where every light does reach every pixel, as in ThreeL's test).
+  bool aluProbe = false;
 };
 
 // The light linked list's variant: its fill, with "/gbuffer" when opaque surfaces come from the raster

@@ -85,6 +85,7 @@ std::vector<Scenario> threelSuite(const SuiteOptions& options) {
       Scenario base = makeScenario("threel", fmt::format("{} {}x{}", scene, size.width, size.height),
                                    SceneRequest{scene, 0, 1}, size);
       base.settings.tileSize = 8;
+      base.aluProbe = true;
       append(out, perTechnique(base, {"lll", "forward"}, true));
     }
   }

@@ -145,6 +145,26 @@ std::string forwardTable(const Results& results) {
          pivot(compared, forwardCell);
 }
 
+// Opaque shading against the ALU probe timed beside it (bench/alu_probe.h): how many times the
+// arithmetic of every light at every pixel it takes.
+std::string rooflineCell(const ScenarioResult& r) {
+  const PassSummary* shade = r.pass("shade-opaque");
+  const PassSummary* probe = r.pass("alu-probe");
+  if (!shade || !probe || probe->medianMs <= 0.0) return "";
+  return fmt::format("{:.2f}x ({:.3f} / {:.3f})", shade->medianMs / probe->medianMs, shade->medianMs,
+                     probe->medianMs);
+}
+
+std::string rooflineTable(const Results& results) {
+  Results probed;
+  for (const ScenarioResult* r : results)
+    if (r->status == Status::Ok && r->pass("alu-probe") && r->pass("shade-opaque")) probed.push_back(r);
+  if (probed.empty()) return "";
+  return "\nOpaque shading against the ALU-only probe (every light at every pixel, no list, no memory): "
+         "shade-opaque / alu-probe (ms / ms)\n\n" +
+         pivot(probed, rooflineCell);
+}
+
 std::string suiteSection(const std::string& suite, const Results& results, uint32_t frames) {
   std::string md = fmt::format("## {}\n\n", suite);
   md += fmt::format("Frame time, ms: median of {} timed frames (min–max)\n\n", frames) +
@@ -153,6 +173,7 @@ std::string suiteSection(const std::string& suite, const Results& results, uint3
         pivot(results, memoryCell);
   md += forwardTable(results);
   md += overdrawTable(results);
+  md += rooflineTable(results);
   md += "\nPer-pass GPU time, ms (median)\n\n" + passTable(results);
   const std::string skipped = notRun(results);
   return md + (skipped.empty() ? "" : "\n" + skipped) + "\n";

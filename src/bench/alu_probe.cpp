@@ -1,0 +1,72 @@
+#include "bench/alu_probe.h"
+
+#include <glm/glm.hpp>
+
+#include "gpu/context.h"
+#include "render/frame.h"
+#include "scene/scene.h"
+
+namespace lll {
+
+namespace {
+
+constexpr uint32_t kGroupSize = 8;  // alu_probe.comp's workgroup is 8x8
+
+// As lightTypeConstants (render/frame.h), from the scene itself.
+SpecializationConstants lightTypes(const Scene& scene) {
+  bool spots = false, boxes = false;
+  for (const Light& light : scene.lights) {
+    spots |= light.type == LightType::Spot;
+    boxes |= light.type == LightType::Box;
+  }
+  return {{30, spots ? 1u : 0u}, {31, boxes ? 1u : 0u}};
+}
+
+}  // namespace
+
+AluProbe::AluProbe(Context& context, const Scene& scene, uint32_t width, uint32_t height)
+    : context_(context),
+      width_(width),
+      height_(height),
+      layout_(context, {"bench/alu_probe.comp"}),
+      pipeline_(context, layout_, "bench/alu_probe.comp", lightTypes(scene)),
+      target_(context, width, height, kHdrFormat, VK_IMAGE_USAGE_STORAGE_BIT, "alu-probe"),
+      timer_(context) {}
+
+AluProbe::~AluProbe() {
+  vkDeviceWaitIdle(context_.device());
+}
+
+PassTime AluProbe::run(uint32_t lights) {
+  context_.submitAndWait([&](VkCommandBuffer cmd) {
+    timer_.reset(cmd);
+    // The target's contents never matter: from UNDEFINED every time, which also orders this
+    // run's writes after the last run's.
+    VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    barrier.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    barrier.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+    barrier.image = target_.handle();
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.imageMemoryBarrierCount = 1;
+    dependency.pImageMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+    ScopedPass pass(timer_, cmd, "alu-probe");
+    pipeline_.bind(cmd);
+    DescriptorWriter()
+        .image(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, target_.view(), VK_IMAGE_LAYOUT_GENERAL)
+        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+    const glm::uvec4 push(lights, width_, height_, 0);
+    vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+    vkCmdDispatch(cmd, divideRoundingUp(width_, kGroupSize), divideRoundingUp(height_, kGroupSize), 1);
+  });
+  for (const PassTime& p : timer_.read())
+    if (p.name == "alu-probe") return p;
+  return {"alu-probe", 0.0};
+}
+
+}  // namespace lll
