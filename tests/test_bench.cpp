@@ -215,6 +215,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
     EXPECT_EQ(r.status, built ? Status::Ok : Status::Skipped) << r.scenario.name << ": " << r.message;
     if (r.status != Status::Ok) continue;
     EXPECT_NE(r.pass("frame"), nullptr);
+    EXPECT_NE(r.pass("alu-probe"), nullptr) << "ThreeL's scenarios time the ALU roofline probe beside them";
     EXPECT_EQ(r.lightCount, r.scenario.scene.scene == "threel16" ? 16u : 256u);
     const std::string fill = bench::lllVariant(r.scenario.settings);
     if (technique == "lll") {
@@ -250,6 +251,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   EXPECT_NE(summary.find(context.info().name), std::string::npos);
   EXPECT_NE(summary.find("| forward |"), std::string::npos);
   EXPECT_NE(summary.find("Image against forward's frame"), std::string::npos);
+  EXPECT_NE(summary.find("Opaque shading against the ALU-only probe"), std::string::npos);
   if (gnuplotInstalled()) expectPng(dir / "threel.png");
   const auto messages = context.validationMessages();
   for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
