@@ -24,8 +24,9 @@ test::Rendered renderWith(const Scene& scene, RenderSettings settings, const std
   {
     Renderer renderer(test::gpuContext(), scene, settings);
     EXPECT_NE(renderer.visibility(), nullptr);
-    if (renderer.visibility())
+    if (renderer.visibility()) {
       EXPECT_EQ(renderer.visibility()->computeRaster(), raster == "compute") << raster;
+    }
   }
   return test::render(scene, settings);
 }
