@@ -3,6 +3,7 @@
 // (kRasterBound: edge ties aside, identical). Cases that take each of its paths: small triangles
 // covered by their own thread, large ones listed per bin, bins that overflow, triangles clipped by
 // the near plane and the guard band, back faces of single-sided and double-sided primitives.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -118,6 +119,28 @@ TEST(ComputeRaster, TechniquesThatRedrawGeometryKeepTheHardwarePass) {
   settings.surfaces = "gbuffer";
   settings.lllShade = "compute";
   EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError);
+}
+
+}  // namespace
+}  // namespace lll
+
+namespace lll {
+namespace {
+
+// 8 bytes of key per pixel: an image whose keys exceed the device's storage-buffer range is
+// refused with a message naming the size and the limit (lavapipe: 128 MiB, 4096x4096 at most).
+TEST(ComputeRaster, KeysBeyondTheStorageBufferLimitAreRefused) {
+  Context& context = test::gpuContext();
+  const VkDeviceSize limit = context.properties().limits.maxStorageBufferRange;
+  for (const uint32_t size : {1024u, 8192u}) {
+    const std::string problem = ComputeRaster::problem(context, size, size);
+    if (VkDeviceSize(size) * size * 8 > limit) {
+      EXPECT_NE(problem.find(fmt::format("{}x{}", size, size)), std::string::npos) << problem;
+      EXPECT_NE(problem.find("storage buffer limit"), std::string::npos) << problem;
+    } else if (context.computeRasterFeatures()) {
+      EXPECT_EQ(problem, "") << size;
+    }
+  }
 }
 
 }  // namespace
