@@ -201,8 +201,7 @@ Counts checkAgainstFormula(const Scene& scene, const PlaneMaterial& pm, const Li
   }
   std::printf("[ analytic ] %s: %d lit, %d dark pixels\n", path.name, counts.lit, counts.dark);
   EXPECT_EQ(failures, 0) << "pixels off the formula";
-  const auto messages = context.validationMessages();
-  for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
+  test::expectNoValidationMessagesSince(before);
   return counts;
 }
 

@@ -253,8 +253,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   EXPECT_NE(summary.find("Image against forward's frame"), std::string::npos);
   EXPECT_NE(summary.find("Opaque shading against the ALU-only probe"), std::string::npos);
   if (gnuplotInstalled()) expectPng(dir / "threel.png");
-  const auto messages = context.validationMessages();
-  for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
+  test::expectNoValidationMessagesSince(before);
   fs::remove_all(dir);
 }
 
@@ -281,8 +280,7 @@ TEST(BenchQuick, SmokeSuiteTimesTheParticlePasses) {
     EXPECT_GT(alive, 0.6 * r.scenario.settings.particleCount) << r.scenario.name;
     for (const auto& [key, value] : r.memory) EXPECT_FALSE(key.starts_with("particle")) << key;
   }
-  const auto messages = context.validationMessages();
-  for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
+  test::expectNoValidationMessagesSince(before);
 }
 
 ScenarioResult fakeResult(const std::string& suite, const std::string& name, const std::string& technique,

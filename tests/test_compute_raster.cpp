@@ -22,14 +22,12 @@ namespace {
 // Renders with the given raster and checks that it is the one used.
 test::Rendered renderWith(const Scene& scene, RenderSettings settings, const std::string& raster) {
   settings.raster = raster;
-  {
-    Renderer renderer(test::gpuContext(), scene, settings);
-    EXPECT_NE(renderer.visibility(), nullptr);
-    if (renderer.visibility()) {
-      EXPECT_EQ(renderer.visibility()->computeRaster(), raster == "compute") << raster;
-    }
+  Renderer renderer(test::gpuContext(), scene, settings);
+  EXPECT_NE(renderer.visibility(), nullptr);
+  if (renderer.visibility()) {
+    EXPECT_EQ(renderer.visibility()->computeRaster(), raster == "compute") << raster;
   }
-  return test::render(scene, settings);
+  return test::render(renderer);
 }
 
 void expectSameFrames(const Scene& scene, const RenderSettings& settings, const std::string& label) {

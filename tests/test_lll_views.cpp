@@ -37,8 +37,7 @@ ViewRender renderView(const Scene& scene, const std::string& view, const std::st
   Renderer renderer(context, scene, settings);
   renderer.renderFrame(true);
   ViewRender out{renderer.hdrImage(), readTileLightLists(renderer.technique())};
-  const auto messages = context.validationMessages();
-  for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
+  test::expectNoValidationMessagesSince(before);
   return out;
 }
 

@@ -37,19 +37,31 @@ struct Rendered {
   std::vector<std::pair<std::string, double>> stats;
 };
 
-// Renders one frame and fails the current test on any new validation message.
-inline Rendered render(const Scene& scene, const RenderSettings& settings) {
-  Context& context = gpuContext();
-  const size_t before = context.validationMessages().size();
-  Renderer renderer(context, scene, settings);
+// Fails the current test on each validation message of gpuContext() after the first `before`.
+inline void expectNoValidationMessagesSince(size_t before) {
+  const auto messages = gpuContext().validationMessages();
+  for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
+}
+
+// Renders one frame with `renderer` (made on gpuContext()) and fails the current test on any new
+// validation message.
+inline Rendered render(Renderer& renderer) {
+  const size_t before = gpuContext().validationMessages().size();
   Rendered out;
   out.frame = renderer.renderFrame(true);
   out.hdr = renderer.hdrImage();
   out.ldr = renderer.ldrImage();
   out.stats = renderer.technique().stats();
-  const auto messages = context.validationMessages();
-  for (size_t i = before; i < messages.size(); ++i) ADD_FAILURE() << messages[i];
+  expectNoValidationMessagesSince(before);
   return out;
+}
+
+// Renders one frame of a new Renderer, as render(Renderer&); its creation is checked too.
+inline Rendered render(const Scene& scene, const RenderSettings& settings) {
+  const size_t before = gpuContext().validationMessages().size();
+  Renderer renderer(gpuContext(), scene, settings);
+  expectNoValidationMessagesSince(before);
+  return render(renderer);
 }
 
 // The brute-force reference every technique is compared with: forward shading on the geometry

@@ -11,6 +11,13 @@ const int kSubPixelBits = 8;
 const uint kRasterBinSize = 32u;  // large triangles are listed per 32x32-pixel bin
 const int kSubPixel = 1 << kSubPixelBits;
 
+// Where entry k of `bin` sits in the bin buffer (per bin first a count, binsPerRow x bin rows of
+// them, then `capacity` entries per bin), for an image `height` pixels high.
+uint rasterBinEntry(uint binsPerRow, uint capacity, uint height, uint bin, uint k) {
+  uint bins = binsPerRow * ((height + kRasterBinSize - 1u) / kRasterBinSize);
+  return bins + bin * capacity + k;
+}
+
 // Pixel id and depth in one 64-bit key: the larger key is the nearer surface (reverse-Z), and 0
 // is "nothing drawn" (ids are never all ones, so id + 1 does not wrap).
 uint64_t rasterKey(float depth, uint id) {

@@ -40,7 +40,6 @@ void main() {
   uint64_t best = inImage ? keys[uint(pixel.y) * uint(size.x) + uint(pixel.x)] : 0ul;
   uvec2 binXY = gl_WorkGroupID.xy * 8u / kRasterBinSize;
   uint bin = binXY.y * raster.large.z + binXY.x;
-  uint binCount = raster.large.z * ((uint(size.y) + kRasterBinSize - 1u) / kRasterBinSize);
   uint listed = binData[bin];
   bool overflow = listed > raster.large.w;
   uint count = overflow ? min(largeCount, raster.large.x) : listed;
@@ -48,7 +47,9 @@ void main() {
     uint mine = first + gl_LocalInvocationIndex;
     if (mine < count)
       batch[gl_LocalInvocationIndex] =
-          largeTriangles[overflow ? mine : binData[binCount + bin * raster.large.w + mine]];
+          largeTriangles[overflow ? mine
+                                  : binData[rasterBinEntry(raster.large.z, raster.large.w, uint(size.y), bin,
+                                                           mine)]];
     barrier();
     uint n = min(64u, count - first);
     for (uint i = 0u; i < n; ++i) {

@@ -113,12 +113,12 @@ void rasterize(vec4 c0, vec4 c1, vec4 c2, uint id, bool cullBack) {
       largeTriangles[slot] =
           RasterTriangle(ivec4(v0, v1), ivec4(v2, int(id), int(topLeft)), vec4(z, 0.0), box);
       uvec4 bins = uvec4(box) / kRasterBinSize;
-      uint binCount = raster.large.z * ((uint(frame.viewport.y) + kRasterBinSize - 1u) / kRasterBinSize);
       for (uint by = bins.y; by <= bins.w; ++by) {
         for (uint bx = bins.x; bx <= bins.z; ++bx) {
           uint bin = by * raster.large.z + bx;
           uint k = atomicAdd(binData[bin], 1u);
-          if (k < raster.large.w) binData[binCount + bin * raster.large.w + k] = slot;
+          if (k < raster.large.w)
+            binData[rasterBinEntry(raster.large.z, raster.large.w, uint(frame.viewport.y), bin, k)] = slot;
         }
       }
       return;

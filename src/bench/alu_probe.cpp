@@ -12,16 +12,6 @@ namespace {
 
 constexpr uint32_t kGroupSize = 8;  // alu_probe.comp's workgroup is 8x8
 
-// As lightTypeConstants (render/frame.h), from the scene itself.
-SpecializationConstants lightTypes(const Scene& scene) {
-  bool spots = false, boxes = false;
-  for (const Light& light : scene.lights) {
-    spots |= light.type == LightType::Spot;
-    boxes |= light.type == LightType::Box;
-  }
-  return {{30, spots ? 1u : 0u}, {31, boxes ? 1u : 0u}};
-}
-
 }  // namespace
 
 AluProbe::AluProbe(Context& context, const Scene& scene, uint32_t width, uint32_t height)
@@ -29,7 +19,7 @@ AluProbe::AluProbe(Context& context, const Scene& scene, uint32_t width, uint32_
       width_(width),
       height_(height),
       layout_(context, {"bench/alu_probe.comp"}),
-      pipeline_(context, layout_, "bench/alu_probe.comp", lightTypes(scene)),
+      pipeline_(context, layout_, "bench/alu_probe.comp", lightTypeConstants(scene)),
       target_(context, width, height, kHdrFormat, VK_IMAGE_USAGE_STORAGE_BIT, "alu-probe"),
       timer_(context) {}
 

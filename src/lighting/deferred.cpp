@@ -151,16 +151,13 @@ class Deferred final : public Technique {
           beginRendering(cmd, t.width, t.height, {{accumulation(t).view(), false}}, t.depth.view(),
                          VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
           DescriptorWriter writer;
-          writer.storage(0, frame.uniformBuffer.handle())
-              .storage(1, frame.scene.lightBuffer().handle())
-              .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(),
-                     VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+          writer
               .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target0().view(),
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
               .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-          volumes_.addBindings(writer).push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                            lightLayout_.handle());
+          volumes_.addBindings(writer, frame)
+              .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lightLayout_.handle());
           volumes_.bindGeometry(cmd);
           lightFragments_.begin(cmd);
           for (const VolumeRun& run : volumes_.runs()) {

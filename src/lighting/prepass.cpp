@@ -243,14 +243,10 @@ class Prepass final : public Technique {
                            cmd, t, {{diffuse_.view(), true}, {specular_.view(), true}}, depthStencil_.view(),
                            VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, false);
                        DescriptorWriter writer;
-                       writer.storage(0, frame.uniformBuffer.handle())
-                           .storage(1, frame.scene.lightBuffer().handle())
-                           .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(),
-                                  VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-                           .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, normals_.view(),
-                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-                       volumes_.addBindings(writer).push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                                         lightLayout_.handle());
+                       writer.image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, normals_.view(),
+                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+                       volumes_.addBindings(writer, frame)
+                           .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lightLayout_.handle());
                        volumes_.bindGeometry(cmd);
                        counts_ = {};
                        for (const VolumeRun& run : volumes_.runs()) drawRun(cmd, run);

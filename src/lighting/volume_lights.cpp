@@ -8,6 +8,8 @@
 
 #include "gpu/context.h"
 #include "lighting/light_volumes.h"
+#include "render/frame.h"
+#include "render/gpu_scene.h"
 
 namespace lll {
 
@@ -156,8 +158,12 @@ std::vector<VolumeRun> LightVolumeDraws::runs() const {
   return runs;
 }
 
-DescriptorWriter& LightVolumeDraws::addBindings(DescriptorWriter& writer) const {
-  return writer.storage(3, volumes_.handle());
+DescriptorWriter& LightVolumeDraws::addBindings(DescriptorWriter& writer, const FrameContext& frame) const {
+  return writer.storage(0, frame.uniformBuffer.handle())
+      .storage(1, frame.scene.lightBuffer().handle())
+      .storage(3, volumes_.handle())
+      .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, frame.targets.depth.view(),
+             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL);
 }
 
 void LightVolumeDraws::bindGeometry(VkCommandBuffer cmd) const {

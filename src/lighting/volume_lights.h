@@ -18,11 +18,12 @@
 namespace lll {
 
 class Context;
+struct FrameContext;
 
 enum class VolumeShape : uint32_t { Sphere, Cone };
 
 // Set 0 of a light-volume pass (shaders/lighting/light_volume.glsl): frame uniforms (0), lights (1),
-// the placed volumes (3, written by addBindings), the prepass depth (5), and up to two of the
+// the placed volumes (3), the depth (5), all written by addBindings, and up to two of the
 // technique's own screen targets (6, 7: deferred's G-buffer, prepass's normals).
 inline const std::initializer_list<Binding> kLightVolumeBindings = {
     {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -80,7 +81,8 @@ class LightVolumeDraws {
   const LightVolumeCounts& counts() const { return counts_; }
   std::vector<VolumeRun> runs() const;
 
-  DescriptorWriter& addBindings(DescriptorWriter& writer) const;
+  // The bindings every light-volume pass shares (0, 1, 3, 5 of kLightVolumeBindings) for `frame`.
+  DescriptorWriter& addBindings(DescriptorWriter& writer, const FrameContext& frame) const;
   void bindGeometry(VkCommandBuffer cmd) const;
   // Draws volumes [first, first + count) of prepare()'s list, which must all have `shape`.
   void draw(VkCommandBuffer cmd, VolumeShape shape, uint32_t first, uint32_t count) const;

@@ -64,8 +64,12 @@ void drawSceneIntoHdr(FrameContext& frame, const Pipeline& pipeline, const Pipel
 }
 
 SpecializationConstants lightTypeConstants(const GpuScene& scene) {
+  return lightTypeConstants(scene.scene());
+}
+
+SpecializationConstants lightTypeConstants(const Scene& scene) {
   bool spots = false, boxes = false;
-  for (const Light& light : scene.scene().lights) {
+  for (const Light& light : scene.lights) {
     spots |= light.type == LightType::Spot;
     boxes |= light.type == LightType::Box;
   }

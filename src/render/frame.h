@@ -81,6 +81,7 @@ PipelineLayout meshPassLayout(Context& context, const GpuScene& scene);
 
 // The specialization constants of common/brdf.glsl: whether the scene has spot and box lights, so a
 // pass can compile the other light types' branches out of its light evaluation.
+SpecializationConstants lightTypeConstants(const Scene& scene);
 SpecializationConstants lightTypeConstants(const GpuScene& scene);
 
 inline uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) {
