@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <vector>
 
@@ -45,8 +45,9 @@ void dumpImages(const std::string& label, const LdrImage& candidate, const LdrIm
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
   LdrImage diff = candidate;
   for (size_t i = 0; i < diff.rgba.size(); ++i)
-    diff.rgba[i] = i % 4 == 3 ? 255
-                              : uint8_t(std::min(255, 16 * std::abs(int(candidate.rgba[i]) - int(reference.rgba[i]))));
+    diff.rgba[i] =
+        i % 4 == 3 ? 255
+                   : uint8_t(std::min(255, 16 * std::abs(int(candidate.rgba[i]) - int(reference.rgba[i]))));
   std::filesystem::create_directories(dir);
   writePng(std::filesystem::path(dir) / (name + "-candidate.png"), candidate);
   writePng(std::filesystem::path(dir) / (name + "-reference.png"), reference);

@@ -18,7 +18,8 @@ bool anyNotFinite(vec3 v) {
 // Radiance read from an fp16 target, with an overflowed (infinite) channel taken as the largest
 // finite value, so that later arithmetic (Inf / Inf, Inf * 0) cannot make a NaN of it.
 vec3 finiteRadiance(vec3 c) {
-  return vec3(notFinite(c.x) ? kHalfMax : c.x, notFinite(c.y) ? kHalfMax : c.y, notFinite(c.z) ? kHalfMax : c.z);
+  return vec3(notFinite(c.x) ? kHalfMax : c.x, notFinite(c.y) ? kHalfMax : c.y,
+              notFinite(c.z) ? kHalfMax : c.z);
 }
 
 #endif

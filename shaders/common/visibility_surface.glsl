@@ -113,7 +113,8 @@ SurfaceGeometry surfaceGeometry(uvec2 pixel, SurfaceRecord record, uint triangle
   g.d.duvy = dby.x * du1 + dby.y * du2;
   g.uv = v0.uv + b.x * du1 + b.y * du2;
   float w0 = 1.0 - b.x - b.y;
-  mat3 normalMatrix = mat3(instance.normalMatrix[0].xyz, instance.normalMatrix[1].xyz, instance.normalMatrix[2].xyz);
+  mat3 normalMatrix =
+      mat3(instance.normalMatrix[0].xyz, instance.normalMatrix[1].xyz, instance.normalMatrix[2].xyz);
   g.normal = normalMatrix * (w0 * v0.normal + b.x * v1.normal + b.y * v2.normal);
   mat3 linear = mat3(instance.model);
   vec3 objectTangent = w0 * v0.tangent.xyz + b.x * v1.tangent.xyz + b.y * v2.tangent.xyz;

@@ -30,12 +30,12 @@ void main() {
   // below cannot become Inf / Inf.
   vec3 diffuseSum = finiteRadiance(texelFetch(diffuseLight, pixel, 0).rgb);
   vec4 specularSums = texelFetch(specularLight, pixel, 0);
-  specularSums = vec4(finiteRadiance(specularSums.rgb), notFinite(specularSums.a) ? kHalfMax : specularSums.a);
+  specularSums =
+      vec4(finiteRadiance(specularSums.rgb), notFinite(specularSums.a) ? kHalfMax : specularSums.a);
   vec3 diffuse = (1.0 - s.metallic) * (1.0 - kDielectricF0) * s.baseColor / kPi * diffuseSum;
   float specularMean = (specularSums.r + specularSums.g + specularSums.b) / 3.0;
-  vec3 metalCorrection = specularMean > 0.0
-                             ? specularSums.rgb * (specularSums.a / (kMetalTermScale * specularMean))
-                             : vec3(0.0);
+  vec3 metalCorrection =
+      specularMean > 0.0 ? specularSums.rgb * (specularSums.a / (kMetalTermScale * specularMean)) : vec3(0.0);
   vec3 specular = max(specularSums.rgb - (1.0 - s.baseColor) * metalCorrection, vec3(0.0));
   outColor = vec4(ambientAndEmissive(s) + diffuse + specular, 1.0);
 }

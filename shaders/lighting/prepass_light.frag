@@ -55,9 +55,9 @@ LightTerms lightTerms(LightVolume volume, ivec2 pixel) {
               visibilitySmithGgxCorrelated(nDotL, nDotV, alphaRoughness);
   float c = storedF0(stored.metallic);
   terms.diffuse = vec4(irradiance * (1.0 - fresnelWeight), 0.0);
-  terms.specular = vec4(lobe * (c + (1.0 - c) * fresnelWeight),
-                        stored.metallic * (1.0 - fresnelWeight) * (lobe.r + lobe.g + lobe.b) *
-                            (kMetalTermScale / 3.0));
+  terms.specular =
+      vec4(lobe * (c + (1.0 - c) * fresnelWeight),
+           stored.metallic * (1.0 - fresnelWeight) * (lobe.r + lobe.g + lobe.b) * (kMetalTermScale / 3.0));
   return terms;
 }
 

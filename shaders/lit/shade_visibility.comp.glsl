@@ -23,7 +23,8 @@ vec3 lightFromChunks(Surface s, bool covered) {
   uint lightCount = frame.counts.x;
   for (uint first = 0u; first < lightCount; first += kLightsPerChunk) {
     uint count = min(kLightsPerChunk, lightCount - first);
-    if (gl_LocalInvocationIndex < count) chunkLights[gl_LocalInvocationIndex] = lights[first + gl_LocalInvocationIndex];
+    if (gl_LocalInvocationIndex < count)
+      chunkLights[gl_LocalInvocationIndex] = lights[first + gl_LocalInvocationIndex];
     barrier();
     if (covered)
       for (uint i = 0u; i < count; ++i) sum += evaluateLight(chunkLights[i], s);

@@ -46,7 +46,8 @@ void main() {
   vec3 normal =
       normalize(cameraRight() * inOffset.x + cameraUp() * inOffset.y + cameraBack() * sqrt(1.0 - r2));
   vec3 towardEye = normalize(frame.cameraPosition.xyz - inWorldPosition);
-  radiance += inAlbedoOpacity.rgb * scatterLights(inWorldPosition, normal, towardEye, uvec2(gl_FragCoord.xy), depth);
+  radiance +=
+      inAlbedoOpacity.rgb * scatterLights(inWorldPosition, normal, towardEye, uvec2(gl_FragCoord.xy), depth);
 #endif
   outColor = vec4(radiance * alpha, alpha * (1.0 - system.blend.x));
 }

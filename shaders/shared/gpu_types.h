@@ -36,10 +36,10 @@ LLL_CHECK_SIZE(FrameUniforms, 4 * 64 + 6 * 16);
 // A metallic-roughness material (glTF 2.0).
 struct GpuMaterial {
   vec4 baseColorFactor;
-  vec4 emissive;  // rgb emissive factor * KHR_materials_emissive_strength, w unused
-  vec4 params;    // x metallic, y roughness, z normal scale, w occlusion strength
-  uvec4 flags;    // x alpha mode, y double sided, z kMaterial*Texture bits, w occlusion texture
-  vec4 alpha;     // x alpha cutoff, yzw unused
+  vec4 emissive;   // rgb emissive factor * KHR_materials_emissive_strength, w unused
+  vec4 params;     // x metallic, y roughness, z normal scale, w occlusion strength
+  uvec4 flags;     // x alpha mode, y double sided, z kMaterial*Texture bits, w occlusion texture
+  vec4 alpha;      // x alpha cutoff, yzw unused
   uvec4 textures;  // in GpuScene's texture table (the visibility path): x base colour,
                    // y metallic-roughness, z normal, w emissive; flags.w the occlusion texture
 };

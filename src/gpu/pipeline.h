@@ -130,7 +130,8 @@ class DescriptorWriter {
   void push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, VkPipelineLayout layout);
   // Pushes the writes `layout`'s set 0 has a binding for and drops the others: passes share
   // writers (frame, lists, surfaces) while each reflected layout has only what its shaders use.
-  void push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const PipelineLayout& layout);
+  void push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
+            const PipelineLayout& layout);
 
  private:
   struct Entry {

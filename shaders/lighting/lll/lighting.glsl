@@ -30,7 +30,8 @@ vec3 boundsView(Surface s, uvec2 pixel, float viewDepth) {
   while (nextLight(cursor, index)) {
     listed = true;
     GpuLight light = lights[index];
-    if (any(greaterThan(evaluateLight(light, s), vec3(0.0)))) reached = max(reached, light.colorIntensity.rgb);
+    if (any(greaterThan(evaluateLight(light, s), vec3(0.0))))
+      reached = max(reached, light.colorIntensity.rgb);
   }
   return any(greaterThan(reached, vec3(0.0))) ? reached : (listed ? vec3(0.25) : vec3(0.0));
 }
