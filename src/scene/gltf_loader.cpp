@@ -5,6 +5,7 @@
 
 // Before the implementation macros: it includes tiny_gltf.h, whose implementation must come once.
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_files.h"
 #include "scene/gltf_numbers.h"
 #include "scene/gltf_schema.h"
 
@@ -16,10 +17,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -29,7 +28,6 @@
 #include <numeric>
 #include <optional>
 #include <set>
-#include <string_view>
 #include <type_traits>
 #include <utility>
 
@@ -40,12 +38,17 @@ namespace lll {
 namespace {
 
 using gltf_detail::Components;
+using gltf_detail::FileAccess;
+using gltf_detail::fileExistsBesideGltf;
+using gltf_detail::jsonNestingWithinLimit;
+using gltf_detail::keepPath;
+using gltf_detail::kMaxJsonNesting;
+using gltf_detail::looksLikeJsonObject;
+using gltf_detail::oneLine;
+using gltf_detail::readFileBytes;
+using gltf_detail::readWholeFile;
+using gltf_detail::refuseWrite;
 
-// tinygltf passes buffer and chunk sizes around as 32-bit ints.
-constexpr uint64_t kMaxFileBytes = std::numeric_limits<int32_t>::max();
-// tinygltf copies "extras" and "extensions" into its own tree recursively: bounding the nesting
-// keeps a hostile file from overflowing the stack. Real glTF files nest well under 20 deep.
-constexpr int kMaxJsonNesting = 128;
 // Beyond what any GPU we target samples; stops a forged image header from asking for gigabytes.
 constexpr int kMaxTextureSide = 16384;
 
@@ -56,70 +59,6 @@ const std::set<std::string> kIgnorableRequiredExtensions = {"KHR_texture_transfo
 
 std::string inQuotes(const std::string& name) {
   return "'" + name + "'";
-}
-
-// Reads a whole file for us and for tinygltf (its .bin and image references), with the size bound
-// and error text we want. Returns false with `error` set when the file cannot be used.
-bool readFileBytes(const std::filesystem::path& path, std::vector<unsigned char>& bytes, std::string& error) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) {
-    error = "file not found";
-    return false;
-  }
-  if (!std::filesystem::is_regular_file(status)) {
-    error = "not a regular file";
-    return false;
-  }
-  const uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) {
-    error = ec.message();
-    return false;
-  }
-  if (size == 0) {
-    error = "file is empty";
-    return false;
-  }
-  if (size > kMaxFileBytes) {
-    error = "file is larger than 2 GiB";
-    return false;
-  }
-  std::ifstream in(path, std::ios::binary);
-  bytes.resize(size_t(size));
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
-    error = "read error (permissions?)";
-    return false;
-  }
-  return true;
-}
-
-// tinygltf looks for referenced files in the glTF's folder, then in the working directory. We
-// accept only the glTF's folder, so whether a .bin is found does not depend on where we run.
-struct FileAccess {
-  std::string baseDir;
-};
-
-bool fileExistsBesideGltf(const std::string& path, void* user) {
-  const auto* access = static_cast<const FileAccess*>(user);
-  std::error_code ec;
-  return path.compare(0, access->baseDir.size(), access->baseDir) == 0 &&
-         std::filesystem::is_regular_file(path, ec);
-}
-
-std::string keepPath(const std::string& path, void*) {
-  return path;
-}
-
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
-  std::string error;
-  if (readFileBytes(path, *out, error)) return true;
-  *err += path + ": " + error + "\n";
-  return false;
-}
-
-bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-  *err += "writing is not supported\n";
-  return false;
 }
 
 // tinygltf's image callback. We only keep the encoded bytes and decode later, for the images a
@@ -135,52 +74,6 @@ bool hasZeroNormal(const std::vector<float>& normals) {
   for (size_t i = 0; i + 2 < normals.size(); i += 3)
     if (glm::length(glm::make_vec3(&normals[i])) < 1e-6f) return true;
   return false;
-}
-
-bool looksLikeJsonObject(const std::vector<unsigned char>& bytes) {
-  size_t i = bytes.size() >= 3 && std::memcmp(bytes.data(), "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;  // UTF-8 BOM
-  while (i < bytes.size() && std::isspace(bytes[i])) ++i;
-  return i < bytes.size() && bytes[i] == '{';
-}
-
-// False when the JSON nests deeper than kMaxJsonNesting. Counts only brackets outside strings.
-bool jsonNestingWithinLimit(const unsigned char* text, size_t size) {
-  int depth = 0;
-  bool inString = false;
-  bool escaped = false;
-  for (size_t i = 0; i < size; ++i) {
-    const char c = char(text[i]);
-    if (inString) {
-      if (escaped) {
-        escaped = false;
-      } else if (c == '\\') {
-        escaped = true;
-      } else if (c == '"') {
-        inString = false;
-      }
-    } else if (c == '"') {
-      inString = true;
-    } else if (c == '[' || c == '{') {
-      if (++depth > kMaxJsonNesting) return false;
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-  return true;
-}
-
-// tinygltf's error text on one line, in printable ASCII (parse errors quote the raw bytes they met).
-std::string oneLine(std::string text) {
-  while (!text.empty() && std::string_view("\n\r .").find(text.back()) != std::string_view::npos)
-    text.pop_back();
-  for (char& c : text) {
-    if (c == '\n') {
-      c = ';';
-    } else if (c < ' ' || c > '~') {
-      c = '?';
-    }
-  }
-  return text;
 }
 
 glm::vec3 unitOr(const glm::dvec3& v, const glm::vec3& fallback) {
