@@ -12,6 +12,7 @@
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "gpu/vk_check.h"
+#include "lighting/light_bins.h"
 #include "lighting/light_volumes.h"
 #include "particles/particle_system.h"
 #include "render/renderer.h"
@@ -47,6 +48,9 @@ const std::initializer_list<Binding> kBindings = {
     {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
     {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kAllStages},
     {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
+    {13, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
 };
 
 LllFill parseFill(const std::string& name) {
@@ -153,6 +157,8 @@ class LightLinkedList final : public Technique {
   Buffer tileDepth_;
   Buffer bounds_;
   Buffer shellOrder_;
+  // The compute fill's first level; its cells' far depths are written by the tile-depth pass.
+  LightBins bins_;
   // shellOrder_ holds sphere-filled lights, then cone-filled ones, then boxes: shape s fills
   // shellOrder_[shapeStart_[s], shapeStart_[s + 1]).
   uint32_t shapeStart_[kShellShapes + 1] = {};
@@ -192,6 +198,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   maxPoolLinks_ = context.properties().limits.maxStorageBufferRange / linkBytes_;
   if (linkFormat_ == gpu::kLinkCompact)
     maxPoolLinks_ = std::min<uint64_t>(maxPoolLinks_, gpu::kCompactLinkEnd);
+  bins_ = LightBins(context, tilesX_, tilesY_, tile, scene.lightCount());
   createBuffers();
   createPipelines();
   if (fill_ != LllFill::Compute) createShells(scene);
@@ -282,6 +289,7 @@ DescriptorWriter LightLinkedList::descriptors(const FrameContext& frame) const {
   lighting().bind(writer);
   if (bounds_) writer.storage(8, bounds_.handle());
   if (shellOrder_) writer.storage(10, shellOrder_.handle());
+  bins_.bind(writer);
   return writer;
 }
 
@@ -291,10 +299,12 @@ void LightLinkedList::buildLightData(FrameContext& frame) {
   uniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
   measured_ = frame.capture;
   clear(frame);
+  if (fill_ == LllFill::Compute) bins_.clear(frame);
   reduceTileDepth(frame);
-  if (fill_ == LllFill::Compute)
+  if (fill_ == LllFill::Compute) {
+    bins_.build(frame);
     fillCompute(frame);
-  else
+  } else
     fillRaster(frame);
   if (frame.capture) measureLists(frame);
   // afterFrame reads the link counter (overflow) and the statistics.
@@ -327,7 +337,8 @@ void LightLinkedList::reduceTileDepth(FrameContext& frame) {
   constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   frame.graph.pass(
       "lll-tile-depth",
-      {uses(frame.targets.depth, Use::Sampled, kCompute), uses(tileDepth_, Use::StorageWrite, kCompute)},
+      {uses(frame.targets.depth, Use::Sampled, kCompute), uses(tileDepth_, Use::StorageWrite, kCompute),
+       bins_.farDepthWrite(kCompute)},
       [&](VkCommandBuffer cmd) {
         tileDepthPipeline_.bind(cmd);
         // Only this pass samples the depth buffer: binding it while shading reads it as an
@@ -348,6 +359,10 @@ std::vector<ResourceUse> LightLinkedList::fillUses(VkPipelineStageFlags2 stages)
       uses(links_, Use::StorageWrite, stages), uses(counters_, Use::StorageReadWrite, stages)};
   if (bounds_) out.push_back(uses(bounds_, Use::StorageReadWrite, stages));
   if (shellOrder_) out.push_back(uses(shellOrder_, Use::StorageRead, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT));
+  if (fill_ == LllFill::Compute) {
+    const std::vector<ResourceUse> binned = bins_.reads(stages);
+    out.insert(out.end(), binned.begin(), binned.end());
+  }
   return out;
 }
 
@@ -424,6 +439,9 @@ void LightLinkedList::measureLists(FrameContext& frame) {
 }
 
 bool LightLinkedList::afterFrame() {
+  // Bins that overflowed left lights out of the fill: draw again with room for them (the pool's
+  // count of that frame is not the one it needs).
+  if (fill_ == LllFill::Compute && bins_.afterFrame()) return true;
   std::memcpy(&lastCounters_, counters_.mapped(), sizeof(lastCounters_));
   countersValid_ = true;
   const uint64_t requested = lastCounters_.linksRequested;
@@ -454,6 +472,10 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
       {"tiles", double(tiles_)},
   };
   if (bounds_) s.push_back({"bounds_bytes", double(bounds_.size())});
+  if (fill_ == LllFill::Compute) {
+    const auto binned = bins_.stats();
+    s.insert(s.end(), binned.begin(), binned.end());
+  }
   if (measured_ && countersValid_) {
     s.push_back({"longest_list", double(lastCounters_.longestList)});
     s.push_back({"mean_list", double(lastCounters_.totalListLength) /

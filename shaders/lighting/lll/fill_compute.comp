@@ -1,13 +1,16 @@
 #version 460
 #define LLL_FILL_PASS
-// The fill with no rasterizer. One workgroup covers 8x8 tiles: its threads first test 64 lights at a
-// time against the group's whole volume and gather the survivors in shared memory, then each thread
+// The fill with no rasterizer. One workgroup covers 8x8 tiles, one cell of the light bins
+// (common/light_bins.glsl), and reads only the lights binned there: the fill costs about what the
+// lights cover on screen, not tiles x lights. Its threads first test 64 of them at a time against
+// the group's whole volume and gather the survivors in shared memory, then each thread
 // tests those against its own tile exactly (sphere to tile-volume distance, shared/lll_types.h).
 // Spots and boxes add a conservative shape test (the cone or box against a sphere bounding the part
 // of the tile volume within the light's depth range).
 // Each thread owns its tile's list, so links need no atomic exchange at the head, and the group
 // allocates all its links of a batch with one atomic on the global counter (shared-memory offsets
 // within the group) instead of one per link: 16 full-screen lights at 1080p are 518,400 links.
+#include "common/light_bins.glsl"
 #include "lighting/lll/light_shape.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -90,16 +93,16 @@ void main() {
   barrier();
   float groupFar = uintBitsToFloat(groupFarBits);
 
-  uint lightCount = frame.counts.x;
+  uvec2 binned = binRange(gl_WorkGroupID.y * binHeader.cellsX + gl_WorkGroupID.x);
   uint head = kLinkEnd;
-  for (uint base = 0u; base < lightCount; base += 64u) {
+  for (uint base = 0u; base < binned.y; base += 64u) {
     if (gl_LocalInvocationIndex == 0u) {
       candidateCount = 0u;
       groupLinks = 0u;
     }
     barrier();
-    uint index = base + gl_LocalInvocationIndex;
-    if (index < lightCount) {
+    if (base + gl_LocalInvocationIndex < binned.y) {
+      uint index = binLights[binned.x + base + gl_LocalInvocationIndex];
       GpuLight light = lights[index];
       if (lightTouches(light, toViewDepthSpace(light.positionRange.xyz), groupSlopes, zNear, groupFar))
         candidates[atomicAdd(candidateCount, 1u)] = index;

@@ -1,0 +1,78 @@
+// The coarse light bins (shared/light_bins_types.h): bindings 11 to 13 of a list build's set 0, and
+// the cell rectangle a light's bounding sphere covers on screen.
+#ifndef LLL_LIGHT_BINS_GLSL
+#define LLL_LIGHT_BINS_GLSL
+#include "common/frame.glsl"
+#include "shared/light_bins_types.h"
+
+#ifdef LLL_BINS_WRITE
+#define LLL_BINS_ACCESS
+#else
+#define LLL_BINS_ACCESS readonly
+#endif
+
+layout(std430, set = 0, binding = 11) LLL_BINS_ACCESS buffer BinHeaderBlock {
+  LightBinHeader binHeader;
+};
+// Written by the tile-depth pass (farBits) and the bins' own passes, read by the list builds.
+layout(std430, set = 0, binding = 12) buffer BinCellBlock {
+  LightBinCell binCells[];
+};
+layout(std430, set = 0, binding = 13) LLL_BINS_ACCESS buffer BinLightBlock {
+  uint binLights[];
+};
+
+// The range of binLights holding cell `cell`'s lights (clamped to the capacity: past it the frame
+// is drawn again with more room, see LightBins::afterFrame).
+uvec2 binRange(uint cell) {
+  uint first = min(binCells[cell].first, binHeader.capacity);
+  return uvec2(first, min(binCells[cell].count, binHeader.capacity - first));
+}
+
+// Pixel x of view-ray slope u (x / z), pixel y of slope v (y / z, y up).
+float pixelOfSlopeX(float u) {
+  return (u / frame.depthParams.z + 1.0) * 0.5 * frame.viewport.x;
+}
+float pixelOfSlopeY(float v) {
+  return (1.0 - v / frame.depthParams.w) * 0.5 * frame.viewport.y;
+}
+
+// The slopes of the two planes through the eye tangent to a circle of `radius` at (coord, z) with
+// z > radius > 0: where the sphere's silhouette lies along one screen axis.
+vec2 tangentSlopes(float coord, float z, float radius) {
+  float t = sqrt(max(coord * coord + z * z - radius * radius, 0.0));
+  float d = z * z - radius * radius;
+  return vec2(coord * z - radius * t, coord * z + radius * t) / d;
+}
+
+// Cells (first xy, last zw, inclusive) covered by the sphere at view-depth-space `center` (z in
+// front of the eye) with `radius`; false when it is wholly behind the near plane or off screen.
+// A sphere crossing the near plane covers the whole screen (conservative).
+bool sphereCells(vec3 center, float radius, out uvec4 cells) {
+  cells = uvec4(0u);
+  float zNear = frame.depthParams.x;
+  if (center.z + radius < zNear) return false;
+  uvec2 last = uvec2(binHeader.cellsX, binHeader.cellsY) - 1u;
+  if (center.z - radius <= zNear) {
+    cells = uvec4(0u, 0u, last);
+    return true;
+  }
+  vec2 u = tangentSlopes(center.x, center.z, radius);
+  vec2 v = tangentSlopes(center.y, center.z, radius);
+  // One pixel of margin for rounding; y flips (slope up = pixel down).
+  vec4 pixels = vec4(pixelOfSlopeX(u.x) - 1.0, pixelOfSlopeY(v.y) - 1.0, pixelOfSlopeX(u.y) + 1.0,
+                     pixelOfSlopeY(v.x) + 1.0);
+  if (pixels.z < 0.0 || pixels.w < 0.0 || pixels.x >= frame.viewport.x || pixels.y >= frame.viewport.y)
+    return false;
+  vec4 c = floor(max(pixels, vec4(0.0)) / float(binHeader.cellPixels));
+  cells = uvec4(min(uvec2(c.xy), last), min(uvec2(c.zw), last));
+  return true;
+}
+
+// View-depth-space centre (z in front of the eye, y up) of a world-space point.
+vec3 binViewPoint(vec3 world) {
+  vec3 v = (frame.view * vec4(world, 1.0)).xyz;
+  return vec3(v.x, v.y, -v.z);
+}
+
+#endif

@@ -1,0 +1,130 @@
+#include "lighting/light_bins.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "gpu/context.h"
+#include "scene/errors.h"
+#include "shared/limits.h"
+
+namespace lll {
+
+namespace {
+// Initial entries per cell and growth past a request, so a slowly growing scene re-renders rarely.
+constexpr uint64_t kInitialEntriesPerCell = 64;
+constexpr double kGrowth = 1.25;
+constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+}  // namespace
+
+LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_t tileSize,
+                     uint32_t lightCount)
+    : context_(&context) {
+  header_.cellsX = divideRoundingUp(tilesX, gpu::kTileGroupSize);
+  header_.cellsY = divideRoundingUp(tilesY, gpu::kTileGroupSize);
+  header_.cellPixels = tileSize * gpu::kTileGroupSize;
+  header_.lightCount = lightCount;
+  maxEntries_ = context.properties().limits.maxStorageBufferRange / 4;
+  const uint64_t cells = uint64_t(header_.cellsX) * header_.cellsY;
+  headerBuffer_ = Buffer(context, sizeof(gpu::LightBinHeader), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                                   VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                         MemoryUse::Readback, "light bins header");
+  cells_ = Buffer(context, cells * sizeof(gpu::LightBinCell),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device,
+                  "light bins cells");
+  allocate(std::min(maxEntries_, std::max<uint64_t>(cells * kInitialEntriesPerCell, lightCount)));
+  layout_ = PipelineLayout(context, {"lighting/bins/bin_lights.comp", "lighting/bins/bin_scan.comp"});
+  count_ = Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}});
+  scatter_ = Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 1}});
+  scan_ = Pipeline(context, layout_, "lighting/bins/bin_scan.comp");
+}
+
+void LightBins::allocate(uint64_t entries) {
+  if (entries > maxEntries_)
+    throw InputError(fmt::format(
+        "the light bins need {} entries ({:.1f} MiB), more than this device's largest storage buffer "
+        "holds ({} entries): use fewer or smaller lights, a larger --tile or a lower resolution",
+        entries, double(entries) * 4.0 / 1048576.0, maxEntries_));
+  header_.capacity = uint32_t(std::max<uint64_t>(entries, 1));
+  entries_ = Buffer(*context_, uint64_t(header_.capacity) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                    MemoryUse::Device, "light bins entries");
+}
+
+void LightBins::bind(DescriptorWriter& writer) const {
+  writer.storage(11, headerBuffer_.handle()).storage(12, cells_.handle()).storage(13, entries_.handle());
+}
+
+ResourceUse LightBins::farDepthWrite(VkPipelineStageFlags2 stages) const {
+  return uses(cells_, Use::StorageReadWrite, stages);
+}
+
+std::vector<ResourceUse> LightBins::reads(VkPipelineStageFlags2 stages) const {
+  return {uses(headerBuffer_, Use::StorageRead, stages), uses(cells_, Use::StorageRead, stages),
+          uses(entries_, Use::StorageRead, stages)};
+}
+
+void LightBins::clear(FrameContext& frame) {
+  frame.graph.pass("bins-clear",
+                   {uses(headerBuffer_, Use::TransferWrite), uses(cells_, Use::TransferWrite)},
+                   [&](VkCommandBuffer cmd) {
+                     gpu::LightBinHeader header = header_;
+                     header.requested = 0;
+                     vkCmdUpdateBuffer(cmd, headerBuffer_.handle(), 0, sizeof(header), &header);
+                     vkCmdFillBuffer(cmd, cells_.handle(), 0, VK_WHOLE_SIZE, 0);
+                   });
+}
+
+void LightBins::build(FrameContext& frame) {
+  auto writer = [&] {
+    DescriptorWriter w = meshPassDescriptors(frame);
+    bind(w);
+    return w;
+  };
+  const uint32_t lightGroups = divideRoundingUp(std::max(header_.lightCount, 1u), 64);
+  frame.graph.pass("bins-count",
+                   {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute)},
+                   [&, lightGroups](VkCommandBuffer cmd) {
+                     count_.bind(cmd);
+                     writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+                     vkCmdDispatch(cmd, lightGroups, 1, 1);
+                   });
+  frame.graph.pass("bins-scan",
+                   {uses(headerBuffer_, Use::StorageReadWrite, kCompute),
+                    uses(cells_, Use::StorageReadWrite, kCompute)},
+                   [&](VkCommandBuffer cmd) {
+                     scan_.bind(cmd);
+                     writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+                     vkCmdDispatch(cmd, 1, 1, 1);
+                   });
+  frame.graph.pass("bins-scatter",
+                   {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute),
+                    uses(entries_, Use::StorageWrite, kCompute)},
+                   [&, lightGroups](VkCommandBuffer cmd) {
+                     scatter_.bind(cmd);
+                     writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+                     vkCmdDispatch(cmd, lightGroups, 1, 1);
+                   });
+  frame.graph.barriers({uses(headerBuffer_, Use::HostRead)});
+}
+
+bool LightBins::afterFrame() {
+  gpu::LightBinHeader read{};
+  std::memcpy(&read, headerBuffer_.mapped(), sizeof(read));
+  lastRequested_ = read.requested;
+  if (read.requested <= header_.capacity) return false;
+  ++overflows_;
+  const uint64_t grown = std::max<uint64_t>(read.requested, uint64_t(double(read.requested) * kGrowth));
+  allocate(read.requested > maxEntries_ ? read.requested : std::min(maxEntries_, grown));
+  return true;
+}
+
+std::vector<std::pair<std::string, double>> LightBins::stats() const {
+  return {{"bin_cells", double(header_.cellsX) * header_.cellsY},
+          {"bin_entries_used", double(lastRequested_)},
+          {"bin_entries_capacity", double(header_.capacity)},
+          {"bin_bytes", double(header_.capacity) * 4.0 + double(cells_.size())},
+          {"bin_overflows", double(overflows_)}};
+}
+
+}  // namespace lll

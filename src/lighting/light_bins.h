@@ -1,0 +1,66 @@
+#pragma once
+// Coarse light bins: the first level of a two-level light culling (shared/light_bins_types.h).
+// Every frame, after the technique's tile-depth pass has written each cell's farthest depth:
+//   bins-count   one thread per light counts it in every cell its bounding sphere covers on screen
+//                and reaches in depth;
+//   bins-scan    prefix sum of the counts into each cell's first entry;
+//   bins-scatter the same visit appends each light's index to those cells.
+// A list build (lll's compute fill, the tiled and clustered grids) then gives each workgroup of
+// kTileGroupSize x kTileGroupSize tiles its cell's lights instead of every light, so the build
+// costs about what the lights cover, not tiles x lights. The entry array grows on overflow and the
+// frame is drawn again (afterFrame), as lll's link pool does: no light is ever dropped.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "render/frame.h"
+#include "render/frame_graph.h"
+#include "shared/light_bins_types.h"
+
+namespace lll {
+
+class LightBins {
+ public:
+  LightBins() = default;
+  LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_t tileSize, uint32_t lightCount);
+
+  // Bindings 11 (header), 12 (cells), 13 (entries) of common/light_bins.glsl.
+  void bind(DescriptorWriter& writer) const;
+  // What a tile-depth pass writing the cells' farthest depths (binCells[].farBits) declares.
+  ResourceUse farDepthWrite(VkPipelineStageFlags2 stages) const;
+  // What a list build reading the bins in `stages` declares.
+  std::vector<ResourceUse> reads(VkPipelineStageFlags2 stages) const;
+
+  // Pass "bins-clear": zeroes the cells and writes the header. Before the tile-depth pass.
+  void clear(FrameContext& frame);
+  // Passes bins-count, bins-scan, bins-scatter. After the tile-depth pass.
+  void build(FrameContext& frame);
+  // Once the frame completed: true when the entries did not fit, with a larger array allocated
+  // (throws InputError where no storage buffer of this device could hold them).
+  bool afterFrame();
+
+  uint32_t cellsX() const { return header_.cellsX; }
+  uint32_t cellsY() const { return header_.cellsY; }
+  std::vector<std::pair<std::string, double>> stats() const;
+
+ private:
+  void allocate(uint64_t entries);
+
+  Context* context_ = nullptr;
+  gpu::LightBinHeader header_{};
+  uint64_t maxEntries_ = 0;
+  uint32_t lastRequested_ = 0;
+  uint32_t overflows_ = 0;
+  Buffer headerBuffer_;
+  Buffer cells_;
+  Buffer entries_;
+  PipelineLayout layout_;
+  Pipeline count_;
+  Pipeline scan_;
+  Pipeline scatter_;
+};
+
+}  // namespace lll
