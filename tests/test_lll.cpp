@@ -169,10 +169,12 @@ float allowedDistance(const std::string& fill, const ViewLight& l, const RenderS
   return back + std::sqrt(len * len + radius * radius);
 }
 
-ListCheck checkLists(const Scene& scene, const RenderSettings& settings) {
+ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
+                     std::vector<std::pair<std::string, double>>* stats = nullptr) {
   Context& context = test::gpuContext();
   Renderer renderer(context, scene, settings);
   renderer.renderFrame(false);
+  if (stats) *stats = renderer.technique().stats();
   const TileLightLists lists = readTileLightLists(renderer.technique());
   const gpu::FrameUniforms& u = renderer.uniforms();
   std::vector<ViewLight> lights;
@@ -254,6 +256,32 @@ INSTANTIATE_TEST_SUITE_P(Fills, LllLists,
                                   "_" + std::to_string(info.param.width) + "x" +
                                   std::to_string(info.param.height);
                          });
+
+// The compute fill reads the lights binned to its cell (lighting/light_bins.h). Many large lights
+// on a fine grid overflow the bins' first allocation: the frame must be drawn again with room for
+// every entry, and the lists must still hold every light the reference requires.
+TEST(LllLists, OverflowingBinsGrowAndLoseNoLight) {
+  RenderSettings settings;
+  settings.technique = "lll";
+  settings.lllFill = "compute";
+  settings.tileSize = 1;
+  settings.width = 96;
+  settings.height = 54;
+  std::vector<std::pair<std::string, double>> stats;
+  const ListCheck check = checkLists(awkwardLightsScene(400), settings, &stats);
+  double overflows = -1.0, used = 0.0, capacity = 0.0;
+  for (const auto& [name, value] : stats) {
+    if (name == "bin_overflows") overflows = value;
+    if (name == "bin_entries_used") used = value;
+    if (name == "bin_entries_capacity") capacity = value;
+  }
+  EXPECT_GE(overflows, 1.0) << "the scene should overflow the bins' first allocation";
+  EXPECT_GE(capacity, used);
+  EXPECT_GT(check.mustList, 1000u);
+  EXPECT_EQ(check.missing, 0u) << "lights the reference requires but the fill did not list";
+  EXPECT_EQ(check.beyondMargin, 0u);
+  EXPECT_EQ(check.depthOutside, 0u);
+}
 
 // --- Images: lll must reproduce forward, the brute-force reference --------------------------------
 
