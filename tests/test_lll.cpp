@@ -11,141 +11,19 @@
 #include "scene/lights.h"
 #include "scene/scene_source.h"
 #include "shared/lll_types.h"
+#include "awkward_lights_scene.h"
+#include "light_list_reference.h"
 #include "test_support.h"
 
 namespace lll {
 namespace {
 
+using test::referenceDistanceSquared;
+using test::samplesInside;
+using test::toView;
+using test::ViewLight;
+
 constexpr float kPi = 3.14159265358979f;
-
-// The plane under a camera 8 m above it, with point, spot and box lights of every awkward kind: one
-// around the camera, some below the floor (hidden), some off-screen, spots pointing every way,
-// boxes turned every way (one around the camera, one under the floor).
-Scene awkwardLightsScene(uint32_t extraPoints) {
-  Scene scene = *makeBuiltinScene("plane");
-  scene.lights.clear();
-  std::mt19937 rng(7);
-  auto uniform = [&](float lo, float hi) { return lo + (hi - lo) * float(rng() >> 8) / 16777216.0f; };
-  for (uint32_t i = 0; i < extraPoints; ++i) {
-    Light l;
-    l.position = {uniform(-12, 12), uniform(-1.5f, 6), uniform(-12, 12)};
-    l.range = uniform(0.4f, 4.0f);
-    l.intensity = l.range * l.range;
-    l.color = {uniform(0.2f, 1), uniform(0.2f, 1), uniform(0.2f, 1)};
-    scene.lights.push_back(l);
-  }
-  Light aroundCamera;
-  aroundCamera.position = {0.3f, 7.5f, 0.2f};
-  aroundCamera.range = 9.0f;
-  aroundCamera.intensity = 20.0f;
-  scene.lights.push_back(aroundCamera);
-  Light hidden;
-  hidden.position = {1.0f, -2.0f, 1.0f};
-  hidden.range = 1.5f;
-  scene.lights.push_back(hidden);
-  Light offscreen;
-  offscreen.position = {40.0f, 1.0f, 0.0f};
-  offscreen.range = 3.0f;
-  scene.lights.push_back(offscreen);
-  for (int i = 0; i < 8; ++i) {
-    Light spot;
-    spot.type = LightType::Spot;
-    spot.position = {uniform(-6, 6), uniform(0.5f, 5), uniform(-6, 6)};
-    spot.direction = glm::normalize(glm::vec3(uniform(-1, 1), uniform(-1, -0.2f), uniform(-1, 1)));
-    spot.range = uniform(3, 9);
-    spot.intensity = 30.0f;
-    spot.outerConeAngle = uniform(0.2f, 1.3f);  // some wider than 60 degrees: filled as spheres
-    spot.innerConeAngle = spot.outerConeAngle * 0.7f;
-    scene.lights.push_back(spot);
-  }
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec3 x(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)),
-        y(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-    scene.lights.push_back(makeBoxLight({uniform(-8, 8), uniform(-0.5f, 3), uniform(-8, 8)}, x, y,
-                                        {uniform(0.3f, 4), uniform(0.3f, 2), uniform(0.3f, 1.5f)},
-                                        {uniform(0.2f, 1), uniform(0.2f, 1), uniform(0.2f, 1)}, 6.0f));
-  }
-  scene.lights.push_back(
-      makeBoxLight({0.0f, 7.0f, 0.5f}, {1, 0, 0}, {0, 1, 1}, {3, 2, 2}, glm::vec3(1.0f), 8.0f));
-  scene.lights.push_back(
-      makeBoxLight({2.0f, -1.5f, 0.0f}, {1, 0, 0}, {0, 1, 0}, {2, 1, 2}, glm::vec3(1.0f), 8.0f));
-  return scene;
-}
-
-// Squared distance from c to the tile volume, minimised by ternary search over depth: f is convex
-// in z (a sum of squared non-negative convex functions). Independent of the closed form the
-// compute fill uses.
-float referenceDistanceSquared(glm::vec3 c, glm::vec4 tile, float zNear, float zFar) {
-  auto f = [&](float z) {
-    const float dx = std::max({tile.x * z - c.x, c.x - tile.y * z, 0.0f});
-    const float dy = std::max({tile.z * z - c.y, c.y - tile.w * z, 0.0f});
-    return dx * dx + dy * dy + (c.z - z) * (c.z - z);
-  };
-  float lo = zNear, hi = zFar;
-  for (int i = 0; i < 200; ++i) {
-    const float a = lo + (hi - lo) / 3.0f, b = hi - (hi - lo) / 3.0f;
-    (f(a) <= f(b) ? hi : lo) = (f(a) <= f(b) ? b : a);
-  }
-  return std::min({f(lo), f(zNear), f(zFar)});
-}
-
-struct ViewLight {
-  glm::vec3 center;  // view space, z = depth in front of the eye, y up
-  glm::vec3 axis;
-  float range;
-  float cosOuter;
-  bool spot;
-  bool box;
-  glm::vec3 boxAxes[3];  // unit, view space
-  glm::vec3 halfExtents;
-};
-
-glm::vec3 toViewDepth(const glm::mat4& view, const glm::vec3& direction) {
-  const glm::vec3 a = glm::mat3(view) * direction;
-  return {a.x, a.y, -a.z};
-}
-
-ViewLight toView(const Light& light, const glm::mat4& view) {
-  const glm::vec3 c = glm::vec3(view * glm::vec4(light.position, 1.0f));
-  ViewLight l{{c.x, c.y, -c.z},
-              glm::normalize(toViewDepth(view, light.direction)),
-              light.range,
-              std::cos(light.outerConeAngle),
-              light.type == LightType::Spot,
-              light.type == LightType::Box,
-              {},
-              light.halfExtents};
-  const glm::vec3 axes[3] = {light.boxAxisX, light.boxAxisY, glm::cross(light.boxAxisX, light.boxAxisY)};
-  for (int i = 0; i < 3; ++i) l.boxAxes[i] = toViewDepth(view, axes[i]);
-  return l;
-}
-
-bool insideLight(const ViewLight& l, glm::vec3 p, float shrink) {
-  const glm::vec3 d = p - l.center;
-  if (l.box) {
-    for (int i = 0; i < 3; ++i)
-      if (std::abs(glm::dot(d, l.boxAxes[i])) > l.halfExtents[i] * shrink) return false;
-    return true;
-  }
-  const float dist = glm::length(d);
-  if (dist > l.range * shrink) return false;
-  return !l.spot || dist < 1e-6f || glm::dot(d / dist, l.axis) >= l.cosOuter + 1e-3f;
-}
-
-// Points of a tile's volume inside the light (a sampled subset of the exact intersection).
-std::vector<glm::vec3> samplesInside(const ViewLight& l, glm::vec4 tile, float zNear, float zFar) {
-  std::vector<glm::vec3> inside;
-  const float z0 = std::max(zNear, l.center.z - l.range), z1 = std::min(zFar, l.center.z + l.range);
-  for (int k = 0; z0 <= z1 && k <= 12; ++k) {
-    const float z = z0 + (z1 - z0) * float(k) / 12.0f;
-    for (int i = 0; i <= 3; ++i)
-      for (int j = 0; j <= 3; ++j) {
-        const glm::vec3 p(glm::mix(tile.x, tile.y, i / 3.0f) * z, glm::mix(tile.z, tile.w, j / 3.0f) * z, z);
-        if (insideLight(l, p, 0.999f)) inside.push_back(p);
-      }
-  }
-  return inside;
-}
 
 struct ListCheck {
   uint32_t mustList = 0;  // (tile, light) pairs the reference requires
@@ -238,7 +116,7 @@ TEST_P(LllLists, MatchCpuReference) {
   settings.tileSize = c.tile;
   settings.width = c.width;
   settings.height = c.height;
-  const ListCheck check = checkLists(awkwardLightsScene(40), settings);
+  const ListCheck check = checkLists(test::awkwardLightsScene(40), settings);
   EXPECT_GT(check.mustList, 100u);  // the scene really exercises the lists
   EXPECT_EQ(check.missing, 0u) << "lights the reference requires but the fill did not list";
   EXPECT_EQ(check.beyondMargin, 0u) << "lights listed farther away than the fill's documented margin";
@@ -268,7 +146,7 @@ TEST(LllLists, OverflowingBinsGrowAndLoseNoLight) {
   settings.width = 96;
   settings.height = 54;
   std::vector<std::pair<std::string, double>> stats;
-  const ListCheck check = checkLists(awkwardLightsScene(400), settings, &stats);
+  const ListCheck check = checkLists(test::awkwardLightsScene(400), settings, &stats);
   double overflows = -1.0, used = 0.0, capacity = 0.0;
   for (const auto& [name, value] : stats) {
     if (name == "bin_overflows") overflows = value;
@@ -343,7 +221,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, LllImages,
 
 TEST(LllImages, AwkwardLightsMatchForward) {
   // Camera inside a light, lights under the floor and off-screen, spots of every width.
-  const Scene scene = awkwardLightsScene(40);
+  const Scene scene = test::awkwardLightsScene(40);
   RenderSettings settings;
   settings.width = 128;
   settings.height = 128;
@@ -377,7 +255,7 @@ TEST(LllImages, TinyPoolGrowsAndStillMatches) {
 }
 
 TEST(LllImages, CompactLinksRefuseTooManyLights) {
-  Scene scene = awkwardLightsScene(300);
+  Scene scene = test::awkwardLightsScene(300);
   RenderSettings settings;
   settings.technique = "lll";
   settings.lllLink = "compact";

@@ -108,12 +108,16 @@ ParticleFrame smokeFrame(const std::string& technique, const std::string& lighti
 
 class SmokeMatchesForward : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(SmokeMatchesForward, InLll) {
+// The light lists (lll) and the light grids (tiled, clustered: smoke in front of the opaque
+// surfaces walks their front slice) light the smoke as every light does.
+TEST_P(SmokeMatchesForward, InLllTiledAndClustered) {
   const ParticleFrame forward = smokeFrame("forward", GetParam());
-  const ParticleFrame lll = smokeFrame("lll", GetParam());
   EXPECT_GT(forward.counters.dispatch.w, 600u);  // 1024 / 6 spawns a second for 5 s, less the dead
-  test::expectWithinBound(lll.image.ldr, forward.image.ldr, test::kSmokeBound,
-                          std::string("lll smoke ") + GetParam() + "-lit");
+  for (const char* technique : {"lll", "tiled", "clustered"}) {
+    const ParticleFrame frame = smokeFrame(technique, GetParam());
+    test::expectWithinBound(frame.image.ldr, forward.image.ldr, test::kSmokeBound,
+                            std::string(technique) + " smoke " + GetParam() + "-lit");
+  }
   // The smoke is really in the picture: forward without it differs.
   RenderSettings clear = settingsFor("forward", 128, 72);
   const test::Rendered noSmoke = test::render(loadScene(SceneRequest{"atrium", 0, 1}), clear);

@@ -52,7 +52,8 @@ constexpr TechniqueCase kTechniques[] = {
     {"forward", "forward", "compute", "visibility"},   {"forward_gbuffer", "forward", "compute", "gbuffer"},
     {"lll", "lll", "compute", "visibility"},           {"lll_gbuffer", "lll", "compute", "gbuffer"},
     {"lll_fragment", "lll", "fragment", "visibility"}, {"deferred", "deferred", "compute", "visibility"},
-    {"prepass", "prepass", "compute", "visibility"}};
+    {"prepass", "prepass", "compute", "visibility"},   {"tiled", "tiled", "compute", "visibility"},
+    {"clustered", "clustered", "compute", "visibility"}, {"clustered_gbuffer", "clustered", "compute", "gbuffer"}};
 
 void PrintTo(const TechniqueCase& t, std::ostream* os) {
   *os << t.name;

@@ -14,8 +14,14 @@
 layout(std430, set = 0, binding = 11) LLL_BINS_ACCESS buffer BinHeaderBlock {
   LightBinHeader binHeader;
 };
-// Written by the tile-depth pass (farBits) and the bins' own passes, read by the list builds.
-layout(std430, set = 0, binding = 12) buffer BinCellBlock {
+// Written by the tile-depth passes (farBits, LLL_BINS_FAR_WRITE) and the bins' own passes, read
+// by the list builds.
+#if defined(LLL_BINS_WRITE) || defined(LLL_BINS_FAR_WRITE)
+#define LLL_BIN_CELLS_ACCESS
+#else
+#define LLL_BIN_CELLS_ACCESS readonly
+#endif
+layout(std430, set = 0, binding = 12) LLL_BIN_CELLS_ACCESS buffer BinCellBlock {
   LightBinCell binCells[];
 };
 layout(std430, set = 0, binding = 13) LLL_BINS_ACCESS buffer BinLightBlock {
@@ -67,12 +73,6 @@ bool sphereCells(vec3 center, float radius, out uvec4 cells) {
   vec4 c = floor(max(pixels, vec4(0.0)) / float(binHeader.cellPixels));
   cells = uvec4(min(uvec2(c.xy), last), min(uvec2(c.zw), last));
   return true;
-}
-
-// View-depth-space centre (z in front of the eye, y up) of a world-space point.
-vec3 binViewPoint(vec3 world) {
-  vec3 v = (frame.view * vec4(world, 1.0)).xyz;
-  return vec3(v.x, v.y, -v.z);
 }
 
 #endif

@@ -12,6 +12,10 @@ std::unique_ptr<Technique> createDeferred(Context&, const GpuScene&, const Rende
                                           const FrameTargets&, const VisibilityBuffer*);
 std::unique_ptr<Technique> createPrepass(Context&, const GpuScene&, const RenderSettings&,
                                          const FrameTargets&, const VisibilityBuffer*);
+std::unique_ptr<Technique> createTiled(Context&, const GpuScene&, const RenderSettings&, const FrameTargets&,
+                                       const VisibilityBuffer*);
+std::unique_ptr<Technique> createClustered(Context&, const GpuScene&, const RenderSettings&,
+                                           const FrameTargets&, const VisibilityBuffer*);
 
 namespace {
 bool always(const RenderSettings&) {
@@ -31,6 +35,10 @@ const std::vector<TechniqueInfo>& techniques() {
        &always},
       {"lll", "light linked list: per-tile light lists built on the GPU (--lll-fill shells|ray|compute)",
        &createLightLinkedList, &lllFragmentShading},
+      {"tiled", "tiled shading (Forward+): per-tile light index arrays between the tile's depth bounds",
+       &createTiled},
+      {"clustered", "clustered shading: light index arrays per tile x depth slice (--cluster-slices)",
+       &createClustered},
   };
   return table;
 }

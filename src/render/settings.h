@@ -28,6 +28,8 @@ struct RenderSettings {
   uint32_t tileSize = 8;
   uint32_t linksPerTile = 32;      // initial link pool: tiles * this, grown on overflow
   std::string debugView = "none";  // none | heatmap | bounds | tiles
+  // Clustered shading (technique "clustered"): depth slices per tile behind its front slice.
+  uint32_t clusterSlices = 16;
   // Deferred shading options (technique "deferred").
   std::string deferredTranslucent = "forward";  // unlit | forward
   std::string antiAliasing = "none";            // none | edge

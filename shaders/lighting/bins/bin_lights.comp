@@ -5,6 +5,7 @@
 // depth of the cell's farthest surface, counts itself there or appends itself at the cell's cursor.
 // Both passes visit the same cells, so the scatter fills exactly the counted ranges.
 #include "common/light_bins.glsl"
+#include "common/light_tile_test.glsl"
 
 layout(local_size_x = 64) in;
 layout(constant_id = 0) const uint kScatter = 0u;
@@ -13,7 +14,7 @@ void main() {
   uint index = gl_GlobalInvocationID.x;
   if (index >= binHeader.lightCount) return;
   vec4 positionRange = lights[index].positionRange;  // w bounds every light type (boxes too)
-  vec3 center = binViewPoint(positionRange.xyz);
+  vec3 center = toViewDepthSpace(positionRange.xyz);
   float radius = positionRange.w;
   uvec4 cells;
   if (!sphereCells(center, radius, cells)) return;

@@ -21,61 +21,6 @@ shared uint candidates[64];
 shared uint groupLinks;
 shared uint groupBase;
 
-vec4 slopesOfTiles(uvec2 first, uvec2 last) {
-  float size = float(frame.counts.y);
-  vec2 screen = frame.viewport.xy;
-  vec2 lo = vec2(first) * size;
-  vec2 hi = min(vec2(last + 1u) * size, screen);
-  return tileSlopes(lo.x, hi.x, lo.y, hi.y, screen.x, screen.y, frame.depthParams.z, frame.depthParams.w);
-}
-
-// Wronski's cone test against a sphere (conservative: never rejects an intersecting pair).
-bool coneMayTouchSphere(vec3 apex, vec3 axis, float cosAngle, float range, vec3 center, float radius) {
-  vec3 v = center - apex;
-  float lengthSq = dot(v, v);
-  float along = dot(v, axis);
-  float sinAngle = sqrt(max(1.0 - cosAngle * cosAngle, 0.0));
-  float closest = cosAngle * sqrt(max(lengthSq - along * along, 0.0)) - along * sinAngle;
-  return !(closest > radius || along > radius + range || along < -radius);
-}
-
-bool spotMayTouch(GpuLight light, vec3 center, vec4 slopes, float zNear, float zFar) {
-  if (uint(light.directionType.w) != kLightSpot) return true;
-  float range = light.positionRange.w;
-  float z0 = max(zNear, center.z - range), z1 = min(zFar, center.z + range);
-  if (z0 > z1) return false;
-  // Bounding sphere of the tile volume between z0 and z1 (its eight corners' box).
-  vec3 lo = vec3(min(slopes.x * z0, slopes.x * z1), min(slopes.z * z0, slopes.z * z1), z0);
-  vec3 hi = vec3(max(slopes.y * z0, slopes.y * z1), max(slopes.w * z0, slopes.w * z1), z1);
-  vec3 axis = directionToViewDepthSpace(light.directionType.xyz);
-  return coneMayTouchSphere(center, axis, light.spotParams.x, range, 0.5 * (lo + hi), 0.5 * length(hi - lo));
-}
-
-// A box against the sphere bounding the tile volume within the box's depth range: the distance
-// from the sphere's centre to the box (conservative for the tile, exact for the sphere).
-bool boxMayTouch(GpuLight light, vec3 center, vec4 slopes, float zNear, float zFar) {
-  vec3 x, y, z;
-  boxAxes(light, x, y, z);
-  float halfDepth = boxDepthHalfExtent(x, y, z);
-  float z0 = max(zNear, center.z - halfDepth), z1 = min(zFar, center.z + halfDepth);
-  if (z0 > z1) return false;
-  vec3 lo = vec3(min(slopes.x * z0, slopes.x * z1), min(slopes.z * z0, slopes.z * z1), z0);
-  vec3 hi = vec3(max(slopes.y * z0, slopes.y * z1), max(slopes.w * z0, slopes.w * z1), z1);
-  vec3 d = 0.5 * (lo + hi) - center;
-  float radius = 0.5 * length(hi - lo);
-  vec3 outside = max(abs(vec3(dot(d, x) / length(x), dot(d, y) / length(y), dot(d, z) / length(z))) -
-                         vec3(length(x), length(y), length(z)),
-                     0.0);
-  return dot(outside, outside) <= radius * radius;
-}
-
-bool lightTouches(GpuLight light, vec3 center, vec4 slopes, float zNear, float zFar) {
-  float range = light.positionRange.w;
-  if (tileVolumeDistanceSquared(center, slopes, zNear, zFar) > range * range) return false;
-  if (isBox(light)) return boxMayTouch(light, center, slopes, zNear, zFar);
-  return spotMayTouch(light, center, slopes, zNear, zFar);
-}
-
 void main() {
   uvec2 tilesSize = frame.counts.zw;
   uvec2 tile = gl_GlobalInvocationID.xy;

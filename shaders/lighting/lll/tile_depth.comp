@@ -1,4 +1,5 @@
 #version 460
+#define LLL_BINS_FAR_WRITE
 #define LLL_FILL_PASS
 // Farthest linear depth of each tile (Bezrati 1.5.1: reduce by max, so a tile never misses a light
 // that touches its farthest pixel). Edge tiles only read the pixels that exist. The workgroup's

@@ -1,0 +1,247 @@
+#include "lighting/light_grid.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "gpu/context.h"
+#include "gpu/pipeline.h"
+#include "gpu/vk_check.h"
+#include "lighting/light_bins.h"
+#include "render/renderer.h"
+#include "scene/errors.h"
+#include "shared/grid_types.h"
+#include "shared/lll_types.h"
+
+namespace lll {
+
+namespace {
+
+// Initial index entries per tile, and growth past a request on overflow.
+constexpr uint64_t kInitialEntriesPerTile = 32;
+constexpr double kGrowth = 1.25;
+constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+
+uint32_t parseGridDebugView(const std::string& name) {
+  if (name == "none") return gpu::kDebugNone;
+  if (name == "heatmap") return gpu::kDebugHeatmap;
+  if (name == "tiles") return gpu::kDebugTiles;
+  throw InputError(fmt::format("--debug-view {}: the tiled and clustered techniques show none, heatmap or tiles",
+                               name));
+}
+
+class LightGrid final : public Technique {
+ public:
+  LightGrid(Context& context, const GpuScene& scene, const RenderSettings& settings,
+            const FrameTargets& targets, const VisibilityBuffer* visibility, uint32_t slices);
+  ~LightGrid() override { vkDestroySampler(context_.device(), depthSampler_, nullptr); }
+  void buildLightData(FrameContext& frame) override;
+  OpaqueShading opaqueShading() const override { return opaqueShading_; }
+  LightingInterface lighting() const override;
+  bool afterFrame() override;
+  std::vector<std::pair<std::string, double>> stats() const override;
+  LightGridLists read();
+
+ private:
+  void allocate(uint64_t entries);
+  DescriptorWriter descriptors(const FrameContext& frame) const;
+
+  Context& context_;
+  OpaqueShading opaqueShading_;
+  uint32_t tilesX_;
+  uint32_t tilesY_;
+  uint32_t tiles_;
+  uint64_t maxEntries_;
+  uint32_t overflows_ = 0;
+  gpu::GridUniforms uniforms_{};
+  gpu::GridCounters lastCounters_{};
+  Buffer uniformBuffer_;
+  Buffer tileRange_;
+  Buffer clusters_;
+  Buffer indices_;
+  Buffer counters_;
+  LightBins bins_;
+  VkSampler depthSampler_ = VK_NULL_HANDLE;
+  PipelineLayout layout_;
+  Pipeline tileRangePipeline_;
+  Pipeline countPipeline_;
+  Pipeline writePipeline_;
+};
+
+LightGrid::LightGrid(Context& context, const GpuScene& scene, const RenderSettings& settings,
+                     const FrameTargets& targets, const VisibilityBuffer* visibility, uint32_t slices)
+    : context_(context),
+      opaqueShading_(visibility ? OpaqueShading::Visibility : OpaqueShading::GBuffer),
+      tilesX_(divideRoundingUp(targets.width, settings.tileSize)),
+      tilesY_(divideRoundingUp(targets.height, settings.tileSize)),
+      tiles_(tilesX_ * tilesY_),
+      maxEntries_(context.properties().limits.maxStorageBufferRange / 4) {
+  validateTileSize(settings.tileSize);
+  uniforms_.params = glm::uvec4(slices, 0, parseGridDebugView(settings.debugView), 0);
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  uniformBuffer_ = Buffer(context, sizeof(gpu::GridUniforms), storage, MemoryUse::Upload, "grid uniforms");
+  tileRange_ = Buffer(context, uint64_t(tiles_) * 8, storage, MemoryUse::Device, "grid tile ranges");
+  clusters_ = Buffer(context, uint64_t(tiles_) * slices * 8, storage, MemoryUse::Device, "grid clusters");
+  counters_ = Buffer(context, sizeof(gpu::GridCounters), storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                     MemoryUse::Readback, "grid counters");
+  allocate(std::min(maxEntries_, uint64_t(tiles_) * kInitialEntriesPerTile));
+  bins_ = LightBins(context, tilesX_, tilesY_, settings.tileSize, scene.lightCount());
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &depthSampler_));
+  layout_ = PipelineLayout(context, {"lighting/grid/tile_range.comp", "lighting/grid/build.comp"});
+  tileRangePipeline_ = Pipeline(context, layout_, "lighting/grid/tile_range.comp");
+  countPipeline_ = Pipeline(context, layout_, "lighting/grid/build.comp", SpecializationConstants{{0, 0}});
+  writePipeline_ = Pipeline(context, layout_, "lighting/grid/build.comp", SpecializationConstants{{0, 1}});
+}
+
+void LightGrid::allocate(uint64_t entries) {
+  if (entries > maxEntries_)
+    throw InputError(fmt::format(
+        "the light grid needs {} light indices ({:.1f} MiB), more than this device's largest storage buffer "
+        "holds ({}): use fewer or smaller lights, a larger --tile or a lower resolution",
+        entries, double(entries) * 4.0 / 1048576.0, maxEntries_));
+  uniforms_.params.y = uint32_t(std::max<uint64_t>(entries, 1));
+  indices_ = Buffer(context_, uint64_t(uniforms_.params.y) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                    MemoryUse::Device, "grid light indices");
+}
+
+DescriptorWriter LightGrid::descriptors(const FrameContext& frame) const {
+  DescriptorWriter writer = meshPassDescriptors(frame);
+  lighting().bind(writer);
+  writer.storage(7, counters_.handle());
+  bins_.bind(writer);
+  return writer;
+}
+
+void LightGrid::buildLightData(FrameContext& frame) {
+  uniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
+  frame.graph.pass("grid-clear", {uses(counters_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+  });
+  bins_.clear(frame);
+  frame.graph.pass("grid-tile-range",
+                   {uses(frame.targets.depth, Use::Sampled, kCompute), uses(tileRange_, Use::StorageWrite, kCompute),
+                    bins_.farDepthWrite(kCompute)},
+                   [&](VkCommandBuffer cmd) {
+                     tileRangePipeline_.bind(cmd);
+                     descriptors(frame)
+                         .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frame.targets.depth.view(),
+                                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+                         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+                     vkCmdDispatch(cmd, divideRoundingUp(tilesX_, gpu::kTileGroupSize),
+                                   divideRoundingUp(tilesY_, gpu::kTileGroupSize), 1);
+                   });
+  bins_.build(frame);
+  const uint32_t groupsX = divideRoundingUp(tilesX_, gpu::kTileGroupSize);
+  const uint32_t groupsY = divideRoundingUp(tilesY_, gpu::kTileGroupSize);
+  const std::vector<ResourceUse> binned = bins_.reads(kCompute);
+  std::vector<ResourceUse> count = {uses(tileRange_, Use::StorageRead, kCompute),
+                                    uses(clusters_, Use::StorageWrite, kCompute),
+                                    uses(counters_, Use::StorageReadWrite, kCompute)};
+  count.insert(count.end(), binned.begin(), binned.end());
+  frame.graph.pass("grid-count", count, [&, groupsX, groupsY](VkCommandBuffer cmd) {
+    countPipeline_.bind(cmd);
+    descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+    vkCmdDispatch(cmd, groupsX, groupsY, 1);
+  });
+  std::vector<ResourceUse> write = {uses(tileRange_, Use::StorageRead, kCompute),
+                                    uses(clusters_, Use::StorageReadWrite, kCompute),
+                                    uses(indices_, Use::StorageWrite, kCompute),
+                                    uses(counters_, Use::StorageReadWrite, kCompute)};
+  write.insert(write.end(), binned.begin(), binned.end());
+  frame.graph.pass("grid-write", write, [&, groupsX, groupsY](VkCommandBuffer cmd) {
+    writePipeline_.bind(cmd);
+    descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+    vkCmdDispatch(cmd, groupsX, groupsY, 1);
+  });
+  frame.graph.barriers({uses(counters_, Use::HostRead)});
+}
+
+LightingInterface LightGrid::lighting() const {
+  return {"grid",
+          [this](DescriptorWriter& writer) {
+            writer.storage(3, uniformBuffer_.handle())
+                .storage(4, tileRange_.handle())
+                .storage(5, clusters_.handle())
+                .storage(6, indices_.handle());
+          },
+          {&tileRange_, &clusters_, &indices_}};
+}
+
+bool LightGrid::afterFrame() {
+  if (bins_.afterFrame()) return true;  // lights were left out of the build: draw again
+  std::memcpy(&lastCounters_, counters_.mapped(), sizeof(lastCounters_));
+  const uint64_t requested = lastCounters_.requested;
+  if (requested <= uniforms_.params.y) return false;
+  ++overflows_;
+  const uint64_t grown = std::max<uint64_t>(requested, uint64_t(double(requested) * kGrowth));
+  allocate(requested > maxEntries_ ? requested : std::min(maxEntries_, grown));
+  return true;
+}
+
+std::vector<std::pair<std::string, double>> LightGrid::stats() const {
+  const double slices = uniforms_.params.x;
+  std::vector<std::pair<std::string, double>> s = {
+      {"tiles", double(tiles_)},
+      {"slices_per_tile", slices},
+      {"clusters", double(tiles_) * slices},
+      {"index_entries_used", double(lastCounters_.requested)},
+      {"index_capacity", double(uniforms_.params.y)},
+      {"index_bytes", double(uniforms_.params.y) * 4.0},
+      {"cluster_bytes", double(clusters_.size()) + double(tileRange_.size())},
+      {"longest_cluster", double(lastCounters_.longest)},
+      {"mean_cluster", double(lastCounters_.requested) / double(std::max(1u, lastCounters_.clustersWithLights))},
+      {"clusters_with_lights", double(lastCounters_.clustersWithLights)},
+      {"overflows", double(overflows_)},
+      {"build_mismatches", double(lastCounters_.mismatches)},
+  };
+  const auto binned = bins_.stats();
+  s.insert(s.end(), binned.begin(), binned.end());
+  return s;
+}
+
+LightGridLists LightGrid::read() {
+  auto words = [&](const Buffer& source) {
+    const std::vector<uint8_t> bytes = readBack(context_, source, source.size());
+    std::vector<uint32_t> out(bytes.size() / 4);
+    std::memcpy(out.data(), bytes.data(), out.size() * 4);
+    return out;
+  };
+  const std::vector<uint32_t> ranges = words(tileRange_), clusters = words(clusters_), indices = words(indices_);
+  LightGridLists lists;
+  lists.tilesX = tilesX_;
+  lists.tilesY = tilesY_;
+  lists.slices = uniforms_.params.x;
+  for (uint32_t t = 0; t < tiles_; ++t) {
+    glm::vec2 r;
+    std::memcpy(&r, &ranges[2 * size_t(t)], sizeof(r));
+    lists.tileRange.push_back(r);
+  }
+  const uint64_t capacity = uniforms_.params.y;
+  for (size_t c = 0; c < size_t(tiles_) * lists.slices; ++c) {
+    const uint64_t first = std::min<uint64_t>(clusters[2 * c], capacity);
+    const uint64_t end = std::min<uint64_t>(first + clusters[2 * c + 1], capacity);
+    lists.clusters.emplace_back(indices.begin() + first, indices.begin() + end);
+  }
+  return lists;
+}
+
+}  // namespace
+
+LightGridLists readLightGrid(Technique& technique) {
+  auto* grid = dynamic_cast<LightGrid*>(&technique);
+  if (!grid) throw std::invalid_argument("readLightGrid needs the tiled or clustered technique");
+  return grid->read();
+}
+
+std::unique_ptr<Technique> createLightGrid(Context& context, const GpuScene& scene,
+                                           const RenderSettings& settings, const FrameTargets& targets,
+                                           const VisibilityBuffer* visibility, uint32_t slices) {
+  return std::make_unique<LightGrid>(context, scene, settings, targets, visibility, slices);
+}
+
+}  // namespace lll
