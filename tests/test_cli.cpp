@@ -113,12 +113,12 @@ TEST_F(CliTest, ZeroHeight) {
 }
 
 TEST_F(CliTest, LightsBeyondTheOptionsRange) {
-  expectBadInput(render("plane", {"--lights", "2000000"}), {"--lights", "2000000"});
+  expectBadInput(render("plane", {"--lights", "20000000"}), {"--lights", "20000000"});
 }
 
-TEST_F(CliTest, LightsBeyondTheLightBuffer) {
-  // Within the option's range, but the plane's own light makes it one more than the buffer holds.
-  expectBadInput(render("plane", {"--lights", "1048576"}), {"--lights 1048576", "1048577", "at most"});
+TEST_F(CliTest, LightsBeyondTheLightCap) {
+  // Within the option's range, but the plane's own light makes it one more than the cap.
+  expectBadInput(render("plane", {"--lights", "16777216"}), {"--lights 16777216", "16777217", "at most"});
 }
 
 TEST_F(CliTest, AbsurdLightRangeScale) {

@@ -13,8 +13,10 @@ LLL_CONST(uint, kCompactLinkEnd, 0xFFFFFFu);
 LLL_CONST(uint, kLinkEnd, 0xFFFFFFFFu);
 // lavapipe caps storage buffers at 128 MiB; the link pool is one storage buffer.
 LLL_CONST(uint, kMaxStorageBufferBytes, 128u * 1024u * 1024u);
-// Light array in one storage buffer of 64-byte lights, so the same 128 MiB cap bounds it.
-LLL_CONST(uint, kMaxLights, 1u << 20);
+// The most lights a scene may hold: 16,777,216 (a 1 GiB light array of 64-byte lights). Where a
+// device's largest storage buffer holds fewer (lavapipe: 128 MiB, 2,097,152 lights) the renderer
+// refuses with the count that fits (requireStorageBufferFits).
+LLL_CONST(uint, kMaxLights, 1u << 24);
 // 2D compute passes (linear depth, tonemap, tile reduction) use 8x8 groups: 64 invocations is a
 // multiple of every subgroup size we meet (8 on lavapipe, 32 on NVIDIA).
 LLL_CONST(uint, kTileGroupSize, 8u);

@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "bench/bench.h"
 #include "scene/errors.h"
+#include "shared/limits.h"
 
 namespace {
 
@@ -47,7 +48,7 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--technique", s.technique, "lighting technique (see `lll techniques`)");
   cmd.add_option("--lights", job.scene.extraLights,
                  "random point lights: scattered in the scene bounds, added to the file's own lights")
-      ->check(CLI::Range(0u, 1u << 20));
+      ->check(CLI::Range(0u, lll::gpu::kMaxLights));
   cmd.add_option("--light-range-scale", job.scene.lightRangeScale,
                  "multiplies the ranges of the --lights lights (light-volume overdraw studies)")
       ->check(finiteIn(0.0, lll::kMaxLightRangeScale));

@@ -97,6 +97,7 @@ std::vector<PlacedLightVolume> placeLightVolumes(const std::vector<Light>& light
 }
 
 LightVolumeDraws::LightVolumeDraws(Context& context, uint32_t maxLights) {
+  requireStorageBufferFits(context, maxLights, sizeof(gpu::LightVolume), "the light-volume array");
   VkPhysicalDeviceFeatures features{};
   vkGetPhysicalDeviceFeatures(context.physicalDevice(), &features);
   if (!features.depthClamp)

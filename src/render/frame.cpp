@@ -1,6 +1,11 @@
 #include "render/frame.h"
 
+#include <fmt/format.h>
+
 #include <vector>
+
+#include "gpu/context.h"
+#include "scene/errors.h"
 
 #include "gpu/pipeline.h"
 
@@ -79,6 +84,15 @@ SpecializationConstants lightTypeConstants(const Scene& scene) {
 void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets) {
   vkCmdDispatch(cmd, divideRoundingUp(targets.width, gpu::kTileGroupSize),
                 divideRoundingUp(targets.height, gpu::kTileGroupSize), 1);
+}
+
+void requireStorageBufferFits(const Context& context, uint64_t count, uint64_t bytesEach, const std::string& what) {
+  const uint64_t limit = context.properties().limits.maxStorageBufferRange;
+  if (count * bytesEach <= limit) return;
+  throw InputError(fmt::format(
+      "{} lights: {} needs {:.1f} MiB in one storage buffer, but this device's largest "
+      "(maxStorageBufferRange) is {:.1f} MiB, which holds at most {} lights",
+      count, what, double(count * bytesEach) / 1048576.0, double(limit) / 1048576.0, limit / bytesEach));
 }
 
 }  // namespace lll
