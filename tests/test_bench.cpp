@@ -17,6 +17,7 @@
 #include "bench/report.h"
 #include "lighting/technique.h"
 #include "scene/errors.h"
+#include "scene/scene_source.h"
 #include "test_support.h"
 
 namespace lll::bench {
@@ -83,6 +84,42 @@ TEST(BenchSuites, ForwardOverManyLightsIsSkippedOnCpuUnlessAsked) {
   EXPECT_EQ(skipped, 2u);  // 16384 and 65536 lights
   for (const Scenario& s : buildSuite("scaling", SuiteOptions{.fullForward = true, .cpuDevice = true}))
     EXPECT_TRUE(s.skip.empty());
+}
+
+// Constant density: ranges scaled by (1024 / N)^(1/3), intensities by its square, every technique
+// once (lll with its compute fill), brute force and the light-volume techniques only up to 65,536.
+TEST(BenchSuites, DensityKeepsLightsPerPixelAndSkipsTheSlowTechniquesBeyondTheirLimit) {
+  const auto full = buildSuite("density", SuiteOptions{});
+  ASSERT_EQ(full.size(), 7 * techniques().size());
+  size_t skipped = 0;
+  for (const Scenario& s : full) {
+    const uint32_t n = s.scene.extraLights;
+    EXPECT_NEAR(s.scene.lightRangeScale, std::cbrt(1024.0 / n), 1e-6) << s.name;
+    EXPECT_TRUE(s.scene.scaleIntensityWithRange);
+    EXPECT_EQ(s.settings.lllFill, "compute");
+    const bool slow = s.settings.technique == "forward" || s.settings.technique == "deferred" ||
+                      s.settings.technique == "prepass";
+    EXPECT_EQ(!s.skip.empty(), slow && n > kDensityVolumeLimit) << s.name << " " << s.settings.technique;
+    skipped += !s.skip.empty();
+  }
+  EXPECT_EQ(skipped, 3u * 3u);  // 262,144, 1,048,576 and 4,194,304 lights
+  EXPECT_EQ(full.back().scene.extraLights, 4194304u);
+}
+
+// The density scenes: a quarter the range and a sixteenth the intensity at 64x the lights.
+TEST(BenchSuites, DensityScalesIntensityWithTheSquareOfTheRange) {
+  SceneRequest plain{"atrium", 16, 1};
+  SceneRequest scaled = plain;
+  scaled.lightRangeScale = 0.25f;
+  scaled.scaleIntensityWithRange = true;
+  const Scene a = loadScene(plain), b = loadScene(scaled);
+  ASSERT_EQ(a.lights.size(), b.lights.size());
+  const size_t own = a.lights.size() - 16;
+  for (size_t i = own; i < a.lights.size(); ++i) {
+    EXPECT_FLOAT_EQ(b.lights[i].range, a.lights[i].range * 0.25f);
+    EXPECT_FLOAT_EQ(b.lights[i].intensity, a.lights[i].intensity * 0.0625f);
+  }
+  EXPECT_EQ(b.lights[0].range, a.lights[0].range);  // the scene's own lights are left alone
 }
 
 TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {

@@ -35,7 +35,8 @@ glm::vec2 sliceBounds(glm::vec2 range, uint32_t slice, uint32_t slices, float zN
   if (slice == 0) return {zNear, range.x};
   const uint32_t last = slices - 1;
   const float ratio = std::max(range.y / range.x, 1.0f);
-  return {range.x * std::pow(ratio, float(slice - 1) / float(last)), range.x * std::pow(ratio, float(slice) / float(last))};
+  return {range.x * std::pow(ratio, float(slice - 1) / float(last)),
+          range.x * std::pow(ratio, float(slice) / float(last))};
 }
 
 struct ClusterCheck {
@@ -63,8 +64,9 @@ ClusterCheck checkClusters(const Scene& scene, const RenderSettings& settings) {
   for (uint32_t ty = 0; ty < grid.tilesY; ++ty) {
     for (uint32_t tx = 0; tx < grid.tilesX; ++tx) {
       const uint32_t tile = ty * grid.tilesX + tx;
-      const glm::vec4 slopes = gpu::tileSlopes(tx * t, std::min((tx + 1) * t, w), ty * t,
-                                               std::min((ty + 1) * t, h), w, h, u.depthParams.z, u.depthParams.w);
+      const glm::vec4 slopes =
+          gpu::tileSlopes(tx * t, std::min((tx + 1) * t, w), ty * t, std::min((ty + 1) * t, h), w, h,
+                          u.depthParams.z, u.depthParams.w);
       for (uint32_t slice = 0; slice < grid.slices; ++slice) {
         const glm::vec2 b = sliceBounds(grid.tileRange[tile], slice, grid.slices, zNear);
         // Points strictly inside the slice: a point on a boundary belongs to either neighbour.
@@ -76,7 +78,8 @@ ClusterCheck checkClusters(const Scene& scene, const RenderSettings& settings) {
           if (index >= lights.size()) continue;
           if (++count[index] == 2) ++check.duplicates;
           const test::ViewLight& l = lights[index];
-          if (std::sqrt(test::referenceDistanceSquared(l.center, slopes, b.x * 0.99f, b.y * 1.01f)) > l.range * 1.01f)
+          if (std::sqrt(test::referenceDistanceSquared(l.center, slopes, b.x * 0.99f, b.y * 1.01f)) >
+              l.range * 1.01f)
             ++check.listedFarAway;
         }
         if (!(hi > lo)) continue;
@@ -117,16 +120,16 @@ TEST_P(GridLists, MatchCpuReference) {
   EXPECT_EQ(check.buildMismatches, 0.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Grids, GridLists,
-                         ::testing::Values(ListCase{"tiled", 16, 8, 40}, ListCase{"tiled", 16, 16, 300},
-                                           ListCase{"tiled", 16, 16, 1200}, ListCase{"clustered", 16, 8, 1200},
-                                           ListCase{"clustered", 16, 8, 40}, ListCase{"clustered", 4, 16, 300},
-                                           ListCase{"clustered", 32, 1, 40}),
-                         [](const auto& info) {
-                           return std::string(info.param.technique) + "_" + std::to_string(info.param.slices) +
-                                  "slices_tile" + std::to_string(info.param.tile) + "_" +
-                                  std::to_string(info.param.lights) + "lights";
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Grids, GridLists,
+    ::testing::Values(ListCase{"tiled", 16, 8, 40}, ListCase{"tiled", 16, 16, 300},
+                      ListCase{"tiled", 16, 16, 1200}, ListCase{"clustered", 16, 8, 1200},
+                      ListCase{"clustered", 16, 8, 40}, ListCase{"clustered", 4, 16, 300},
+                      ListCase{"clustered", 32, 1, 40}),
+    [](const auto& info) {
+      return std::string(info.param.technique) + "_" + std::to_string(info.param.slices) + "slices_tile" +
+             std::to_string(info.param.tile) + "_" + std::to_string(info.param.lights) + "lights";
+    });
 
 class GridImages : public ::testing::TestWithParam<GridCase> {};
 
@@ -140,17 +143,17 @@ TEST_P(GridImages, TiledAndClusteredMatchForward) {
   for (const char* technique : {"tiled", "clustered"}) {
     settings.technique = technique;
     const test::Rendered grid = test::render(scene, settings);
-    test::expectWithinBound(grid.ldr, reference.ldr, test::kSameImage,
-                            std::string(technique) + " " + GetParam().scene + " " +
-                                std::to_string(GetParam().lights));
+    test::expectWithinBound(
+        grid.ldr, reference.ldr, test::kSameImage,
+        std::string(technique) + " " + GetParam().scene + " " + std::to_string(GetParam().lights));
     EXPECT_GT(test::stat(grid, "index_entries_used"), 0.0) << technique;
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GridImages,
-                         ::testing::Values(GridCase{"atrium", 0}, GridCase{"atrium", 1024}, GridCase{"camp", 64},
-                                           GridCase{"cave", 1024}, GridCase{"box-plane", 0},
-                                           GridCase{"spot-plane", 0}),
+                         ::testing::Values(GridCase{"atrium", 0}, GridCase{"atrium", 1024},
+                                           GridCase{"camp", 64}, GridCase{"cave", 1024},
+                                           GridCase{"box-plane", 0}, GridCase{"spot-plane", 0}),
                          [](const auto& info) {
                            std::string name = info.param.scene + "_" + std::to_string(info.param.lights);
                            for (char& ch : name)
@@ -174,9 +177,9 @@ TEST(GridImages, AwkwardLightsEveryTileAndSliceCount) {
     settings.technique = "clustered";
     for (const uint32_t slices : {1u, 4u, 32u}) {
       settings.clusterSlices = slices;
-      test::expectWithinBound(test::render(scene, settings).ldr, reference.ldr, test::kSameImage,
-                              "clustered awkward, tile " + std::to_string(tile) + ", " + std::to_string(slices) +
-                                  " slices");
+      test::expectWithinBound(
+          test::render(scene, settings).ldr, reference.ldr, test::kSameImage,
+          "clustered awkward, tile " + std::to_string(tile) + ", " + std::to_string(slices) + " slices");
     }
   }
 }

@@ -5,14 +5,14 @@
 #include <cmath>
 #include <random>
 
+#include "awkward_lights_scene.h"
+#include "light_list_reference.h"
 #include "lighting/lll.h"
 #include "scene/builtin_scenes.h"
 #include "scene/errors.h"
 #include "scene/lights.h"
 #include "scene/scene_source.h"
 #include "shared/lll_types.h"
-#include "awkward_lights_scene.h"
-#include "light_list_reference.h"
 #include "test_support.h"
 
 namespace lll {

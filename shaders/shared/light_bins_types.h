@@ -11,9 +11,9 @@ LLL_NAMESPACE_BEGIN
 
 // Written by the bins' clear pass each frame; `requested` counted by the scatter, read back.
 struct LightBinHeader {
-  uint requested;   // entries the scatter asked for, also past `capacity`: the size binLights needs
-  uint capacity;    // entries binLights holds
-  uint cellsX;      // cells across and down the screen
+  uint requested;  // entries the scatter asked for, also past `capacity`: the size binLights needs
+  uint capacity;   // entries binLights holds
+  uint cellsX;     // cells across and down the screen
   uint cellsY;
   uint cellPixels;  // side of a cell in pixels
   uint lightCount;

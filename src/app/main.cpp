@@ -86,7 +86,8 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--cluster-slices", s.clusterSlices,
                  "clustered: depth slices per tile between its nearest and farthest surface (1 to 32)")
       ->check(CLI::Range(1u, 32u));
-  cmd.add_option("--debug-view", s.debugView, "none | heatmap | bounds | tiles (lll; heatmap and tiles: tiled, clustered)")
+  cmd.add_option("--debug-view", s.debugView,
+                 "none | heatmap | bounds | tiles (lll; heatmap and tiles: tiled, clustered)")
       ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));
   cmd.add_option(
          "--deferred-translucent", s.deferredTranslucent,

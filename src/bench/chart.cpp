@@ -72,37 +72,92 @@ void writeFile(const fs::path& path, const std::string& text) {
   out << text;
 }
 
-// Frame time against light count, one line per technique, log-log, min-max as error bars.
-std::optional<std::string> scalingChart(const BenchReport& report, const fs::path& dir) {
-  const Results results = measured(report, "scaling");
+// The passes a technique builds its light data with: everything but the surfaces, the shading
+// passes every technique shares and the frame itself.
+bool isLightDataPass(const std::string& name) {
+  return name != "visibility" && name != "shade-opaque" && name != "glass" && name != "tonemap" &&
+         name != "frame" && !name.starts_with("particles") && name != "alu-probe";
+}
+
+// A log-log chart of `suite`'s times against light count, one line per technique (per technique
+// and measure with `perPass`: its light-data passes, dashed, and its shading passes), min-max as
+// error bars on frame times.
+std::optional<std::string> lightCountChart(const BenchReport& report, const fs::path& dir,
+                                           const std::string& suite, const std::string& file, bool perPass,
+                                           const std::string& what) {
+  const Results results = measured(report, suite);
   if (results.empty()) return std::nullopt;
+  const std::string stem = file.substr(0, file.size() - 4);
   std::string data, plots;
   int index = 0;
-  for (const std::string& label : uniqueLabels(results)) {
-    data += fmt::format("# {}: lights median_ms min_ms max_ms\n", label);
-    for (const ScenarioResult* r : results) {
-      if (techniqueLabel(r->scenario.settings) != label) continue;
-      const PassSummary& f = *r->pass("frame");
-      data += fmt::format("{} {} {} {}\n", r->lightCount, f.medianMs, f.minMs, f.maxMs);
-    }
+  auto addSeries = [&](const std::string& title, const std::string& style, auto value) {
+    data += fmt::format("# {}: lights ms min_ms max_ms\n", title);
+    for (const ScenarioResult* r : results)
+      if (const auto v = value(*r))
+        data += fmt::format("{} {} {} {}\n", r->lightCount, (*v)[0], (*v)[1], (*v)[2]);
     data += "\n\n";
-    plots += fmt::format("{}'scaling.dat' index {} using 1:2:3:4 with yerrorlines lw 2 pt 7 title {}",
-                         index ? ", " : "plot ", index, gnuplotString(label));
+    plots += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with {} title {}", index ? ", " : "plot ", stem,
+                         index, style, gnuplotString(title));
     ++index;
+  };
+  using Triple = std::optional<std::array<double, 3>>;
+  for (const std::string& label : uniqueLabels(results)) {
+    auto mine = [&](const ScenarioResult& r) { return techniqueLabel(r.scenario.settings) == label; };
+    if (!perPass) {
+      addSeries(label, "yerrorlines lw 2 pt 7", [&](const ScenarioResult& r) -> Triple {
+        if (!mine(r)) return std::nullopt;
+        const PassSummary& f = *r.pass("frame");
+        return std::array<double, 3>{f.medianMs, f.minMs, f.maxMs};
+      });
+      continue;
+    }
+    auto sum = [&](const ScenarioResult& r, bool lightData) -> Triple {
+      if (!mine(r)) return std::nullopt;
+      double ms = 0.0;
+      bool any = false;
+      for (const PassSummary& p : r.passes)
+        if (isLightDataPass(p.name) == lightData &&
+            (lightData || p.name == "shade-opaque" || p.name == "glass")) {
+          ms += p.medianMs;
+          any = true;
+        }
+      if (!any) return std::nullopt;
+      return std::array<double, 3>{ms, ms, ms};
+    };
+    addSeries(label + ": light data", "linespoints dt 2 lw 2 pt 6",
+              [&](const ScenarioResult& r) { return sum(r, true); });
+    addSeries(label + ": shading", "linespoints lw 2 pt 7",
+              [&](const ScenarioResult& r) { return sum(r, false); });
   }
-  writeFile(dir / "scaling.dat", data);
+  writeFile(dir / (stem + ".dat"), data);
   std::set<uint64_t> counts;  // ticks where the measurements are, a little room either side
   for (const ScenarioResult* r : results) counts.insert(r->lightCount);
   const RenderSettings& s = results.front()->scenario.settings;
   return fmt::format(
-      "{}\nset output 'scaling.png'\n"
+      "{}\nset output '{}'\n"
       "set title {}\nset xlabel 'lights in the scene (its own plus the random ones added)'\n"
-      "set ylabel 'GPU frame time, ms (median; bars: min to max)'\nset logscale xy\n"
+      "set ylabel {}\nset logscale xy\n"
       "set xrange [{}:{}]\nset xtics ({})\nset grid xtics ytics mytics\nset key top left box opaque\n{}\n",
-      terminal(1280, 800),
-      gnuplotString(fmt::format("Frame time against light count: {}, {}x{}\n{}",
-                                results.front()->scenario.scene.scene, s.width, s.height, subtitle(report))),
+      terminal(1280, 800), file,
+      gnuplotString(fmt::format("{}: {}, {}x{}\n{}", what, results.front()->scenario.scene.scene, s.width,
+                                s.height, subtitle(report))),
+      gnuplotString(perPass ? "GPU ms (median): light-data passes dashed, shade-opaque + glass solid"
+                            : "GPU frame time, ms (median; bars: min to max)"),
       double(*counts.begin()) / 1.25, double(*counts.rbegin()) * 1.25, fmt::join(counts, ", "), plots);
+}
+
+std::optional<std::string> scalingChart(const BenchReport& report, const fs::path& dir) {
+  return lightCountChart(report, dir, "scaling", "scaling.png", false, "Frame time against light count");
+}
+
+std::optional<std::string> densityChart(const BenchReport& report, const fs::path& dir) {
+  return lightCountChart(report, dir, "density", "density.png", false,
+                         "Frame time against light count at constant light density");
+}
+
+std::optional<std::string> densityPassesChart(const BenchReport& report, const fs::path& dir) {
+  return lightCountChart(report, dir, "density", "density-passes.png", true,
+                         "Light data and shading against light count at constant light density");
 }
 
 // The bars of the ThreeL chart: passes (the stacked segments, "frame" left out: it is their
@@ -221,6 +276,8 @@ std::vector<fs::path> writeCharts(const BenchReport& report, const fs::path& dir
   std::vector<fs::path> charts;
   using ChartFn = std::optional<std::string> (*)(const BenchReport&, const fs::path&);
   for (const auto& [name, chart] : {std::pair<const char*, ChartFn>{"scaling.png", scalingChart},
+                                    {"density.png", densityChart},
+                                    {"density-passes.png", densityPassesChart},
                                     {"threel.png", threelChart},
                                     {"tiles.png", tilesChart}}) {
     if (const auto section = chart(report, dir)) {

@@ -37,6 +37,9 @@ struct SuiteOptions {
 
 // Brute-force forward over more lights than this is skipped on a CPU device unless --full-forward.
 inline constexpr uint32_t kForwardLightLimitOnCpu = 4096;
+// The density suite runs forward, deferred and pre-pass up to this many lights (beyond it a frame
+// takes seconds: every light per pixel, or one draw per light placed on the CPU).
+inline constexpr uint32_t kDensityVolumeLimit = 65536;
 
 // The suites `lll bench --suite` accepts, in the order they run.
 const std::vector<std::string>& suiteNames();

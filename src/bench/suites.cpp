@@ -5,6 +5,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "bench/scenario.h"
 #include "lighting/technique.h"
@@ -113,6 +114,35 @@ std::vector<Scenario> scalingSuite(const SuiteOptions& options) {
   return out;
 }
 
+// The million-light question (issue 13): N random lights at constant density, their ranges scaled
+// by (1024 / N)^(1/3) and intensities by its square, so each pixel meets about as many lights, as
+// bright, at every N. Every technique runs where it finishes in reasonable time: brute force and the
+// light-volume techniques (one draw per light, placed on the CPU) stop at kDensityVolumeLimit.
+std::vector<Scenario> densitySuite(const SuiteOptions& options) {
+  const std::vector<uint32_t> counts =
+      options.quick ? std::vector<uint32_t>{64, 256, 1024}
+                    : std::vector<uint32_t>{1024, 4096, 16384, 65536, 262144, 1048576, 4194304};
+  const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
+  std::vector<Scenario> out;
+  for (const uint32_t lights : counts) {
+    SceneRequest scene{kDefaultSceneName, lights, 1};
+    scene.lightRangeScale = float(std::cbrt(1024.0 / double(lights)));
+    scene.scaleIntensityWithRange = true;
+    const Scenario base = makeScenario("density", fmt::format("{} lights", lights), scene, size);
+    for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
+      const std::string& t = s.settings.technique;
+      if ((t == "forward" || t == "deferred" || t == "prepass") && lights > kDensityVolumeLimit)
+        s.skip = fmt::format("{} over {} lights takes seconds per frame", t, kDensityVolumeLimit);
+      else if (t == "forward" && lights > kForwardLightLimitOnCpu && options.cpuDevice &&
+               !options.fullForward)
+        s.skip = fmt::format("forward over {} lights on a CPU device takes hours; --full-forward runs it",
+                             kForwardLightLimitOnCpu);
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
 // What the tile size costs and saves: time and light-list memory of the LLL, tile 1 to 16.
 std::vector<Scenario> tilesSuite(const SuiteOptions& options) {
   const uint32_t lights = options.quick ? 64 : 1024;
@@ -179,13 +209,15 @@ std::string techniqueLabel(const RenderSettings& settings) {
 }
 
 const std::vector<std::string>& suiteNames() {
-  static const std::vector<std::string> names = {"threel", "scaling", "tiles", "overdraw", "smoke"};
+  static const std::vector<std::string> names = {"threel", "scaling",  "density",
+                                                 "tiles",  "overdraw", "smoke"};
   return names;
 }
 
 std::vector<Scenario> buildSuite(const std::string& suite, const SuiteOptions& options) {
   if (suite == "threel") return threelSuite(options);
   if (suite == "scaling") return scalingSuite(options);
+  if (suite == "density") return densitySuite(options);
   if (suite == "tiles") return tilesSuite(options);
   if (suite == "overdraw") return overdrawSuite(options);
   if (suite == "smoke") return smokeSuite(options);

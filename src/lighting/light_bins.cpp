@@ -27,8 +27,8 @@ LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_
   header_.lightCount = lightCount;
   maxEntries_ = context.properties().limits.maxStorageBufferRange / 4;
   const uint64_t cells = uint64_t(header_.cellsX) * header_.cellsY;
-  headerBuffer_ = Buffer(context, sizeof(gpu::LightBinHeader), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                                                   VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+  headerBuffer_ = Buffer(context, sizeof(gpu::LightBinHeader),
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                          MemoryUse::Readback, "light bins header");
   cells_ = Buffer(context, cells * sizeof(gpu::LightBinCell),
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device,
@@ -65,8 +65,7 @@ std::vector<ResourceUse> LightBins::reads(VkPipelineStageFlags2 stages) const {
 }
 
 void LightBins::clear(FrameContext& frame) {
-  frame.graph.pass("bins-clear",
-                   {uses(headerBuffer_, Use::TransferWrite), uses(cells_, Use::TransferWrite)},
+  frame.graph.pass("bins-clear", {uses(headerBuffer_, Use::TransferWrite), uses(cells_, Use::TransferWrite)},
                    [&](VkCommandBuffer cmd) {
                      gpu::LightBinHeader header = header_;
                      header.requested = 0;
@@ -82,29 +81,31 @@ void LightBins::build(FrameContext& frame) {
     return w;
   };
   const uint32_t lightGroups = divideRoundingUp(std::max(header_.lightCount, 1u), 64);
-  frame.graph.pass("bins-count",
-                   {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute)},
-                   [&, lightGroups](VkCommandBuffer cmd) {
-                     count_.bind(cmd);
-                     writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-                     vkCmdDispatch(cmd, lightGroups, 1, 1);
-                   });
-  frame.graph.pass("bins-scan",
-                   {uses(headerBuffer_, Use::StorageReadWrite, kCompute),
-                    uses(cells_, Use::StorageReadWrite, kCompute)},
-                   [&](VkCommandBuffer cmd) {
-                     scan_.bind(cmd);
-                     writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-                     vkCmdDispatch(cmd, 1, 1, 1);
-                   });
-  frame.graph.pass("bins-scatter",
-                   {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute),
-                    uses(entries_, Use::StorageWrite, kCompute)},
-                   [&, lightGroups](VkCommandBuffer cmd) {
-                     scatter_.bind(cmd);
-                     writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-                     vkCmdDispatch(cmd, lightGroups, 1, 1);
-                   });
+  frame.graph.pass(
+      "bins-count",
+      {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute)},
+      [&, lightGroups](VkCommandBuffer cmd) {
+        count_.bind(cmd);
+        writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+        vkCmdDispatch(cmd, lightGroups, 1, 1);
+      });
+  frame.graph.pass(
+      "bins-scan",
+      {uses(headerBuffer_, Use::StorageReadWrite, kCompute), uses(cells_, Use::StorageReadWrite, kCompute)},
+      [&](VkCommandBuffer cmd) {
+        scan_.bind(cmd);
+        writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+        vkCmdDispatch(cmd, 1, 1, 1);
+      });
+  frame.graph.pass(
+      "bins-scatter",
+      {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute),
+       uses(entries_, Use::StorageWrite, kCompute)},
+      [&, lightGroups](VkCommandBuffer cmd) {
+        scatter_.bind(cmd);
+        writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+        vkCmdDispatch(cmd, lightGroups, 1, 1);
+      });
   frame.graph.barriers({uses(headerBuffer_, Use::HostRead)});
 }
 

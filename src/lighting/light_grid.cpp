@@ -28,8 +28,8 @@ uint32_t parseGridDebugView(const std::string& name) {
   if (name == "none") return gpu::kDebugNone;
   if (name == "heatmap") return gpu::kDebugHeatmap;
   if (name == "tiles") return gpu::kDebugTiles;
-  throw InputError(fmt::format("--debug-view {}: the tiled and clustered techniques show none, heatmap or tiles",
-                               name));
+  throw InputError(
+      fmt::format("--debug-view {}: the tiled and clustered techniques show none, heatmap or tiles", name));
 }
 
 class LightGrid final : public Technique {
@@ -124,8 +124,8 @@ void LightGrid::buildLightData(FrameContext& frame) {
   });
   bins_.clear(frame);
   frame.graph.pass("grid-tile-range",
-                   {uses(frame.targets.depth, Use::Sampled, kCompute), uses(tileRange_, Use::StorageWrite, kCompute),
-                    bins_.farDepthWrite(kCompute)},
+                   {uses(frame.targets.depth, Use::Sampled, kCompute),
+                    uses(tileRange_, Use::StorageWrite, kCompute), bins_.farDepthWrite(kCompute)},
                    [&](VkCommandBuffer cmd) {
                      tileRangePipeline_.bind(cmd);
                      descriptors(frame)
@@ -148,10 +148,9 @@ void LightGrid::buildLightData(FrameContext& frame) {
     descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
     vkCmdDispatch(cmd, groupsX, groupsY, 1);
   });
-  std::vector<ResourceUse> write = {uses(tileRange_, Use::StorageRead, kCompute),
-                                    uses(clusters_, Use::StorageReadWrite, kCompute),
-                                    uses(indices_, Use::StorageWrite, kCompute),
-                                    uses(counters_, Use::StorageReadWrite, kCompute)};
+  std::vector<ResourceUse> write = {
+      uses(tileRange_, Use::StorageRead, kCompute), uses(clusters_, Use::StorageReadWrite, kCompute),
+      uses(indices_, Use::StorageWrite, kCompute), uses(counters_, Use::StorageReadWrite, kCompute)};
   write.insert(write.end(), binned.begin(), binned.end());
   frame.graph.pass("grid-write", write, [&, groupsX, groupsY](VkCommandBuffer cmd) {
     writePipeline_.bind(cmd);
@@ -194,7 +193,8 @@ std::vector<std::pair<std::string, double>> LightGrid::stats() const {
       {"index_bytes", double(uniforms_.params.y) * 4.0},
       {"cluster_bytes", double(clusters_.size()) + double(tileRange_.size())},
       {"longest_cluster", double(lastCounters_.longest)},
-      {"mean_cluster", double(lastCounters_.requested) / double(std::max(1u, lastCounters_.clustersWithLights))},
+      {"mean_cluster",
+       double(lastCounters_.requested) / double(std::max(1u, lastCounters_.clustersWithLights))},
       {"clusters_with_lights", double(lastCounters_.clustersWithLights)},
       {"overflows", double(overflows_)},
       {"build_mismatches", double(lastCounters_.mismatches)},
@@ -211,7 +211,8 @@ LightGridLists LightGrid::read() {
     std::memcpy(out.data(), bytes.data(), out.size() * 4);
     return out;
   };
-  const std::vector<uint32_t> ranges = words(tileRange_), clusters = words(clusters_), indices = words(indices_);
+  const std::vector<uint32_t> ranges = words(tileRange_), clusters = words(clusters_),
+                              indices = words(indices_);
   LightGridLists lists;
   lists.tilesX = tilesX_;
   lists.tilesY = tilesY_;

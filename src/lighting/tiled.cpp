@@ -7,8 +7,9 @@
 
 namespace lll {
 
-std::unique_ptr<Technique> createTiled(Context& context, const GpuScene& scene, const RenderSettings& settings,
-                                       const FrameTargets& targets, const VisibilityBuffer* visibility) {
+std::unique_ptr<Technique> createTiled(Context& context, const GpuScene& scene,
+                                       const RenderSettings& settings, const FrameTargets& targets,
+                                       const VisibilityBuffer* visibility) {
   return createLightGrid(context, scene, settings, targets, visibility, 2);
 }
 

@@ -86,7 +86,8 @@ void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets) {
                 divideRoundingUp(targets.height, gpu::kTileGroupSize), 1);
 }
 
-void requireStorageBufferFits(const Context& context, uint64_t count, uint64_t bytesEach, const std::string& what) {
+void requireStorageBufferFits(const Context& context, uint64_t count, uint64_t bytesEach,
+                              const std::string& what) {
   const uint64_t limit = context.properties().limits.maxStorageBufferRange;
   if (count * bytesEach <= limit) return;
   throw InputError(fmt::format(

@@ -92,7 +92,8 @@ inline uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) {
 // Throws InputError when `count` items of `bytesEach` bytes (`what`, e.g. "the light array") do not
 // fit in one storage buffer of `context`'s device (maxStorageBufferRange), naming the limit and the
 // largest count that fits.
-void requireStorageBufferFits(const Context& context, uint64_t count, uint64_t bytesEach, const std::string& what);
+void requireStorageBufferFits(const Context& context, uint64_t count, uint64_t bytesEach,
+                              const std::string& what);
 
 // A mesh pass onto the HDR target (cleared first when `clearHdr`), depth-tested read-only against
 // the prepass: binds `pipeline`, pushes meshPassDescriptors and draws the scene's `filter` draws.

@@ -48,7 +48,12 @@ Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings)
       throw InputError(fmt::format("scene '{}': has no geometry to place --lights in", name));
     const size_t first = scene.lights.size();
     scatterRandomLights(scene.lights, bounds, request.extraLights, request.seed);
-    for (size_t i = first; i < scene.lights.size(); ++i) scene.lights[i].range *= request.lightRangeScale;
+    const float intensityScale =
+        request.scaleIntensityWithRange ? request.lightRangeScale * request.lightRangeScale : 1.0f;
+    for (size_t i = first; i < scene.lights.size(); ++i) {
+      scene.lights[i].range *= request.lightRangeScale;
+      scene.lights[i].intensity *= intensityScale;
+    }
   }
   return scene;
 }

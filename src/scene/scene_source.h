@@ -16,6 +16,9 @@ struct SceneRequest {
   uint32_t extraLights = 0;  // --lights: scattered when the scene has none, added otherwise
   uint32_t seed = 1;
   float lightRangeScale = 1.0f;  // multiplies the ranges of the --lights lights (overdraw studies)
+  // Also multiply their intensities by lightRangeScale^2, so a light's radiance at a given fraction
+  // of its range is unchanged (the density study: more, smaller lights, the same exposure).
+  bool scaleIntensityWithRange = false;
   bool operator==(const SceneRequest&) const = default;
 };
 

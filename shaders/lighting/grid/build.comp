@@ -22,6 +22,9 @@ shared uint groupFarBits;
 shared uint candidates[64];
 shared uint threadTotals[64];
 shared uint groupBase;
+// Per thread and slice of its tile: the count (grid-count) or the write cursor and end (grid-write).
+shared uint slots[64 * kMaxGridSlices];
+shared uint ends[64 * kMaxGridSlices];
 
 void main() {
   uvec2 tilesSize = frame.counts.zw;
@@ -32,13 +35,11 @@ void main() {
   uint slices = gridSlices();
   float zNear = frame.depthParams.x;
   vec2 range = valid ? tileRange[tileIndex] : vec2(zNear);
-  // Per slice of this thread's tile: the count (grid-count) or the write cursor and end (grid-write).
-  uint slots[kMaxGridSlices];
-  uint ends[kMaxGridSlices];
+  uint row = me * kMaxGridSlices;
   for (uint s = 0u; s < slices; ++s) {
     uvec2 c = kWrite == 1u && valid ? clusters[tileIndex * slices + s] : uvec2(0u);
-    slots[s] = c.x;
-    ends[s] = c.x + c.y;
+    slots[row + s] = c.x;
+    ends[row + s] = c.x + c.y;
   }
   if (me == 0u) groupFarBits = 0u;
   barrier();
@@ -76,9 +77,9 @@ void main() {
       for (uint s = s0; s <= s1; ++s) {
         vec2 bounds = sliceBounds(range, s);
         if (!lightTouches(light, center, ownSlopes, bounds.x, bounds.y)) continue;
-        uint slot = slots[s]++;
+        uint slot = slots[row + s]++;
         // grid-write stays within what grid-count allocated, whatever the float rounding did.
-        if (kWrite == 1u && slot < ends[s] && slot < grid.params.y) gridLights[slot] = index;
+        if (kWrite == 1u && slot < ends[row + s] && slot < grid.params.y) gridLights[slot] = index;
       }
     }
     barrier();
@@ -87,19 +88,19 @@ void main() {
   if (kWrite == 1u) {
     // A cluster that got fewer lights than counted keeps only the ones written.
     for (uint s = 0u; valid && s < slices; ++s) {
-      uint written = min(slots[s], ends[s]);
+      uint written = min(slots[row + s], ends[row + s]);
       uvec2 c = clusters[tileIndex * slices + s];
-      if (written != ends[s]) {
+      if (written != ends[row + s]) {
         clusters[tileIndex * slices + s] = uvec2(c.x, written - c.x);
         atomicAdd(gridCounters.mismatches, 1u);
       }
-      if (slots[s] > ends[s]) atomicAdd(gridCounters.mismatches, 1u);
+      if (slots[row + s] > ends[row + s]) atomicAdd(gridCounters.mismatches, 1u);
     }
     return;
   }
   // grid-count: this thread's clusters' first entries, the group's in one atomic.
   uint total = 0u;
-  for (uint s = 0u; s < slices; ++s) total += slots[s];
+  for (uint s = 0u; s < slices; ++s) total += slots[row + s];
   threadTotals[me] = total;
   barrier();
   uint offset = 0u;
@@ -108,7 +109,7 @@ void main() {
   barrier();
   uint first = groupBase + offset;
   for (uint s = 0u; valid && s < slices; ++s) {
-    uint count = slots[s];
+    uint count = slots[row + s];
     clusters[tileIndex * slices + s] = uvec2(first, count);
     if (count > 0u) {
       atomicMax(gridCounters.longest, count);
