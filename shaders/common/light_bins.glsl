@@ -27,6 +27,12 @@ layout(std430, set = 0, binding = 12) LLL_BIN_CELLS_ACCESS buffer BinCellBlock {
 layout(std430, set = 0, binding = 13) LLL_BINS_ACCESS buffer BinLightBlock {
   uint binLights[];
 };
+#ifdef LLL_BINS_WRITE
+// The lights the count pass found too large for one thread (bin_lights.comp).
+layout(std430, set = 0, binding = 14) buffer LargeLightBlock {
+  uint largeLights[];
+};
+#endif
 
 // The range of binLights holding cell `cell`'s lights (clamped to the capacity: past it the frame
 // is drawn again with more room, see LightBins::afterFrame).
@@ -51,16 +57,16 @@ vec2 tangentSlopes(float coord, float z, float radius) {
   return vec2(coord * z - radius * t, coord * z + radius * t) / d;
 }
 
-// Cells (first xy, last zw, inclusive) covered by the sphere at view-depth-space `center` (z in
-// front of the eye) with `radius`; false when it is wholly behind the near plane or off screen.
-// A sphere crossing the near plane covers the whole screen (conservative).
-bool sphereCells(vec3 center, float radius, out uvec4 cells) {
-  cells = uvec4(0u);
+// The units (first xy, last zw, inclusive, clamped to 0..last) of `unitPixels` pixels a side that
+// the sphere at view-depth-space `center` (z in front of the eye) with `radius` covers on screen;
+// false when it is wholly behind the near plane or off screen. A sphere crossing the near plane
+// covers the whole screen (conservative).
+bool sphereRect(vec3 center, float radius, float unitPixels, uvec2 last, out uvec4 rect) {
+  rect = uvec4(0u);
   float zNear = frame.depthParams.x;
   if (center.z + radius < zNear) return false;
-  uvec2 last = uvec2(binHeader.cellsX, binHeader.cellsY) - 1u;
   if (center.z - radius <= zNear) {
-    cells = uvec4(0u, 0u, last);
+    rect = uvec4(0u, 0u, last);
     return true;
   }
   vec2 u = tangentSlopes(center.x, center.z, radius);
@@ -70,9 +76,32 @@ bool sphereCells(vec3 center, float radius, out uvec4 cells) {
                      pixelOfSlopeY(v.x) + 1.0);
   if (pixels.z < 0.0 || pixels.w < 0.0 || pixels.x >= frame.viewport.x || pixels.y >= frame.viewport.y)
     return false;
-  vec4 c = floor(max(pixels, vec4(0.0)) / float(binHeader.cellPixels));
-  cells = uvec4(min(uvec2(c.xy), last), min(uvec2(c.zw), last));
+  vec4 c = floor(max(pixels, vec4(0.0)) / unitPixels);
+  rect = uvec4(min(uvec2(c.xy), last), min(uvec2(c.zw), last));
   return true;
+}
+
+// The bins' cells the sphere covers.
+bool sphereCells(vec3 center, float radius, out uvec4 cells) {
+  return sphereRect(center, radius, float(binHeader.cellPixels), uvec2(binHeader.cellsX, binHeader.cellsY) - 1u,
+                    cells);
+}
+
+// The tiles of the 8x8-tile group starting at `groupFirst` that the sphere covers on screen, packed
+// as 4 x 8 bits (first x, first y, last x, last y, relative to the group): what a list build's
+// threads check before their exact test. Empty (first > last) when it covers none.
+uint sphereTilesInGroup(vec3 center, float radius, uvec2 groupFirst) {
+  uvec4 r;
+  if (!sphereRect(center, radius, float(frame.counts.y), frame.counts.zw - 1u, r)) return 0x00000101u;
+  ivec4 rel = ivec4(r) - ivec4(groupFirst, groupFirst);
+  if (rel.z < 0 || rel.w < 0 || rel.x > 7 || rel.y > 7) return 0x00000101u;
+  uvec4 c = uvec4(clamp(rel, ivec4(0), ivec4(7)));
+  return c.x | (c.y << 8) | (c.z << 16) | (c.w << 24);
+}
+
+bool groupTileInRect(uint packedRect, uvec2 local) {
+  uvec4 r = (uvec4(packedRect) >> uvec4(0u, 8u, 16u, 24u)) & 0xFFu;
+  return all(greaterThanEqual(local, r.xy)) && all(lessThanEqual(local, r.zw));
 }
 
 #endif

@@ -9,7 +9,7 @@
 
 LLL_NAMESPACE_BEGIN
 
-// Written by the bins' clear pass each frame; `requested` counted by the scatter, read back.
+// Written by the bins' clear pass each frame; `requested` counted by the scan, read back.
 struct LightBinHeader {
   uint requested;  // entries the scatter asked for, also past `capacity`: the size binLights needs
   uint capacity;   // entries binLights holds
@@ -17,8 +17,8 @@ struct LightBinHeader {
   uint cellsY;
   uint cellPixels;  // side of a cell in pixels
   uint lightCount;
-  uint pad0;
-  uint pad1;
+  uint largeCount;  // lights covering too many cells for one thread, listed by the count pass
+  uint pad;
 };
 LLL_CHECK_SIZE(LightBinHeader, 32);
 

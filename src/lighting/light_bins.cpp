@@ -15,6 +15,8 @@ namespace {
 // Initial entries per cell and growth past a request, so a slowly growing scene re-renders rarely.
 constexpr uint64_t kInitialEntriesPerCell = 64;
 constexpr double kGrowth = 1.25;
+// Workgroups that bin the lights covering many cells (bin_lights.comp), 64 threads each.
+constexpr uint32_t kLargeLightGroups = 256;
 constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 }  // namespace
 
@@ -33,10 +35,14 @@ LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_
   cells_ = Buffer(context, cells * sizeof(gpu::LightBinCell),
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device,
                   "light bins cells");
+  largeLights_ = Buffer(context, std::max<uint64_t>(lightCount, 1) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                        MemoryUse::Device, "light bins large lights");
   allocate(std::min(maxEntries_, std::max<uint64_t>(cells * kInitialEntriesPerCell, lightCount)));
   layout_ = PipelineLayout(context, {"lighting/bins/bin_lights.comp", "lighting/bins/bin_scan.comp"});
-  count_ = Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}});
-  scatter_ = Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 1}});
+  count_ = Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}, {1, 0}});
+  countLarge_ =
+      Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}, {1, 1}});
+  scatter_ = Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 1}, {1, 0}});
   scan_ = Pipeline(context, layout_, "lighting/bins/bin_scan.comp");
 }
 
@@ -78,34 +84,31 @@ void LightBins::build(FrameContext& frame) {
   auto writer = [&] {
     DescriptorWriter w = meshPassDescriptors(frame);
     bind(w);
+    w.storage(14, largeLights_.handle());
     return w;
   };
+  auto dispatch = [&](const char* name, const Pipeline& pipeline, std::vector<ResourceUse> used, uint32_t groups) {
+    frame.graph.pass(name, std::move(used), [&, groups](VkCommandBuffer cmd) {
+      pipeline.bind(cmd);
+      writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+      vkCmdDispatch(cmd, groups, 1, 1);
+    });
+  };
   const uint32_t lightGroups = divideRoundingUp(std::max(header_.lightCount, 1u), 64);
-  frame.graph.pass(
-      "bins-count",
-      {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute)},
-      [&, lightGroups](VkCommandBuffer cmd) {
-        count_.bind(cmd);
-        writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-        vkCmdDispatch(cmd, lightGroups, 1, 1);
-      });
-  frame.graph.pass(
-      "bins-scan",
-      {uses(headerBuffer_, Use::StorageReadWrite, kCompute), uses(cells_, Use::StorageReadWrite, kCompute)},
-      [&](VkCommandBuffer cmd) {
-        scan_.bind(cmd);
-        writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-        vkCmdDispatch(cmd, 1, 1, 1);
-      });
-  frame.graph.pass(
-      "bins-scatter",
-      {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute),
-       uses(entries_, Use::StorageWrite, kCompute)},
-      [&, lightGroups](VkCommandBuffer cmd) {
-        scatter_.bind(cmd);
-        writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-        vkCmdDispatch(cmd, lightGroups, 1, 1);
-      });
+  dispatch("bins-count", count_,
+           {uses(headerBuffer_, Use::StorageReadWrite, kCompute), uses(cells_, Use::StorageReadWrite, kCompute),
+            uses(largeLights_, Use::StorageWrite, kCompute)},
+           lightGroups);
+  dispatch("bins-count-large", countLarge_,
+           {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute),
+            uses(largeLights_, Use::StorageRead, kCompute)},
+           kLargeLightGroups);
+  dispatch("bins-scan", scan_,
+           {uses(headerBuffer_, Use::StorageReadWrite, kCompute), uses(cells_, Use::StorageReadWrite, kCompute)}, 1);
+  dispatch("bins-scatter", scatter_,
+           {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute),
+            uses(entries_, Use::StorageWrite, kCompute), uses(largeLights_, Use::StorageRead, kCompute)},
+           lightGroups + kLargeLightGroups);
   frame.graph.barriers({uses(headerBuffer_, Use::HostRead)});
 }
 
@@ -124,7 +127,7 @@ std::vector<std::pair<std::string, double>> LightBins::stats() const {
   return {{"bin_cells", double(header_.cellsX) * header_.cellsY},
           {"bin_entries_used", double(lastRequested_)},
           {"bin_entries_capacity", double(header_.capacity)},
-          {"bin_bytes", double(header_.capacity) * 4.0 + double(cells_.size())},
+          {"bin_bytes", double(header_.capacity) * 4.0 + double(cells_.size()) + double(largeLights_.size())},
           {"bin_overflows", double(overflows_)}};
 }
 

@@ -2,7 +2,7 @@
 // Coarse light bins: the first level of a two-level light culling (shared/light_bins_types.h).
 // Every frame, after the technique's tile-depth pass has written each cell's farthest depth:
 //   bins-count   one thread per light counts it in every cell its bounding sphere covers on screen
-//                and reaches in depth;
+//                and reaches in depth (bins-count-large: 64 threads per light covering many cells);
 //   bins-scan    prefix sum of the counts into each cell's first entry;
 //   bins-scatter the same visit appends each light's index to those cells.
 // A list build (lll's compute fill, the tiled and clustered grids) then gives each workgroup of
@@ -57,8 +57,10 @@ class LightBins {
   Buffer headerBuffer_;
   Buffer cells_;
   Buffer entries_;
+  Buffer largeLights_;
   PipelineLayout layout_;
   Pipeline count_;
+  Pipeline countLarge_;
   Pipeline scan_;
   Pipeline scatter_;
 };

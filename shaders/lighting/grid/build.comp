@@ -20,6 +20,7 @@ const uint kNoCandidate = 0xFFFFFFFFu;
 
 shared uint groupFarBits;
 shared uint candidates[64];
+shared uint candidateTiles[64];  // sphereTilesInGroup: which of the group's tiles a candidate may touch
 shared uint threadTotals[64];
 shared uint groupBase;
 // Per thread and slice of its tile: the count (grid-count) or the write cursor and end (grid-write).
@@ -57,14 +58,18 @@ void main() {
     if (base + me < binned.y) {
       uint index = binLights[binned.x + base + me];
       GpuLight light = lights[index];
-      if (lightTouches(light, toViewDepthSpace(light.positionRange.xyz), groupSlopes, zNear, groupFar))
+      vec3 center = toViewDepthSpace(light.positionRange.xyz);
+      if (lightTouches(light, center, groupSlopes, zNear, groupFar)) {
         candidate = index;
+        candidateTiles[me] = sphereTilesInGroup(center, light.positionRange.w, gl_WorkGroupID.xy * 8u);
+      }
     }
     candidates[me] = candidate;
     barrier();
     for (uint i = 0u; valid && i < 64u; ++i) {
       uint index = candidates[i];
-      if (index == kNoCandidate) continue;
+      // Only the tiles under the light's screen bounds run the exact tests.
+      if (index == kNoCandidate || !groupTileInRect(candidateTiles[i], gl_LocalInvocationID.xy)) continue;
       GpuLight light = lights[index];
       vec3 center = toViewDepthSpace(light.positionRange.xyz);
       if (!lightTouches(light, center, ownSlopes, zNear, range.y)) continue;

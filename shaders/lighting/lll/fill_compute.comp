@@ -18,6 +18,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 shared uint groupFarBits;
 shared uint candidateCount;
 shared uint candidates[64];
+shared uint candidateTiles[64];  // sphereTilesInGroup: which of the group's tiles a candidate may touch
 shared uint groupLinks;
 shared uint groupBase;
 
@@ -49,14 +50,21 @@ void main() {
     if (base + gl_LocalInvocationIndex < binned.y) {
       uint index = binLights[binned.x + base + gl_LocalInvocationIndex];
       GpuLight light = lights[index];
-      if (lightTouches(light, toViewDepthSpace(light.positionRange.xyz), groupSlopes, zNear, groupFar))
-        candidates[atomicAdd(candidateCount, 1u)] = index;
+      vec3 center = toViewDepthSpace(light.positionRange.xyz);
+      if (lightTouches(light, center, groupSlopes, zNear, groupFar)) {
+        uint slot = atomicAdd(candidateCount, 1u);
+        candidates[slot] = index;
+        candidateTiles[slot] = sphereTilesInGroup(center, light.positionRange.w, gl_WorkGroupID.xy * 8u);
+      }
     }
     barrier();
     uint count = candidateCount;
     // Which candidates touch this tile: one bit each (at most 64).
     uvec2 hits = uvec2(0u);
     for (uint i = 0u; valid && i < count; ++i) {
+      // Only the tiles under the light's screen bounds run the exact test: a small light is one
+      // or two tiles of the 64, so the group's work is about the links it makes.
+      if (!groupTileInRect(candidateTiles[i], gl_LocalInvocationID.xy)) continue;
       GpuLight light = lights[candidates[i]];
       if (lightTouches(light, toViewDepthSpace(light.positionRange.xyz), ownSlopes, zNear, far))
         hits[i >> 5] |= 1u << (i & 31u);
