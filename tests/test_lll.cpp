@@ -104,6 +104,7 @@ struct ListCase {
   uint32_t tile;
   uint32_t width;
   uint32_t height;
+  uint32_t fillSplits = 0;  // compute fill: workgroups per cell (0: by light count, here 1)
 };
 
 class LllLists : public ::testing::TestWithParam<ListCase> {};
@@ -116,6 +117,7 @@ TEST_P(LllLists, MatchCpuReference) {
   settings.tileSize = c.tile;
   settings.width = c.width;
   settings.height = c.height;
+  settings.lllFillSplits = c.fillSplits;
   const ListCheck check = checkLists(test::awkwardLightsScene(40), settings);
   EXPECT_GT(check.mustList, 100u);  // the scene really exercises the lists
   EXPECT_EQ(check.missing, 0u) << "lights the reference requires but the fill did not list";
@@ -128,11 +130,13 @@ INSTANTIATE_TEST_SUITE_P(Fills, LllLists,
                                            ListCase{"shells", 8, 333, 197}, ListCase{"compute", 16, 333, 197},
                                            ListCase{"ray", 16, 333, 197}, ListCase{"shells", 16, 333, 197},
                                            ListCase{"compute", 1, 111, 67}, ListCase{"ray", 1, 111, 67},
-                                           ListCase{"shells", 1, 111, 67}),
+                                           ListCase{"shells", 1, 111, 67}, ListCase{"compute", 8, 333, 197, 3},
+                                           ListCase{"compute", 1, 111, 67, 16}),
                          [](const auto& info) {
                            return std::string(info.param.fill) + "_tile" + std::to_string(info.param.tile) +
                                   "_" + std::to_string(info.param.width) + "x" +
-                                  std::to_string(info.param.height);
+                                  std::to_string(info.param.height) +
+                                  (info.param.fillSplits ? "_splits" + std::to_string(info.param.fillSplits) : "");
                          });
 
 // The compute fill reads the lights binned to its cell (lighting/light_bins.h). Many large lights

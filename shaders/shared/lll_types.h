@@ -27,7 +27,8 @@ struct LllUniforms {
   //   its centre ray (shells and rays are inflated by this so a tile is covered anywhere in it);
   // w: unused.
   vec4 grid;
-  // x link pool capacity (links), y link format, z debug view, w unused.
+  // x link pool capacity (links), y link format, z debug view, w workgroups per cell of the compute
+  // fill (each takes a part of the cell's binned lights).
   uvec4 params;
 };
 LLL_CHECK_SIZE(LllUniforms, 32);

@@ -69,6 +69,9 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u}));
   cmd.add_option("--lll-fill", s.lllFill, "light linked list fill: shells | ray | compute")
       ->check(CLI::IsMember({"shells", "ray", "compute"}));
+  cmd.add_option("--lll-fill-splits", s.lllFillSplits,
+                 "compute fill: workgroups sharing each 8x8-tile cell's lights (1 to 16; 0: 1 per 16,384 lights)")
+      ->check(CLI::Range(0u, 16u));
   cmd.add_option("--lll-link", s.lllLink, "link format: compact (8 B, <=256 lights) | wide (16 B) | auto")
       ->check(CLI::IsMember({"compact", "wide", "auto"}));
   cmd.add_option("--lll-shade", s.lllShade,

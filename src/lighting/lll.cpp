@@ -30,6 +30,12 @@ constexpr uint32_t kShellBatch = 0xFFFF;
 constexpr uint32_t kBoundsLayers = 8;
 // Shell meshes of the raster fills: sphere, cone, box (the fill_shell.vert specialization).
 constexpr uint32_t kShellShapes = 3;
+// Workgroups per cell of the compute fill: one below 16,384 lights (each thread then owns its
+// tile's head), up to 16 at a million, so the cells that see most lights are shared out.
+uint32_t fillSplitsFor(uint32_t lights) {
+  return std::clamp<uint32_t>((lights + 16383) / 16384, 1, 16);
+}
+
 // Growth beyond the requested links on overflow, so a slowly growing scene re-renders rarely.
 constexpr double kPoolGrowth = 1.25;
 
@@ -141,6 +147,7 @@ class LightLinkedList final : public Technique {
   uint32_t tilesX_ = 0;
   uint32_t tilesY_ = 0;
   uint32_t tiles_ = 0;
+  uint32_t fillSplits_ = 1;
   uint64_t poolCapacity_ = 0;
   uint64_t maxPoolLinks_ = 0;
   uint32_t overflows_ = 0;
@@ -189,7 +196,10 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   tilesX_ = divideRoundingUp(targets.width, tile);
   tilesY_ = divideRoundingUp(targets.height, tile);
   tiles_ = tilesX_ * tilesY_;
-  uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), 0);
+  if (settings.lllFillSplits > 16)
+    throw InputError(fmt::format("--lll-fill-splits {}: expected 0 (by light count) to 16", settings.lllFillSplits));
+  fillSplits_ = settings.lllFillSplits ? settings.lllFillSplits : fillSplitsFor(scene.lightCount());
+  uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),
                              float(targets.height) / float(tilesY_ * tile), 0.0f, 0.0f);
   // Half a tile's diagonal in pixels, 10% more for the rays' divergence across the tile.
@@ -371,7 +381,7 @@ void LightLinkedList::fillCompute(FrameContext& frame) {
                    [&](VkCommandBuffer cmd) {
                      computeFill_.bind(cmd);
                      descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
-                     vkCmdDispatch(cmd, divideRoundingUp(tilesX_, 8), divideRoundingUp(tilesY_, 8), 1);
+                     vkCmdDispatch(cmd, divideRoundingUp(tilesX_, 8) * fillSplits_, divideRoundingUp(tilesY_, 8), 1);
                    });
 }
 
@@ -470,6 +480,7 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
       {"link_bytes_each", double(linkBytes_)},
       {"overflows", double(overflows_)},
       {"tiles", double(tiles_)},
+      {"fill_workgroups_per_cell", double(fillSplits_)},
   };
   if (bounds_) s.push_back({"bounds_bytes", double(bounds_.size())});
   if (fill_ == LllFill::Compute) {

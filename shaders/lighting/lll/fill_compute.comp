@@ -23,8 +23,13 @@ shared uint groupLinks;
 shared uint groupBase;
 
 void main() {
+  // With many lights a cell's binned lights are split among lll.params.w workgroups (one part
+  // each), so the few cells that see most of the lights (down a long view) do not hold up the frame.
+  uint splits = max(lll.params.w, 1u);
+  uvec2 cell = uvec2(gl_WorkGroupID.x / splits, gl_WorkGroupID.y);
+  uint part = gl_WorkGroupID.x % splits;
   uvec2 tilesSize = frame.counts.zw;
-  uvec2 tile = gl_GlobalInvocationID.xy;
+  uvec2 tile = cell * 8u + gl_LocalInvocationID.xy;
   bool valid = tile.x < tilesSize.x && tile.y < tilesSize.y;
   uint tileIndex = tile.y * tilesSize.x + tile.x;
   float zNear = frame.depthParams.x;
@@ -32,15 +37,18 @@ void main() {
   if (gl_LocalInvocationIndex == 0u) groupFarBits = 0u;
   barrier();
   atomicMax(groupFarBits, floatBitsToUint(far));  // non-negative floats order like their bits
-  uvec2 groupFirst = gl_WorkGroupID.xy * 8u;
+  uvec2 groupFirst = cell * 8u;
   uvec2 groupLast = min(groupFirst + 7u, tilesSize - 1u);
   vec4 groupSlopes = slopesOfTiles(groupFirst, groupLast);
   vec4 ownSlopes = slopesOfTiles(tile, tile);
   barrier();
   float groupFar = uintBitsToFloat(groupFarBits);
 
-  uvec2 binned = binRange(gl_WorkGroupID.y * binHeader.cellsX + gl_WorkGroupID.x);
+  uvec2 binned = binRange(cell.y * binHeader.cellsX + cell.x);
+  uint partBegin = binned.y * part / splits;
+  binned = uvec2(binned.x + partBegin, binned.y * (part + 1u) / splits - partBegin);
   uint head = kLinkEnd;
+  uint tail = kLinkEnd, tailLight = 0u;  // this part's first link, the end of its chain
   for (uint base = 0u; base < binned.y; base += 64u) {
     if (gl_LocalInvocationIndex == 0u) {
       candidateCount = 0u;
@@ -54,7 +62,7 @@ void main() {
       if (lightTouches(light, center, groupSlopes, zNear, groupFar)) {
         uint slot = atomicAdd(candidateCount, 1u);
         candidates[slot] = index;
-        candidateTiles[slot] = sphereTilesInGroup(center, light.positionRange.w, gl_WorkGroupID.xy * 8u);
+        candidateTiles[slot] = sphereTilesInGroup(center, light.positionRange.w, groupFirst);
       }
     }
     barrier();
@@ -84,10 +92,23 @@ void main() {
         GpuLight light = lights[candidates[i]];
         float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
         writeLink(link, candidates[i], z - halfDepth, z + halfDepth, head);
+        if (head == kLinkEnd) {
+          tail = link;
+          tailLight = candidates[i];
+        }
         head = link++;
       }
     }
     barrier();
   }
-  if (valid) tileHeads[tileIndex] = head;
+  if (!valid) return;
+  if (splits == 1u) {
+    tileHeads[tileIndex] = head;
+  } else if (head != kLinkEnd) {
+    // Parts of one cell share its tiles' lists: splice this part's chain in at the head.
+    uint previous = atomicExchange(tileHeads[tileIndex], head);
+    GpuLight light = lights[tailLight];
+    float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
+    writeLink(tail, tailLight, z - halfDepth, z + halfDepth, previous);
+  }
 }
