@@ -1,4 +1,4 @@
-// The light grid's buffers (set 0, bindings 3 to 7) and its clusters: which slice of its tile a
+// The light grid's buffers (set 0, bindings 3 to 8) and its clusters: which slice of its tile a
 // depth falls in, and the depth bounds of a slice. Build passes define GRID_BUILD_PASS.
 #ifndef LLL_GRID_DATA_GLSL
 #define LLL_GRID_DATA_GLSL
@@ -28,6 +28,10 @@ layout(std430, set = 0, binding = 6) GRID_ACCESS buffer GridLightBlock {
 #ifdef GRID_BUILD_PASS
 layout(std430, set = 0, binding = 7) buffer GridCounterBlock {
   GridCounters gridCounters;
+};
+// Per cluster: the next free entry of its range while grid-write appends.
+layout(std430, set = 0, binding = 8) buffer ClusterCursorBlock {
+  uint clusterCursors[];
 };
 #endif
 

@@ -15,7 +15,8 @@ LLL_CONST(float, kGridSliceSlack, 1e-3f);
 
 // Written by the CPU once per frame.
 struct GridUniforms {
-  uvec4 params;  // x slices per tile (2 for tiled), y index capacity, z debug view, w unused
+  // x slices per tile (2 for tiled), y index capacity, z debug view, w workgroups sharing a cell.
+  uvec4 params;
 };
 LLL_CHECK_SIZE(GridUniforms, 16);
 
@@ -24,7 +25,7 @@ struct GridCounters {
   uint requested;  // index entries the build asked for, also past the capacity
   uint longest;    // most lights in one cluster
   uint clustersWithLights;
-  uint mismatches;  // clusters grid-write did not fill exactly as grid-count counted (should be 0)
+  uint mismatches;  // clusters grid-write did not fill exactly as grid-count counted (expected 0)
 };
 LLL_CHECK_SIZE(GridCounters, 16);
 

@@ -70,8 +70,8 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--lll-fill", s.lllFill, "light linked list fill: shells | ray | compute")
       ->check(CLI::IsMember({"shells", "ray", "compute"}));
   cmd.add_option("--lll-fill-splits", s.lllFillSplits,
-                 "compute fill: workgroups sharing each 8x8-tile cell's lights (1 to 16; 0: 1 per 16,384 lights)")
-      ->check(CLI::Range(0u, 16u));
+                 "compute fill: workgroups sharing each 8x8-tile cell's lights (1 to 64; 0: 1 per 1,024 lights)")
+      ->check(CLI::Range(0u, 64u));
   cmd.add_option("--lll-link", s.lllLink, "link format: compact (8 B, <=256 lights) | wide (16 B) | auto")
       ->check(CLI::IsMember({"compact", "wide", "auto"}));
   cmd.add_option("--lll-shade", s.lllShade,

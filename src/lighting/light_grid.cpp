@@ -62,12 +62,15 @@ class LightGrid final : public Technique {
   Buffer clusters_;
   Buffer indices_;
   Buffer counters_;
+  Buffer cursors_;
   LightBins bins_;
   VkSampler depthSampler_ = VK_NULL_HANDLE;
   PipelineLayout layout_;
   Pipeline tileRangePipeline_;
   Pipeline countPipeline_;
+  Pipeline allocPipeline_;
   Pipeline writePipeline_;
+  Pipeline finishPipeline_;
 };
 
 LightGrid::LightGrid(Context& context, const GpuScene& scene, const RenderSettings& settings,
@@ -79,11 +82,14 @@ LightGrid::LightGrid(Context& context, const GpuScene& scene, const RenderSettin
       tiles_(tilesX_ * tilesY_),
       maxEntries_(context.properties().limits.maxStorageBufferRange / 4) {
   validateTileSize(settings.tileSize);
-  uniforms_.params = glm::uvec4(slices, 0, parseGridDebugView(settings.debugView), 0);
+  uniforms_.params =
+      glm::uvec4(slices, 0, parseGridDebugView(settings.debugView), cellSplitsFor(scene.lightCount()));
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   uniformBuffer_ = Buffer(context, sizeof(gpu::GridUniforms), storage, MemoryUse::Upload, "grid uniforms");
   tileRange_ = Buffer(context, uint64_t(tiles_) * 8, storage, MemoryUse::Device, "grid tile ranges");
-  clusters_ = Buffer(context, uint64_t(tiles_) * slices * 8, storage, MemoryUse::Device, "grid clusters");
+  clusters_ = Buffer(context, uint64_t(tiles_) * slices * 8, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                     MemoryUse::Device, "grid clusters");
+  cursors_ = Buffer(context, uint64_t(tiles_) * slices * 4, storage, MemoryUse::Device, "grid cluster cursors");
   counters_ = Buffer(context, sizeof(gpu::GridCounters), storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                      MemoryUse::Readback, "grid counters");
   allocate(std::min(maxEntries_, uint64_t(tiles_) * kInitialEntriesPerTile));
@@ -92,10 +98,13 @@ LightGrid::LightGrid(Context& context, const GpuScene& scene, const RenderSettin
   info.magFilter = info.minFilter = VK_FILTER_NEAREST;
   info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &depthSampler_));
-  layout_ = PipelineLayout(context, {"lighting/grid/tile_range.comp", "lighting/grid/build.comp"});
+  layout_ = PipelineLayout(context, {"lighting/grid/tile_range.comp", "lighting/grid/build.comp",
+                                     "lighting/grid/grid_tiles.comp"});
   tileRangePipeline_ = Pipeline(context, layout_, "lighting/grid/tile_range.comp");
   countPipeline_ = Pipeline(context, layout_, "lighting/grid/build.comp", SpecializationConstants{{0, 0}});
   writePipeline_ = Pipeline(context, layout_, "lighting/grid/build.comp", SpecializationConstants{{0, 1}});
+  allocPipeline_ = Pipeline(context, layout_, "lighting/grid/grid_tiles.comp", SpecializationConstants{{0, 0}});
+  finishPipeline_ = Pipeline(context, layout_, "lighting/grid/grid_tiles.comp", SpecializationConstants{{0, 1}});
 }
 
 void LightGrid::allocate(uint64_t entries) {
@@ -112,16 +121,18 @@ void LightGrid::allocate(uint64_t entries) {
 DescriptorWriter LightGrid::descriptors(const FrameContext& frame) const {
   DescriptorWriter writer = meshPassDescriptors(frame);
   lighting().bind(writer);
-  writer.storage(7, counters_.handle());
+  writer.storage(7, counters_.handle()).storage(8, cursors_.handle());
   bins_.bind(writer);
   return writer;
 }
 
 void LightGrid::buildLightData(FrameContext& frame) {
   uniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
-  frame.graph.pass("grid-clear", {uses(counters_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
-    vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
-  });
+  frame.graph.pass("grid-clear", {uses(counters_, Use::TransferWrite), uses(clusters_, Use::TransferWrite)},
+                   [&](VkCommandBuffer cmd) {
+                     vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+                     vkCmdFillBuffer(cmd, clusters_.handle(), 0, VK_WHOLE_SIZE, 0);  // grid-count adds
+                   });
   bins_.clear(frame);
   frame.graph.pass("grid-tile-range",
                    {uses(frame.targets.depth, Use::Sampled, kCompute),
@@ -136,27 +147,37 @@ void LightGrid::buildLightData(FrameContext& frame) {
                                    divideRoundingUp(tilesY_, gpu::kTileGroupSize), 1);
                    });
   bins_.build(frame);
-  const uint32_t groupsX = divideRoundingUp(tilesX_, gpu::kTileGroupSize);
+  const uint32_t groupsX = divideRoundingUp(tilesX_, gpu::kTileGroupSize) * uniforms_.params.w;
   const uint32_t groupsY = divideRoundingUp(tilesY_, gpu::kTileGroupSize);
-  const std::vector<ResourceUse> binned = bins_.reads(kCompute);
-  std::vector<ResourceUse> count = {uses(tileRange_, Use::StorageRead, kCompute),
-                                    uses(clusters_, Use::StorageWrite, kCompute),
-                                    uses(counters_, Use::StorageReadWrite, kCompute)};
-  count.insert(count.end(), binned.begin(), binned.end());
-  frame.graph.pass("grid-count", count, [&, groupsX, groupsY](VkCommandBuffer cmd) {
-    countPipeline_.bind(cmd);
-    descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-    vkCmdDispatch(cmd, groupsX, groupsY, 1);
-  });
-  std::vector<ResourceUse> write = {
-      uses(tileRange_, Use::StorageRead, kCompute), uses(clusters_, Use::StorageReadWrite, kCompute),
-      uses(indices_, Use::StorageWrite, kCompute), uses(counters_, Use::StorageReadWrite, kCompute)};
-  write.insert(write.end(), binned.begin(), binned.end());
-  frame.graph.pass("grid-write", write, [&, groupsX, groupsY](VkCommandBuffer cmd) {
-    writePipeline_.bind(cmd);
-    descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-    vkCmdDispatch(cmd, groupsX, groupsY, 1);
-  });
+  const uint32_t tileGroups = divideRoundingUp(tiles_, 64);
+  auto dispatch = [&](const char* name, const Pipeline& pipeline, std::vector<ResourceUse> used, uint32_t x,
+                      uint32_t y) {
+    frame.graph.pass(name, std::move(used), [&, x, y](VkCommandBuffer cmd) {
+      pipeline.bind(cmd);
+      descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+      vkCmdDispatch(cmd, x, y, 1);
+    });
+  };
+  auto withBins = [&](std::vector<ResourceUse> used) {
+    const std::vector<ResourceUse> binned = bins_.reads(kCompute);
+    used.insert(used.end(), binned.begin(), binned.end());
+    return used;
+  };
+  dispatch("grid-count", countPipeline_,
+           withBins({uses(tileRange_, Use::StorageRead, kCompute), uses(clusters_, Use::StorageReadWrite, kCompute)}),
+           groupsX, groupsY);
+  dispatch("grid-alloc", allocPipeline_,
+           {uses(clusters_, Use::StorageReadWrite, kCompute), uses(cursors_, Use::StorageWrite, kCompute),
+            uses(counters_, Use::StorageReadWrite, kCompute)},
+           tileGroups, 1);
+  dispatch("grid-write", writePipeline_,
+           withBins({uses(tileRange_, Use::StorageRead, kCompute), uses(clusters_, Use::StorageRead, kCompute),
+                     uses(cursors_, Use::StorageReadWrite, kCompute), uses(indices_, Use::StorageWrite, kCompute)}),
+           groupsX, groupsY);
+  dispatch("grid-finish", finishPipeline_,
+           {uses(clusters_, Use::StorageReadWrite, kCompute), uses(cursors_, Use::StorageRead, kCompute),
+            uses(counters_, Use::StorageReadWrite, kCompute)},
+           tileGroups, 1);
   frame.graph.barriers({uses(counters_, Use::HostRead)});
 }
 
@@ -191,7 +212,8 @@ std::vector<std::pair<std::string, double>> LightGrid::stats() const {
       {"index_entries_used", double(lastCounters_.requested)},
       {"index_capacity", double(uniforms_.params.y)},
       {"index_bytes", double(uniforms_.params.y) * 4.0},
-      {"cluster_bytes", double(clusters_.size()) + double(tileRange_.size())},
+      {"cluster_bytes", double(clusters_.size()) + double(cursors_.size()) + double(tileRange_.size())},
+      {"workgroups_per_cell", double(uniforms_.params.w)},
       {"longest_cluster", double(lastCounters_.longest)},
       {"mean_cluster",
        double(lastCounters_.requested) / double(std::max(1u, lastCounters_.clustersWithLights))},

@@ -3,7 +3,8 @@
 // (clustered) arrays of light indices, built in compute each frame and walked by every shading
 // pass through the "grid" lighting interface (shaders/lighting/grid/lighting.glsl).
 // Passes: grid-clear -> bins-clear -> grid-tile-range (each tile's nearest and farthest surface)
-// -> bins-count/scan/scatter (lighting/light_bins.h) -> grid-build.
+// -> bins-count/scan/scatter (lighting/light_bins.h) -> grid-count (lights per cluster) ->
+// grid-alloc (each tile's ranges) -> grid-write (the indices) -> grid-finish (checks, statistics).
 // Each tile has `slices` clusters: slice 0 holds the lights in front of the tile's nearest surface
 // (what glass and particles there need), slices 1.. split [nearest, farthest] exponentially.
 // Tiled is 2 slices: Harada's per-tile min/max culling plus the front list; clustered is

@@ -30,12 +30,6 @@ constexpr uint32_t kShellBatch = 0xFFFF;
 constexpr uint32_t kBoundsLayers = 8;
 // Shell meshes of the raster fills: sphere, cone, box (the fill_shell.vert specialization).
 constexpr uint32_t kShellShapes = 3;
-// Workgroups per cell of the compute fill: one below 16,384 lights (each thread then owns its
-// tile's head), up to 16 at a million, so the cells that see most lights are shared out.
-uint32_t fillSplitsFor(uint32_t lights) {
-  return std::clamp<uint32_t>((lights + 16383) / 16384, 1, 16);
-}
-
 // Growth beyond the requested links on overflow, so a slowly growing scene re-renders rarely.
 constexpr double kPoolGrowth = 1.25;
 
@@ -196,9 +190,10 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   tilesX_ = divideRoundingUp(targets.width, tile);
   tilesY_ = divideRoundingUp(targets.height, tile);
   tiles_ = tilesX_ * tilesY_;
-  if (settings.lllFillSplits > 16)
-    throw InputError(fmt::format("--lll-fill-splits {}: expected 0 (by light count) to 16", settings.lllFillSplits));
-  fillSplits_ = settings.lllFillSplits ? settings.lllFillSplits : fillSplitsFor(scene.lightCount());
+  if (settings.lllFillSplits > kMaxCellSplits)
+    throw InputError(fmt::format("--lll-fill-splits {}: expected 0 (by light count) to {}", settings.lllFillSplits,
+                                 kMaxCellSplits));
+  fillSplits_ = settings.lllFillSplits ? settings.lllFillSplits : cellSplitsFor(scene.lightCount());
   uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),
                              float(targets.height) / float(tilesY_ * tile), 0.0f, 0.0f);

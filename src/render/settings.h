@@ -27,7 +27,8 @@ struct RenderSettings {
   std::string raster = "auto";
   uint32_t tileSize = 8;
   uint32_t linksPerTile = 32;      // initial link pool: tiles * this, grown on overflow
-  uint32_t lllFillSplits = 0;      // compute fill workgroups per cell (1 to 16); 0: by light count
+  // Workgroups sharing each cell's lights in lll's compute fill (1 to 64); 0: by light count.
+  uint32_t lllFillSplits = 0;
   std::string debugView = "none";  // none | heatmap | bounds | tiles
   // Clustered shading (technique "clustered"): depth slices per tile behind its front slice.
   uint32_t clusterSlices = 16;
