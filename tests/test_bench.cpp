@@ -336,7 +336,7 @@ ScenarioResult fakeResult(const std::string& suite, const std::string& name, con
 // Charts from made-up numbers, with techniques that may not be built yet.
 BenchReport syntheticReport() {
   BenchReport report;
-  report.suites = {"scaling", "threel", "tiles"};
+  report.suites = {"scaling", "density", "threel", "tiles"};
   for (const uint32_t lights : {16u, 256u, 4096u}) {
     const double l = lights;
     report.results.push_back(fakeResult("scaling", fmt::format("{} lights", lights), "forward", lights,
@@ -351,6 +351,19 @@ BenchReport syntheticReport() {
     report.results.push_back(fakeResult(
         "threel", name, "lll", 16,
         {{"depth-prepass", 1, 1, 1}, {"lll-fill", 2, 2, 2}, {"lll-shade", 3, 3, 3}, {"frame", 6, 6, 6}}));
+  }
+  for (const uint32_t lights : {1024u, 65536u}) {
+    const double l = lights / 1024.0;
+    report.results.push_back(fakeResult("density", fmt::format("{} lights", lights), "forward", lights,
+                                        {{"visibility", 0.5, 0.5, 0.5},
+                                         {"shade-opaque", 2.0 * l, 2.0 * l, 2.0 * l},
+                                         {"glass", 1.0 * l, 1.0 * l, 1.0 * l},
+                                         {"frame", 3.5 * l, 3.4 * l, 3.6 * l}}));
+    report.results.push_back(fakeResult("density", fmt::format("{} lights", lights), "tiled", lights,
+                                        {{"visibility", 0.5, 0.5, 0.5},
+                                         {"grid-count", 0.2 * l, 0.2 * l, 0.2 * l},
+                                         {"shade-opaque", 0.3 * l, 0.3 * l, 0.3 * l},
+                                         {"frame", 1.0 + 0.5 * l, 1.0 + 0.5 * l, 1.0 + 0.5 * l}}));
   }
   for (const uint32_t tile : {1u, 2u, 4u, 8u, 16u}) {
     ScenarioResult r = fakeResult("tiles", fmt::format("tile {}", tile), "lll", 1024,
@@ -368,9 +381,65 @@ TEST(BenchCharts, EverySuiteWithResultsGetsAValidPng) {
   const auto charts = writeCharts(syntheticReport(), dir);
   EXPECT_TRUE(fs::exists(dir / "charts.gp"));
   if (gnuplotInstalled()) {
-    EXPECT_EQ(charts.size(), 3u);
-    for (const fs::path& png : {dir / "scaling.png", dir / "threel.png", dir / "tiles.png"}) expectPng(png);
+    EXPECT_EQ(charts.size(), 5u);
+    for (const fs::path& png : {dir / "scaling.png", dir / "density.png", dir / "density-passes.png",
+                                dir / "threel.png", dir / "tiles.png"})
+      expectPng(png);
   }
+  // The per-pass density chart: a technique's own passes (tiled's grid-count) and its shading,
+  // never a surface pass, and no series for what a technique lacks (forward has no own passes).
+  std::ifstream data(dir / "density-passes.dat");
+  const std::string text((std::istreambuf_iterator<char>(data)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("# tiled: own passes"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n65536 12.8 12.8 12.8\n"), std::string::npos) << text;  // grid-count 0.2 x 64
+  EXPECT_EQ(text.find("# forward: own passes"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n1024 3 3 3\n"), std::string::npos) << text;  // forward: shade-opaque + glass
+  fs::remove_all(dir);
+}
+
+// --replot: results.json holds what the charts need; reading it back gives the same charts.
+TEST(BenchCharts, ReplotReadsWhatResultsJsonWrote) {
+  const fs::path dir = freshDir("bench-replot");
+  fs::create_directories(dir);
+  BenchReport written = syntheticReport();
+  written.device.name = "test device";
+  written.device.driver = "test driver";
+  written.commit = "abc";
+  writeResultsJson(written, dir / "results.json");
+  const BenchReport read = readResultsJson(dir / "results.json");
+  EXPECT_EQ(read.suites, written.suites);
+  EXPECT_EQ(read.device.name, "test device");
+  ASSERT_EQ(read.results.size(), written.results.size());
+  for (size_t i = 0; i < read.results.size(); ++i) {
+    const ScenarioResult &a = read.results[i], &b = written.results[i];
+    EXPECT_EQ(a.scenario.suite, b.scenario.suite);
+    EXPECT_EQ(techniqueLabel(a.scenario.settings), techniqueLabel(b.scenario.settings));
+    EXPECT_EQ(a.lightCount, b.lightCount);
+    ASSERT_EQ(a.passes.size(), b.passes.size());
+    for (size_t p = 0; p < a.passes.size(); ++p) {
+      EXPECT_EQ(a.passes[p].name, b.passes[p].name);
+      EXPECT_DOUBLE_EQ(a.passes[p].medianMs, b.passes[p].medianMs);
+    }
+  }
+  const auto charts = writeCharts(read, dir);
+  if (gnuplotInstalled()) EXPECT_EQ(charts.size(), 5u);
+  fs::remove_all(dir);
+}
+
+TEST(BenchCli, ReplotOfABrokenResultsFileIsBadInputNamingIt) {
+  const fs::path dir = freshDir("bench-replot-broken");
+  fs::create_directories(dir);
+  std::ofstream(dir / "results.json") << "{\"device\": 3";
+  const std::string command = std::string(LLL_BINARY) + " bench --replot " + dir.string() + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buffer[256];
+  while (fgets(buffer, sizeof(buffer), pipe)) output += buffer;
+  const int status = pclose(pipe);
+  EXPECT_EQ(WEXITSTATUS(status), 2) << output;
+  EXPECT_NE(output.find((dir / "results.json").string()), std::string::npos) << output;
+  EXPECT_FALSE(fs::exists(dir / "charts.gp"));
   fs::remove_all(dir);
 }
 

@@ -136,6 +136,9 @@ void addBenchOptions(CLI::App& cmd, lll::bench::BenchOptions& options) {
   cmd.add_option("--device", options.device.device, "auto | gpu | cpu | INDEX (see `lll devices`)");
   cmd.add_flag("--validate", options.device.validation,
                "Khronos validation layers on; any message fails the run");
+  cmd.add_option("--replot", options.replotDir,
+                 "run nothing: redraw the charts of DIR from its results.json (results from a machine without "
+                 "gnuplot)");
 }
 
 void addLllMemoryOptions(CLI::App& cmd, lll::LllMemoryQuery& query) {

@@ -12,6 +12,7 @@
 
 #include "bench/alu_probe.h"
 #include "bench/progress.h"
+#include "bench/report.h"
 #include "lighting/technique.h"
 #include "particles/presets.h"
 #include "render/renderer.h"
@@ -305,6 +306,12 @@ void installStopHandlers() {
 }  // namespace
 
 int runBenchCommand(const BenchOptions& options) {
+  if (!options.replotDir.empty()) {
+    const BenchReport report = readResultsJson(options.replotDir / "results.json");
+    const auto charts = writeCharts(report, options.replotDir);
+    fmt::print(stderr, "lll: bench: {} charts redrawn in {}\n", charts.size(), options.replotDir.string());
+    return charts.empty() ? 1 : 0;
+  }
   checkNames(options);  // before the slow start of Vulkan
   checkOutputFolder(options.outDir);
   installStopHandlers();

@@ -26,6 +26,9 @@ struct BenchOptions {
   std::optional<uint32_t> timedFrames;   // default kTimedFrames (kQuickTimedFrames with quick)
   std::filesystem::path outDir = "bench-out";
   ContextOptions device;
+  // --replot DIR: no run; redraw DIR's charts from its results.json (for results measured on a
+  // machine without gnuplot).
+  std::filesystem::path replotDir;
 };
 
 // Warm-up lets the LLL grow its link pool and the driver settle; the median of the timed frames

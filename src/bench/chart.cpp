@@ -72,15 +72,17 @@ void writeFile(const fs::path& path, const std::string& text) {
   out << text;
 }
 
-// The passes a technique builds its light data with: everything but the surfaces, the shading
-// passes every technique shares and the frame itself.
-bool isLightDataPass(const std::string& name) {
-  return name != "visibility" && name != "shade-opaque" && name != "glass" && name != "tonemap" &&
-         name != "frame" && !name.starts_with("particles") && name != "alu-probe";
+// A technique's own passes: everything but the surfaces every technique draws (visibility buffer
+// or depth prepass and G-buffer), the shading passes they share, tonemap and the frame itself.
+// Light lists for lll, tiled and clustered; G-buffer and light volumes for deferred and pre-pass.
+bool isOwnPass(const std::string& name) {
+  return name != "visibility" && name != "visibility-resolve" && name != "depth-prepass" && name != "gbuffer" &&
+         name != "shade-opaque" && name != "glass" && name != "tonemap" && name != "frame" &&
+         !name.starts_with("particles") && name != "alu-probe";
 }
 
-// A log-log chart of `suite`'s times against light count, one line per technique (per technique
-// and measure with `perPass`: its light-data passes, dashed, and its shading passes), min-max as
+// A log-log chart of `suite`'s times against light count, one line per technique (with `perPass`
+// two in the technique's colour: its own passes dashed, shade-opaque + glass solid), min-max as
 // error bars on frame times.
 std::optional<std::string> lightCountChart(const BenchReport& report, const fs::path& dir,
                                            const std::string& suite, const std::string& file, bool perPass,
@@ -90,18 +92,21 @@ std::optional<std::string> lightCountChart(const BenchReport& report, const fs::
   const std::string stem = file.substr(0, file.size() - 4);
   std::string data, plots;
   int index = 0;
+  int color = 0;
   auto addSeries = [&](const std::string& title, const std::string& style, auto value) {
-    data += fmt::format("# {}: lights ms min_ms max_ms\n", title);
+    std::string points;
     for (const ScenarioResult* r : results)
       if (const auto v = value(*r))
-        data += fmt::format("{} {} {} {}\n", r->lightCount, (*v)[0], (*v)[1], (*v)[2]);
-    data += "\n\n";
-    plots += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with {} title {}", index ? ", " : "plot ", stem,
-                         index, style, gnuplotString(title));
+        points += fmt::format("{} {} {} {}\n", r->lightCount, (*v)[0], (*v)[1], (*v)[2]);
+    if (points.empty()) return;  // an empty block would shift gnuplot's indices
+    data += fmt::format("# {}: lights ms min_ms max_ms\n{}\n\n", title, points);
+    plots += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with {} lc {} title {}", index ? ", " : "plot ", stem,
+                         index, style, color, gnuplotString(title));
     ++index;
   };
   using Triple = std::optional<std::array<double, 3>>;
   for (const std::string& label : uniqueLabels(results)) {
+    ++color;
     auto mine = [&](const ScenarioResult& r) { return techniqueLabel(r.scenario.settings) == label; };
     if (!perPass) {
       addSeries(label, "yerrorlines lw 2 pt 7", [&](const ScenarioResult& r) -> Triple {
@@ -111,22 +116,21 @@ std::optional<std::string> lightCountChart(const BenchReport& report, const fs::
       });
       continue;
     }
-    auto sum = [&](const ScenarioResult& r, bool lightData) -> Triple {
+    auto sum = [&](const ScenarioResult& r, bool own) -> Triple {
       if (!mine(r)) return std::nullopt;
       double ms = 0.0;
       bool any = false;
       for (const PassSummary& p : r.passes)
-        if (isLightDataPass(p.name) == lightData &&
-            (lightData || p.name == "shade-opaque" || p.name == "glass")) {
+        if (own ? isOwnPass(p.name) : (p.name == "shade-opaque" || p.name == "glass")) {
           ms += p.medianMs;
           any = true;
         }
       if (!any) return std::nullopt;
       return std::array<double, 3>{ms, ms, ms};
     };
-    addSeries(label + ": light data", "linespoints dt 2 lw 2 pt 6",
+    addSeries(label + ": own passes", "linespoints dt 2 lw 2 pt 6",
               [&](const ScenarioResult& r) { return sum(r, true); });
-    addSeries(label + ": shading", "linespoints lw 2 pt 7",
+    addSeries(label + ": shade-opaque + glass", "linespoints lw 2 pt 7",
               [&](const ScenarioResult& r) { return sum(r, false); });
   }
   writeFile(dir / (stem + ".dat"), data);
@@ -136,12 +140,12 @@ std::optional<std::string> lightCountChart(const BenchReport& report, const fs::
   return fmt::format(
       "{}\nset output '{}'\n"
       "set title {}\nset xlabel 'lights in the scene (its own plus the random ones added)'\n"
-      "set ylabel {}\nset logscale xy\n"
+      "set ylabel {}\nset logscale xy\nset format x '%.0f'\n"
       "set xrange [{}:{}]\nset xtics ({})\nset grid xtics ytics mytics\nset key top left box opaque\n{}\n",
       terminal(1280, 800), file,
       gnuplotString(fmt::format("{}: {}, {}x{}\n{}", what, results.front()->scenario.scene.scene, s.width,
                                 s.height, subtitle(report))),
-      gnuplotString(perPass ? "GPU ms (median): light-data passes dashed, shade-opaque + glass solid"
+      gnuplotString(perPass ? "GPU ms (median): the technique's own passes dashed, shade-opaque + glass solid"
                             : "GPU frame time, ms (median; bars: min to max)"),
       double(*counts.begin()) / 1.25, double(*counts.rbegin()) * 1.25, fmt::join(counts, ", "), plots);
 }

@@ -174,4 +174,50 @@ void writeReport(const BenchReport& report, const std::filesystem::path& dir) {
   writeCharts(report, dir);
 }
 
+BenchReport readResultsJson(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot read it", path.string()));
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    BenchReport report;
+    report.device.name = j.at("device").get<std::string>();
+    report.device.driver = j.at("driver").get<std::string>();
+    report.commit = j.at("commit").get<std::string>();
+    report.date = j.at("date").get<std::string>();
+    report.quick = j.value("quick", false);
+    report.timestamps = j.value("timestamps", true);
+    report.suites = j.at("suites").get<std::vector<std::string>>();
+    for (const nlohmann::json& r : j.at("results")) {
+      ScenarioResult result;
+      Scenario& s = result.scenario;
+      s.suite = r.at("suite").get<std::string>();
+      s.name = r.at("scenario").get<std::string>();
+      s.scene.scene = r.at("scene").get<std::string>();
+      s.scene.extraLights = r.at("extra_lights").get<uint32_t>();
+      s.settings.width = r.at("width").get<uint32_t>();
+      s.settings.height = r.at("height").get<uint32_t>();
+      s.settings.technique = r.at("technique").get<std::string>();
+      if (s.settings.technique == "lll") {
+        s.settings.lllFill = r.at("fill").get<std::string>();
+        s.settings.lllShade = r.at("shade").get<std::string>();
+      }
+      s.settings.surfaces = r.at("surfaces").get<std::string>();
+      s.settings.raster = r.at("raster").get<std::string>();
+      s.settings.tileSize = r.at("tile").get<uint32_t>();
+      result.lightCount = r.at("lights").get<uint64_t>();
+      const std::string status = r.at("status").get<std::string>();
+      result.status = status == statusName(Status::Ok)        ? Status::Ok
+                      : status == statusName(Status::Skipped) ? Status::Skipped
+                                                              : Status::Failed;
+      for (const nlohmann::json& p : r.at("passes"))
+        result.passes.push_back({p.at("name").get<std::string>(), p.at("median_ms").get<double>(),
+                                 p.at("min_ms").get<double>(), p.at("max_ms").get<double>()});
+      report.results.push_back(std::move(result));
+    }
+    return report;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not the results.json of `lll bench`: {}", path.string(), e.what()));
+  }
+}
+
 }  // namespace lll::bench

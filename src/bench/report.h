@@ -14,6 +14,10 @@ std::vector<std::string> passOrder(const std::vector<const ScenarioResult*>& res
 void writeResultsJson(const BenchReport& report, const std::filesystem::path& path);
 // One row per scenario x technique x pass that ran, for spreadsheets and plotting tools.
 void writeResultsCsv(const BenchReport& report, const std::filesystem::path& path);
+// What writeResultsJson wrote, as far as the charts need it: run metadata and per scenario its
+// suite, scene, settings, light count, status and passes. Throws InputError naming the file and
+// what is wrong when it cannot be read.
+BenchReport readResultsJson(const std::filesystem::path& path);
 // Markdown tables per suite, headed by device, driver, commit and date.
 void writeSummaryMarkdown(const BenchReport& report, const std::filesystem::path& path);
 // PNG charts drawn by gnuplot from data files and a script left in `dir`; returns the PNGs
