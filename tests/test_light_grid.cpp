@@ -217,6 +217,25 @@ TEST(GridImages, SlicesShortenTheLists) {
   EXPECT_LT(clustered, 0.8 * tiled) << "mean lights per non-empty cluster";
 }
 
+// Thousands of large lights on one cell: every list build's per-invocation work is at its largest.
+// (On lavapipe, before cells were split on CPU devices, clustered dropped lights here: llvmpipe
+// ends a shader invocation's loops after 65,535 iterations in all.)
+TEST(GridImages, ThousandsOfLargeLightsOnOneCellMatchForward) {
+  SceneRequest request{"atrium", 2048, 1};
+  request.lightRangeScale = 4.0f;
+  const Scene scene = loadScene(request);
+  RenderSettings settings;
+  settings.width = 48;
+  settings.height = 27;
+  const test::Rendered reference = test::render(scene, test::reference(settings));
+  for (const char* technique : {"lll", "tiled", "clustered"}) {
+    settings.technique = technique;
+    const test::Rendered frame = test::render(scene, settings);
+    test::expectWithinBound(frame.ldr, reference.ldr, test::kSameImage,
+                            std::string(technique) + " with 2,048 large lights on one cell");
+  }
+}
+
 TEST(GridImages, BadOptionsAreRefused) {
   const Scene scene = *makeBuiltinScene("plane");
   RenderSettings settings;

@@ -130,13 +130,15 @@ INSTANTIATE_TEST_SUITE_P(Fills, LllLists,
                                            ListCase{"shells", 8, 333, 197}, ListCase{"compute", 16, 333, 197},
                                            ListCase{"ray", 16, 333, 197}, ListCase{"shells", 16, 333, 197},
                                            ListCase{"compute", 1, 111, 67}, ListCase{"ray", 1, 111, 67},
-                                           ListCase{"shells", 1, 111, 67}, ListCase{"compute", 8, 333, 197, 3},
+                                           ListCase{"shells", 1, 111, 67},
+                                           ListCase{"compute", 8, 333, 197, 3},
                                            ListCase{"compute", 1, 111, 67, 16}),
                          [](const auto& info) {
                            return std::string(info.param.fill) + "_tile" + std::to_string(info.param.tile) +
                                   "_" + std::to_string(info.param.width) + "x" +
                                   std::to_string(info.param.height) +
-                                  (info.param.fillSplits ? "_splits" + std::to_string(info.param.fillSplits) : "");
+                                  (info.param.fillSplits ? "_splits" + std::to_string(info.param.fillSplits)
+                                                         : "");
                          });
 
 // The compute fill reads the lights binned to its cell (lighting/light_bins.h). Many large lights

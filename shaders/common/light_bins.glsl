@@ -83,8 +83,8 @@ bool sphereRect(vec3 center, float radius, float unitPixels, uvec2 last, out uve
 
 // The bins' cells the sphere covers.
 bool sphereCells(vec3 center, float radius, out uvec4 cells) {
-  return sphereRect(center, radius, float(binHeader.cellPixels), uvec2(binHeader.cellsX, binHeader.cellsY) - 1u,
-                    cells);
+  return sphereRect(center, radius, float(binHeader.cellPixels),
+                    uvec2(binHeader.cellsX, binHeader.cellsY) - 1u, cells);
 }
 
 // The tiles of the 8x8-tile group starting at `groupFirst` that the sphere covers on screen, packed

@@ -70,7 +70,8 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--lll-fill", s.lllFill, "light linked list fill: shells | ray | compute")
       ->check(CLI::IsMember({"shells", "ray", "compute"}));
   cmd.add_option("--lll-fill-splits", s.lllFillSplits,
-                 "compute fill: workgroups sharing each 8x8-tile cell's lights (1 to 64; 0: 1 per 1,024 lights)")
+                 "compute fill: workgroups sharing each 8x8-tile cell's lights (1 to 64; 0: 1 per 1,024 "
+                 "lights, 64 on a CPU device)")
       ->check(CLI::Range(0u, 64u));
   cmd.add_option("--lll-link", s.lllLink, "link format: compact (8 B, <=256 lights) | wide (16 B) | auto")
       ->check(CLI::IsMember({"compact", "wide", "auto"}));
@@ -136,9 +137,10 @@ void addBenchOptions(CLI::App& cmd, lll::bench::BenchOptions& options) {
   cmd.add_option("--device", options.device.device, "auto | gpu | cpu | INDEX (see `lll devices`)");
   cmd.add_flag("--validate", options.device.validation,
                "Khronos validation layers on; any message fails the run");
-  cmd.add_option("--replot", options.replotDir,
-                 "run nothing: redraw the charts of DIR from its results.json (results from a machine without "
-                 "gnuplot)");
+  cmd.add_option(
+      "--replot", options.replotDir,
+      "run nothing: redraw the charts of DIR from its results.json (results from a machine without "
+      "gnuplot)");
 }
 
 void addLllMemoryOptions(CLI::App& cmd, lll::LllMemoryQuery& query) {

@@ -76,9 +76,9 @@ void writeFile(const fs::path& path, const std::string& text) {
 // or depth prepass and G-buffer), the shading passes they share, tonemap and the frame itself.
 // Light lists for lll, tiled and clustered; G-buffer and light volumes for deferred and pre-pass.
 bool isOwnPass(const std::string& name) {
-  return name != "visibility" && name != "visibility-resolve" && name != "depth-prepass" && name != "gbuffer" &&
-         name != "shade-opaque" && name != "glass" && name != "tonemap" && name != "frame" &&
-         !name.starts_with("particles") && name != "alu-probe";
+  return name != "visibility" && name != "visibility-resolve" && name != "depth-prepass" &&
+         name != "gbuffer" && name != "shade-opaque" && name != "glass" && name != "tonemap" &&
+         name != "frame" && !name.starts_with("particles") && name != "alu-probe";
 }
 
 // A log-log chart of `suite`'s times against light count, one line per technique (with `perPass`
@@ -100,8 +100,8 @@ std::optional<std::string> lightCountChart(const BenchReport& report, const fs::
         points += fmt::format("{} {} {} {}\n", r->lightCount, (*v)[0], (*v)[1], (*v)[2]);
     if (points.empty()) return;  // an empty block would shift gnuplot's indices
     data += fmt::format("# {}: lights ms min_ms max_ms\n{}\n\n", title, points);
-    plots += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with {} lc {} title {}", index ? ", " : "plot ", stem,
-                         index, style, color, gnuplotString(title));
+    plots += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with {} lc {} title {}", index ? ", " : "plot ",
+                         stem, index, style, color, gnuplotString(title));
     ++index;
   };
   using Triple = std::optional<std::array<double, 3>>;

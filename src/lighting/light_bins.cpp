@@ -39,10 +39,12 @@ LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_
                         MemoryUse::Device, "light bins large lights");
   allocate(std::min(maxEntries_, std::max<uint64_t>(cells * kInitialEntriesPerCell, lightCount)));
   layout_ = PipelineLayout(context, {"lighting/bins/bin_lights.comp", "lighting/bins/bin_scan.comp"});
-  count_ = Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}, {1, 0}});
+  count_ =
+      Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}, {1, 0}});
   countLarge_ =
       Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}, {1, 1}});
-  scatter_ = Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 1}, {1, 0}});
+  scatter_ =
+      Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 1}, {1, 0}});
   scan_ = Pipeline(context, layout_, "lighting/bins/bin_scan.comp");
 }
 
@@ -87,7 +89,8 @@ void LightBins::build(FrameContext& frame) {
     w.storage(14, largeLights_.handle());
     return w;
   };
-  auto dispatch = [&](const char* name, const Pipeline& pipeline, std::vector<ResourceUse> used, uint32_t groups) {
+  auto dispatch = [&](const char* name, const Pipeline& pipeline, std::vector<ResourceUse> used,
+                      uint32_t groups) {
     frame.graph.pass(name, std::move(used), [&, groups](VkCommandBuffer cmd) {
       pipeline.bind(cmd);
       writer().push(*context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
@@ -96,15 +99,17 @@ void LightBins::build(FrameContext& frame) {
   };
   const uint32_t lightGroups = divideRoundingUp(std::max(header_.lightCount, 1u), 64);
   dispatch("bins-count", count_,
-           {uses(headerBuffer_, Use::StorageReadWrite, kCompute), uses(cells_, Use::StorageReadWrite, kCompute),
-            uses(largeLights_, Use::StorageWrite, kCompute)},
+           {uses(headerBuffer_, Use::StorageReadWrite, kCompute),
+            uses(cells_, Use::StorageReadWrite, kCompute), uses(largeLights_, Use::StorageWrite, kCompute)},
            lightGroups);
   dispatch("bins-count-large", countLarge_,
            {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute),
             uses(largeLights_, Use::StorageRead, kCompute)},
            kLargeLightGroups);
-  dispatch("bins-scan", scan_,
-           {uses(headerBuffer_, Use::StorageReadWrite, kCompute), uses(cells_, Use::StorageReadWrite, kCompute)}, 1);
+  dispatch(
+      "bins-scan", scan_,
+      {uses(headerBuffer_, Use::StorageReadWrite, kCompute), uses(cells_, Use::StorageReadWrite, kCompute)},
+      1);
   dispatch("bins-scatter", scatter_,
            {uses(headerBuffer_, Use::StorageRead, kCompute), uses(cells_, Use::StorageReadWrite, kCompute),
             uses(entries_, Use::StorageWrite, kCompute), uses(largeLights_, Use::StorageRead, kCompute)},

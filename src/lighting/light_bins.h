@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "render/frame.h"
@@ -27,8 +28,14 @@ namespace lll {
 // lights, at most kMaxCellSplits. Down a long view a few cells hold most of the lights; with one
 // workgroup each they hold up the frame (H200, 1,048,576 lights: lll's fill 31.3 ms with 1,
 // 10.2 with 16, 6.1 with 64).
+// On a CPU device every cell is split kMaxCellSplits ways whatever the light count: Mesa's
+// llvmpipe ends every loop of a shader invocation once its loops have run 65,535 iterations in all
+// (LP_MAX_TGSI_LOOP_ITERATIONS, one counter shared by every loop), and a build over a few thousand
+// large lights in one cell went past it and dropped lights. Smaller parts keep each invocation
+// well under it.
 inline constexpr uint32_t kMaxCellSplits = 64;
-inline uint32_t cellSplitsFor(uint32_t lights) {
+inline uint32_t cellSplitsFor(const Context& context, uint32_t lights) {
+  if (context.isCpuDevice()) return kMaxCellSplits;
   return std::clamp<uint32_t>((lights + 1023) / 1024, 1, kMaxCellSplits);
 }
 

@@ -82,14 +82,15 @@ LightGrid::LightGrid(Context& context, const GpuScene& scene, const RenderSettin
       tiles_(tilesX_ * tilesY_),
       maxEntries_(context.properties().limits.maxStorageBufferRange / 4) {
   validateTileSize(settings.tileSize);
-  uniforms_.params =
-      glm::uvec4(slices, 0, parseGridDebugView(settings.debugView), cellSplitsFor(scene.lightCount()));
+  uniforms_.params = glm::uvec4(slices, 0, parseGridDebugView(settings.debugView),
+                                cellSplitsFor(context, scene.lightCount()));
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   uniformBuffer_ = Buffer(context, sizeof(gpu::GridUniforms), storage, MemoryUse::Upload, "grid uniforms");
   tileRange_ = Buffer(context, uint64_t(tiles_) * 8, storage, MemoryUse::Device, "grid tile ranges");
   clusters_ = Buffer(context, uint64_t(tiles_) * slices * 8, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                      MemoryUse::Device, "grid clusters");
-  cursors_ = Buffer(context, uint64_t(tiles_) * slices * 4, storage, MemoryUse::Device, "grid cluster cursors");
+  cursors_ =
+      Buffer(context, uint64_t(tiles_) * slices * 4, storage, MemoryUse::Device, "grid cluster cursors");
   counters_ = Buffer(context, sizeof(gpu::GridCounters), storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                      MemoryUse::Readback, "grid counters");
   allocate(std::min(maxEntries_, uint64_t(tiles_) * kInitialEntriesPerTile));
@@ -103,8 +104,10 @@ LightGrid::LightGrid(Context& context, const GpuScene& scene, const RenderSettin
   tileRangePipeline_ = Pipeline(context, layout_, "lighting/grid/tile_range.comp");
   countPipeline_ = Pipeline(context, layout_, "lighting/grid/build.comp", SpecializationConstants{{0, 0}});
   writePipeline_ = Pipeline(context, layout_, "lighting/grid/build.comp", SpecializationConstants{{0, 1}});
-  allocPipeline_ = Pipeline(context, layout_, "lighting/grid/grid_tiles.comp", SpecializationConstants{{0, 0}});
-  finishPipeline_ = Pipeline(context, layout_, "lighting/grid/grid_tiles.comp", SpecializationConstants{{0, 1}});
+  allocPipeline_ =
+      Pipeline(context, layout_, "lighting/grid/grid_tiles.comp", SpecializationConstants{{0, 0}});
+  finishPipeline_ =
+      Pipeline(context, layout_, "lighting/grid/grid_tiles.comp", SpecializationConstants{{0, 1}});
 }
 
 void LightGrid::allocate(uint64_t entries) {
@@ -164,16 +167,19 @@ void LightGrid::buildLightData(FrameContext& frame) {
     return used;
   };
   dispatch("grid-count", countPipeline_,
-           withBins({uses(tileRange_, Use::StorageRead, kCompute), uses(clusters_, Use::StorageReadWrite, kCompute)}),
+           withBins({uses(tileRange_, Use::StorageRead, kCompute),
+                     uses(clusters_, Use::StorageReadWrite, kCompute)}),
            groupsX, groupsY);
   dispatch("grid-alloc", allocPipeline_,
            {uses(clusters_, Use::StorageReadWrite, kCompute), uses(cursors_, Use::StorageWrite, kCompute),
             uses(counters_, Use::StorageReadWrite, kCompute)},
            tileGroups, 1);
-  dispatch("grid-write", writePipeline_,
-           withBins({uses(tileRange_, Use::StorageRead, kCompute), uses(clusters_, Use::StorageRead, kCompute),
-                     uses(cursors_, Use::StorageReadWrite, kCompute), uses(indices_, Use::StorageWrite, kCompute)}),
-           groupsX, groupsY);
+  dispatch(
+      "grid-write", writePipeline_,
+      withBins({uses(tileRange_, Use::StorageRead, kCompute), uses(clusters_, Use::StorageRead, kCompute),
+                uses(cursors_, Use::StorageReadWrite, kCompute),
+                uses(indices_, Use::StorageWrite, kCompute)}),
+      groupsX, groupsY);
   dispatch("grid-finish", finishPipeline_,
            {uses(clusters_, Use::StorageReadWrite, kCompute), uses(cursors_, Use::StorageRead, kCompute),
             uses(counters_, Use::StorageReadWrite, kCompute)},

@@ -191,9 +191,9 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   tilesY_ = divideRoundingUp(targets.height, tile);
   tiles_ = tilesX_ * tilesY_;
   if (settings.lllFillSplits > kMaxCellSplits)
-    throw InputError(fmt::format("--lll-fill-splits {}: expected 0 (by light count) to {}", settings.lllFillSplits,
-                                 kMaxCellSplits));
-  fillSplits_ = settings.lllFillSplits ? settings.lllFillSplits : cellSplitsFor(scene.lightCount());
+    throw InputError(fmt::format("--lll-fill-splits {}: expected 0 (by light count) to {}",
+                                 settings.lllFillSplits, kMaxCellSplits));
+  fillSplits_ = settings.lllFillSplits ? settings.lllFillSplits : cellSplitsFor(context, scene.lightCount());
   uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),
                              float(targets.height) / float(tilesY_ * tile), 0.0f, 0.0f);
@@ -340,21 +340,20 @@ void LightLinkedList::clear(FrameContext& frame) {
 
 void LightLinkedList::reduceTileDepth(FrameContext& frame) {
   constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-  frame.graph.pass(
-      "lll-tile-depth",
-      {uses(frame.targets.depth, Use::Sampled, kCompute), uses(tileDepth_, Use::StorageWrite, kCompute),
-       bins_.farDepthWrite(kCompute)},
-      [&](VkCommandBuffer cmd) {
-        tileDepthPipeline_.bind(cmd);
-        // Only this pass samples the depth buffer: binding it while shading reads it as an
-        // attachment makes lavapipe resolve the depth image for every draw.
-        descriptors(frame)
-            .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frame.targets.depth.view(),
-                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
-        vkCmdDispatch(cmd, divideRoundingUp(tilesX_, gpu::kTileGroupSize),
-                      divideRoundingUp(tilesY_, gpu::kTileGroupSize), 1);
-      });
+  frame.graph.pass("lll-tile-depth",
+                   {uses(frame.targets.depth, Use::Sampled, kCompute),
+                    uses(tileDepth_, Use::StorageWrite, kCompute), bins_.farDepthWrite(kCompute)},
+                   [&](VkCommandBuffer cmd) {
+                     tileDepthPipeline_.bind(cmd);
+                     // Only this pass samples the depth buffer: binding it while shading reads it as an
+                     // attachment makes lavapipe resolve the depth image for every draw.
+                     descriptors(frame)
+                         .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frame.targets.depth.view(),
+                                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+                         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+                     vkCmdDispatch(cmd, divideRoundingUp(tilesX_, gpu::kTileGroupSize),
+                                   divideRoundingUp(tilesY_, gpu::kTileGroupSize), 1);
+                   });
 }
 
 // What a fill reads and writes, in `stages`.
@@ -372,12 +371,12 @@ std::vector<ResourceUse> LightLinkedList::fillUses(VkPipelineStageFlags2 stages)
 }
 
 void LightLinkedList::fillCompute(FrameContext& frame) {
-  frame.graph.pass("lll-fill-compute", fillUses(VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT),
-                   [&](VkCommandBuffer cmd) {
-                     computeFill_.bind(cmd);
-                     descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
-                     vkCmdDispatch(cmd, divideRoundingUp(tilesX_, 8) * fillSplits_, divideRoundingUp(tilesY_, 8), 1);
-                   });
+  frame.graph.pass(
+      "lll-fill-compute", fillUses(VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT), [&](VkCommandBuffer cmd) {
+        computeFill_.bind(cmd);
+        descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+        vkCmdDispatch(cmd, divideRoundingUp(tilesX_, 8) * fillSplits_, divideRoundingUp(tilesY_, 8), 1);
+      });
 }
 
 // Batches of shells in one pass; the barriers between them are the pass's own (the bounds buffer
