@@ -422,7 +422,9 @@ TEST(BenchCharts, ReplotReadsWhatResultsJsonWrote) {
     }
   }
   const auto charts = writeCharts(read, dir);
-  if (gnuplotInstalled()) EXPECT_EQ(charts.size(), 5u);
+  if (gnuplotInstalled()) {
+    EXPECT_EQ(charts.size(), 5u);
+  }
   fs::remove_all(dir);
 }
 

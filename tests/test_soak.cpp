@@ -30,7 +30,11 @@ extern "C" size_t __sanitizer_get_current_allocated_bytes();
 namespace lll {
 namespace {
 
-constexpr double kAllowedGrowthMiB = 8.0;
+// Above lavapipe's one 9.95 MB rasterizer block, which may be taken once after the baseline window
+// and kept to the end (prepass under ASan with ctest -j 2: +10.00 MiB, 2026-11-28). A leak still
+// shows: the windows' least values lie 35 frames apart on the shortest run, so a third of a MB a
+// frame is enough to fail.
+constexpr double kAllowedGrowthMiB = 12.0;
 constexpr uint32_t kWarmupFrames = 10;
 constexpr uint32_t kWindow = 20;
 
