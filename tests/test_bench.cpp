@@ -15,6 +15,7 @@
 
 #include "bench/bench.h"
 #include "bench/report.h"
+#include "cli_test_support.h"
 #include "lighting/technique.h"
 #include "scene/errors.h"
 #include "scene/scene_source.h"
@@ -432,30 +433,18 @@ TEST(BenchCli, ReplotOfABrokenResultsFileIsBadInputNamingIt) {
   const fs::path dir = freshDir("bench-replot-broken");
   fs::create_directories(dir);
   std::ofstream(dir / "results.json") << "{\"device\": 3";
-  const std::string command = std::string(LLL_BINARY) + " bench --replot " + dir.string() + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string output;
-  char buffer[256];
-  while (fgets(buffer, sizeof(buffer), pipe)) output += buffer;
-  const int status = pclose(pipe);
-  EXPECT_EQ(WEXITSTATUS(status), 2) << output;
-  EXPECT_NE(output.find((dir / "results.json").string()), std::string::npos) << output;
+  const test::CliResult r = test::runLll({"bench", "--replot", dir.string()});
+  EXPECT_EQ(r.exitCode, 2) << r;
+  EXPECT_NE(r.output.find((dir / "results.json").string()), std::string::npos) << r;
   EXPECT_FALSE(fs::exists(dir / "charts.gp"));
   fs::remove_all(dir);
 }
 
 TEST(BenchCli, UnknownSuiteIsBadInputNamingTheKnownSuites) {
-  const std::string command = std::string(LLL_BINARY) + " bench --suite nope --out /dev/null 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string output;
-  char buffer[256];
-  while (fgets(buffer, sizeof(buffer), pipe)) output += buffer;
-  const int status = pclose(pipe);
-  EXPECT_EQ(WEXITSTATUS(status), 2) << output;
-  EXPECT_NE(output.find("threel"), std::string::npos) << output;
-  EXPECT_NE(output.find("scaling"), std::string::npos) << output;
+  const test::CliResult r = test::runLll({"bench", "--suite", "nope", "--out", "/dev/null"});
+  EXPECT_EQ(r.exitCode, 2) << r;
+  EXPECT_NE(r.output.find("threel"), std::string::npos) << r;
+  EXPECT_NE(r.output.find("scaling"), std::string::npos) << r;
 }
 
 }  // namespace

@@ -18,17 +18,7 @@
 namespace lll {
 namespace {
 
-struct GridCase {
-  std::string scene;  // built-in name or asset folder under LLL_ASSETS_DIR
-  uint32_t lights;
-};
-
-Scene loadCase(const GridCase& c) {
-  const bool builtin = makeBuiltinScene(c.scene).has_value();
-  const std::string path =
-      builtin ? c.scene : std::string(LLL_ASSETS_DIR) + "/" + c.scene + "/" + c.scene + ".gltf";
-  return loadScene(SceneRequest{path, c.lights, 3});
-}
+using GridCase = test::SceneWithLights;
 
 // Depth bounds of a cluster's slice, as common/grid_data.glsl defines them (without the slack).
 glm::vec2 sliceBounds(glm::vec2 range, uint32_t slice, uint32_t slices, float zNear) {
@@ -135,7 +125,7 @@ class GridImages : public ::testing::TestWithParam<GridCase> {};
 
 // The atrium has glass in front of lit walls: the front slice must light it.
 TEST_P(GridImages, TiledAndClusteredMatchForward) {
-  const Scene scene = loadCase(GetParam());
+  const Scene scene = test::loadSceneWithLights(GetParam());
   RenderSettings settings;
   settings.width = 160;
   settings.height = 90;

@@ -169,17 +169,7 @@ TEST(LllLists, OverflowingBinsGrowAndLoseNoLight) {
 
 // --- Images: lll must reproduce forward, the brute-force reference --------------------------------
 
-struct ImageCase {
-  std::string scene;  // built-in name or asset folder under LLL_ASSETS_DIR
-  uint32_t lights;
-};
-
-Scene loadCase(const ImageCase& c) {
-  const bool builtin = makeBuiltinScene(c.scene).has_value();
-  const std::string path =
-      builtin ? c.scene : std::string(LLL_ASSETS_DIR) + "/" + c.scene + "/" + c.scene + ".gltf";
-  return loadScene(SceneRequest{path, c.lights, 3});
-}
+using ImageCase = test::SceneWithLights;
 
 // Each fill with the default compute shading, and the chapter's fragment shading with one fill
 // (fill and shading are independent: the lists are the same).
@@ -197,7 +187,7 @@ std::string variantName(const Variant& v) {
 class LllImages : public ::testing::TestWithParam<ImageCase> {};
 
 TEST_P(LllImages, EveryFillMatchesForward) {
-  const Scene scene = loadCase(GetParam());
+  const Scene scene = test::loadSceneWithLights(GetParam());
   RenderSettings settings;
   settings.width = 160;
   settings.height = 90;

@@ -14,6 +14,8 @@
 #include "gpu/context.h"
 #include "image_bound.h"
 #include "render/renderer.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_source.h"
 
 namespace lll::test {
 
@@ -71,6 +73,20 @@ inline RenderSettings reference(RenderSettings settings) {
   settings.technique = "forward";
   settings.surfaces = "gbuffer";
   return settings;
+}
+
+// A scene the image tests render: a built-in scene, or the glTF of an asset folder under
+// LLL_ASSETS_DIR, with `lights` random lights (seed 3) added.
+struct SceneWithLights {
+  std::string scene;
+  uint32_t lights;
+};
+
+inline Scene loadSceneWithLights(const SceneWithLights& c) {
+  const bool builtin = makeBuiltinScene(c.scene).has_value();
+  const std::string path =
+      builtin ? c.scene : std::string(LLL_ASSETS_DIR) + "/" + c.scene + "/" + c.scene + ".gltf";
+  return loadScene(SceneRequest{path, c.lights, 3});
 }
 
 // A technique statistic of a rendered frame (Technique::stats); a missing one fails the test.

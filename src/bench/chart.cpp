@@ -110,8 +110,8 @@ std::optional<std::string> lightCountChart(const BenchReport& report, const fs::
     auto mine = [&](const ScenarioResult& r) { return techniqueLabel(r.scenario.settings) == label; };
     if (!perPass) {
       // gnuplot has eight line colours: lines past the eighth are dashed, with other points.
-      const std::string style =
-          color <= 8 ? "yerrorlines lw 2 pt 7" : fmt::format("yerrorlines lw 2 dt 2 pt {}", 4 + (color - 9) % 8);
+      const std::string style = color <= 8 ? "yerrorlines lw 2 pt 7"
+                                           : fmt::format("yerrorlines lw 2 dt 2 pt {}", 4 + (color - 9) % 8);
       addSeries(label, style, [&](const ScenarioResult& r) -> Triple {
         if (!mine(r)) return std::nullopt;
         const PassSummary& f = *r.pass("frame");

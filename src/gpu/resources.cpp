@@ -220,4 +220,11 @@ std::vector<uint8_t> readBack(Context& context, const Buffer& buffer, VkDeviceSi
   return out;
 }
 
+std::vector<uint32_t> readBackWords(Context& context, const Buffer& buffer) {
+  const std::vector<uint8_t> bytes = readBack(context, buffer, buffer.size());
+  std::vector<uint32_t> words(bytes.size() / 4);
+  std::memcpy(words.data(), bytes.data(), words.size() * 4);
+  return words;
+}
+
 }  // namespace lll

@@ -27,7 +27,7 @@ LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_
   header_.cellsY = divideRoundingUp(tilesY, gpu::kTileGroupSize);
   header_.cellPixels = tileSize * gpu::kTileGroupSize;
   header_.lightCount = lightCount;
-  maxEntries_ = context.properties().limits.maxStorageBufferRange / 4;
+  maxEntries_ = storageBufferCapacity(context, 4);
   const uint64_t cells = uint64_t(header_.cellsX) * header_.cellsY;
   headerBuffer_ = Buffer(context, sizeof(gpu::LightBinHeader),
                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -49,11 +49,8 @@ LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_
 }
 
 void LightBins::allocate(uint64_t entries) {
-  if (entries > maxEntries_)
-    throw InputError(fmt::format(
-        "the light bins need {} entries ({:.1f} MiB), more than this device's largest storage buffer "
-        "holds ({} entries): use fewer or smaller lights, a larger --tile or a lower resolution",
-        entries, double(entries) * 4.0 / 1048576.0, maxEntries_));
+  requireStorageBufferFits(*context_, entries, 4, "the light bins", "entries",
+                           "use fewer or smaller lights, a larger --tile or a lower resolution");
   header_.capacity = uint32_t(std::max<uint64_t>(entries, 1));
   entries_ = Buffer(*context_, uint64_t(header_.capacity) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                     MemoryUse::Device, "light bins entries");

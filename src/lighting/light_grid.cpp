@@ -80,7 +80,7 @@ LightGrid::LightGrid(Context& context, const GpuScene& scene, const RenderSettin
       tilesX_(divideRoundingUp(targets.width, settings.tileSize)),
       tilesY_(divideRoundingUp(targets.height, settings.tileSize)),
       tiles_(tilesX_ * tilesY_),
-      maxEntries_(context.properties().limits.maxStorageBufferRange / 4) {
+      maxEntries_(storageBufferCapacity(context, 4)) {
   validateTileSize(settings.tileSize);
   uniforms_.params = glm::uvec4(slices, 0, parseGridDebugView(settings.debugView),
                                 cellSplitsFor(context, scene.lightCount()));
@@ -111,11 +111,8 @@ LightGrid::LightGrid(Context& context, const GpuScene& scene, const RenderSettin
 }
 
 void LightGrid::allocate(uint64_t entries) {
-  if (entries > maxEntries_)
-    throw InputError(fmt::format(
-        "the light grid needs {} light indices ({:.1f} MiB), more than this device's largest storage buffer "
-        "holds ({}): use fewer or smaller lights, a larger --tile or a lower resolution",
-        entries, double(entries) * 4.0 / 1048576.0, maxEntries_));
+  requireStorageBufferFits(context_, entries, 4, "the light grid's index array", "light indices",
+                           "use fewer or smaller lights, a larger --tile or a lower resolution");
   uniforms_.params.y = uint32_t(std::max<uint64_t>(entries, 1));
   indices_ = Buffer(context_, uint64_t(uniforms_.params.y) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                     MemoryUse::Device, "grid light indices");
@@ -233,14 +230,9 @@ std::vector<std::pair<std::string, double>> LightGrid::stats() const {
 }
 
 LightGridLists LightGrid::read() {
-  auto words = [&](const Buffer& source) {
-    const std::vector<uint8_t> bytes = readBack(context_, source, source.size());
-    std::vector<uint32_t> out(bytes.size() / 4);
-    std::memcpy(out.data(), bytes.data(), out.size() * 4);
-    return out;
-  };
-  const std::vector<uint32_t> ranges = words(tileRange_), clusters = words(clusters_),
-                              indices = words(indices_);
+  const std::vector<uint32_t> ranges = readBackWords(context_, tileRange_),
+                              clusters = readBackWords(context_, clusters_),
+                              indices = readBackWords(context_, indices_);
   LightGridLists lists;
   lists.tilesX = tilesX_;
   lists.tilesY = tilesY_;

@@ -200,7 +200,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   // Half a tile's diagonal in pixels, 10% more for the rays' divergence across the tile.
   tileHalfDiagonalPixels_ = 1.1f * std::sqrt(2.0f) * 0.5f * float(tile);
   // The pool is one storage buffer; compact links address at most 2^24 - 1 of them.
-  maxPoolLinks_ = context.properties().limits.maxStorageBufferRange / linkBytes_;
+  maxPoolLinks_ = storageBufferCapacity(context, linkBytes_);
   if (linkFormat_ == gpu::kLinkCompact)
     maxPoolLinks_ = std::min<uint64_t>(maxPoolLinks_, gpu::kCompactLinkEnd);
   bins_ = LightBins(context, tilesX_, tilesY_, tile, scene.lightCount());
@@ -231,11 +231,11 @@ void LightLinkedList::createBuffers() {
 }
 
 void LightLinkedList::allocatePool(uint64_t links) {
-  if (links > maxPoolLinks_)
-    throw InputError(fmt::format(
-        "the light linked list needs {} links ({:.1f} MiB), more than this device's largest storage buffer "
-        "holds ({} links): use a larger --tile, a lower resolution or fewer lights",
-        links, double(links) * linkBytes_ / 1048576.0, maxPoolLinks_));
+  requireStorageBufferFits(context_, links, linkBytes_, "the light linked list's pool", "links",
+                           "use a larger --tile, a lower resolution or fewer lights");
+  if (links > maxPoolLinks_)  // what remains: compact links address at most 2^24 - 1
+    throw InputError(fmt::format("{} links: compact links address at most {}: use --lll-link wide or auto",
+                                 links, maxPoolLinks_));
   poolCapacity_ = links;
   links_ = Buffer(context_, links * linkBytes_, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device);
   uniforms_.params.x = uint32_t(links);
@@ -457,7 +457,7 @@ bool LightLinkedList::afterFrame() {
     linkFormat_ = gpu::kLinkWide;
     linkBytes_ = 16;
     uniforms_.params.y = linkFormat_;
-    maxPoolLinks_ = context_.properties().limits.maxStorageBufferRange / linkBytes_;
+    maxPoolLinks_ = storageBufferCapacity(context_, linkBytes_);
   }
   const uint64_t grown = std::max<uint64_t>(requested, uint64_t(double(requested) * kPoolGrowth));
   allocatePool(requested > maxPoolLinks_ ? requested : std::min(maxPoolLinks_, grown));
@@ -491,14 +491,9 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
 }
 
 TileLightLists LightLinkedList::readLists() {
-  auto download = [&](const Buffer& source) {
-    const std::vector<uint8_t> bytes = readBack(context_, source, source.size());
-    std::vector<uint32_t> words(bytes.size() / 4);
-    std::memcpy(words.data(), bytes.data(), words.size() * 4);
-    return words;
-  };
-  const std::vector<uint32_t> heads = download(heads_), words = download(links_),
-                              depth = download(tileDepth_);
+  const std::vector<uint32_t> heads = readBackWords(context_, heads_),
+                              words = readBackWords(context_, links_),
+                              depth = readBackWords(context_, tileDepth_);
   TileLightLists lists;
   lists.tilesX = tilesX_;
   lists.tilesY = tilesY_;

@@ -86,14 +86,19 @@ void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets) {
                 divideRoundingUp(targets.height, gpu::kTileGroupSize), 1);
 }
 
+uint64_t storageBufferCapacity(const Context& context, uint64_t bytesEach) {
+  return context.properties().limits.maxStorageBufferRange / bytesEach;
+}
+
 void requireStorageBufferFits(const Context& context, uint64_t count, uint64_t bytesEach,
-                              const std::string& what) {
+                              const std::string& what, const std::string& items, const std::string& advice) {
   const uint64_t limit = context.properties().limits.maxStorageBufferRange;
   if (count * bytesEach <= limit) return;
-  throw InputError(fmt::format(
-      "{} lights: {} needs {:.1f} MiB in one storage buffer, but this device's largest "
-      "(maxStorageBufferRange) is {:.1f} MiB, which holds at most {} lights",
-      count, what, double(count * bytesEach) / 1048576.0, double(limit) / 1048576.0, limit / bytesEach));
+  throw InputError(
+      fmt::format("{} {}: {} needs {:.1f} MiB in one storage buffer, but this device's largest "
+                  "(maxStorageBufferRange) is {:.1f} MiB, which holds at most {} {}{}",
+                  count, items, what, double(count * bytesEach) / 1048576.0, double(limit) / 1048576.0,
+                  limit / bytesEach, items, advice.empty() ? "" : ": " + advice));
 }
 
 }  // namespace lll

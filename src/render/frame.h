@@ -89,11 +89,14 @@ inline uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) {
   return (value + divisor - 1) / divisor;
 }
 
-// Throws InputError when `count` items of `bytesEach` bytes (`what`, e.g. "the light array") do not
-// fit in one storage buffer of `context`'s device (maxStorageBufferRange), naming the limit and the
-// largest count that fits.
+// Throws InputError when `count` `items` of `bytesEach` bytes (`what`, e.g. "the light array") do
+// not fit in one storage buffer of `context`'s device (maxStorageBufferRange), naming the limit,
+// the largest count that fits and `advice` (what the user can change; may be empty).
 void requireStorageBufferFits(const Context& context, uint64_t count, uint64_t bytesEach,
-                              const std::string& what);
+                              const std::string& what, const std::string& items = "lights",
+                              const std::string& advice = "");
+// The most items of `bytesEach` bytes one storage buffer of `context`'s device holds.
+uint64_t storageBufferCapacity(const Context& context, uint64_t bytesEach);
 
 // A mesh pass onto the HDR target (cleared first when `clearHdr`), depth-tested read-only against
 // the prepass: binds `pipeline`, pushes meshPassDescriptors and draws the scene's `filter` draws.
