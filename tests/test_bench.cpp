@@ -382,9 +382,9 @@ TEST(BenchCharts, EverySuiteWithResultsGetsAValidPng) {
   const auto charts = writeCharts(syntheticReport(), dir);
   EXPECT_TRUE(fs::exists(dir / "charts.gp"));
   if (gnuplotInstalled()) {
-    EXPECT_EQ(charts.size(), 5u);
+    EXPECT_EQ(charts.size(), 6u);
     for (const fs::path& png : {dir / "scaling.png", dir / "density.png", dir / "density-passes.png",
-                                dir / "threel.png", dir / "tiles.png"})
+                                dir / "density-memory.png", dir / "threel.png", dir / "tiles.png"})
       expectPng(png);
   }
   // The per-pass density chart: a technique's own passes (tiled's grid-count) and its shading,
@@ -416,6 +416,7 @@ TEST(BenchCharts, ReplotReadsWhatResultsJsonWrote) {
     EXPECT_EQ(a.scenario.suite, b.scenario.suite);
     EXPECT_EQ(techniqueLabel(a.scenario.settings), techniqueLabel(b.scenario.settings));
     EXPECT_EQ(a.lightCount, b.lightCount);
+    EXPECT_DOUBLE_EQ(a.memoryBytes(), b.memoryBytes());
     ASSERT_EQ(a.passes.size(), b.passes.size());
     for (size_t p = 0; p < a.passes.size(); ++p) {
       EXPECT_EQ(a.passes[p].name, b.passes[p].name);
@@ -424,7 +425,7 @@ TEST(BenchCharts, ReplotReadsWhatResultsJsonWrote) {
   }
   const auto charts = writeCharts(read, dir);
   if (gnuplotInstalled()) {
-    EXPECT_EQ(charts.size(), 5u);
+    EXPECT_EQ(charts.size(), 6u);
   }
   fs::remove_all(dir);
 }

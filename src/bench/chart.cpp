@@ -84,9 +84,12 @@ bool isOwnPass(const std::string& name) {
 // A log-log chart of `suite`'s times against light count, one line per technique (with `perPass`
 // two in the technique's colour: its own passes dashed, shade-opaque + glass solid), min-max as
 // error bars on frame times.
+enum class Measure { Frame, Passes, Memory };
+
 std::optional<std::string> lightCountChart(const BenchReport& report, const fs::path& dir,
-                                           const std::string& suite, const std::string& file, bool perPass,
+                                           const std::string& suite, const std::string& file, Measure measure,
                                            const std::string& what) {
+  const bool perPass = measure == Measure::Passes;
   const Results results = measured(report, suite);
   if (results.empty()) return std::nullopt;
   const std::string stem = file.substr(0, file.size() - 4);
@@ -114,6 +117,10 @@ std::optional<std::string> lightCountChart(const BenchReport& report, const fs::
                                            : fmt::format("yerrorlines lw 2 dt 2 pt {}", 4 + (color - 9) % 8);
       addSeries(label, style, [&](const ScenarioResult& r) -> Triple {
         if (!mine(r)) return std::nullopt;
+        if (measure == Measure::Memory) {
+          const double mib = r.memoryBytes() / (1024.0 * 1024.0);
+          return std::array<double, 3>{mib, mib, mib};
+        }
         const PassSummary& f = *r.pass("frame");
         return std::array<double, 3>{f.medianMs, f.minMs, f.maxMs};
       });
@@ -148,22 +155,31 @@ std::optional<std::string> lightCountChart(const BenchReport& report, const fs::
       terminal(1280, 800), file,
       gnuplotString(fmt::format("{}: {}, {}x{}\n{}", what, results.front()->scenario.scene.scene, s.width,
                                 s.height, subtitle(report))),
-      gnuplotString(perPass ? "GPU ms (median): the technique's own passes dashed, shade-opaque + glass solid"
-                            : "GPU frame time, ms (median; bars: min to max)"),
+      gnuplotString(measure == Measure::Passes
+                        ? "GPU ms (median): the technique's own passes dashed, shade-opaque + glass solid"
+                    : measure == Measure::Memory
+                        ? "GPU memory of the lighting data, MiB (depth + the technique's buffers)"
+                        : "GPU frame time, ms (median; bars: min to max)"),
       double(*counts.begin()) / 1.25, double(*counts.rbegin()) * 1.25, fmt::join(counts, ", "), plots);
 }
 
 std::optional<std::string> scalingChart(const BenchReport& report, const fs::path& dir) {
-  return lightCountChart(report, dir, "scaling", "scaling.png", false, "Frame time against light count");
+  return lightCountChart(report, dir, "scaling", "scaling.png", Measure::Frame,
+                         "Frame time against light count");
 }
 
 std::optional<std::string> densityChart(const BenchReport& report, const fs::path& dir) {
-  return lightCountChart(report, dir, "density", "density.png", false,
+  return lightCountChart(report, dir, "density", "density.png", Measure::Frame,
                          "Frame time against light count at constant light density");
 }
 
+std::optional<std::string> densityMemoryChart(const BenchReport& report, const fs::path& dir) {
+  return lightCountChart(report, dir, "density", "density-memory.png", Measure::Memory,
+                         "Lighting-data memory against light count at constant light density");
+}
+
 std::optional<std::string> densityPassesChart(const BenchReport& report, const fs::path& dir) {
-  return lightCountChart(report, dir, "density", "density-passes.png", true,
+  return lightCountChart(report, dir, "density", "density-passes.png", Measure::Passes,
                          "Light data and shading against light count at constant light density");
 }
 
@@ -285,6 +301,7 @@ std::vector<fs::path> writeCharts(const BenchReport& report, const fs::path& dir
   for (const auto& [name, chart] : {std::pair<const char*, ChartFn>{"scaling.png", scalingChart},
                                     {"density.png", densityChart},
                                     {"density-passes.png", densityPassesChart},
+                                    {"density-memory.png", densityMemoryChart},
                                     {"threel.png", threelChart},
                                     {"tiles.png", tilesChart}}) {
     if (const auto section = chart(report, dir)) {

@@ -209,6 +209,9 @@ BenchReport readResultsJson(const std::filesystem::path& path) {
       result.status = status == statusName(Status::Ok)        ? Status::Ok
                       : status == statusName(Status::Skipped) ? Status::Skipped
                                                               : Status::Failed;
+      const nlohmann::json memory = r.value("memory", nlohmann::json::object());
+      for (const auto& [key, value] : memory.items())
+        if (value.is_number()) result.memory.emplace_back(key, value.get<double>());
       for (const nlohmann::json& p : r.at("passes"))
         result.passes.push_back({p.at("name").get<std::string>(), p.at("median_ms").get<double>(),
                                  p.at("min_ms").get<double>(), p.at("max_ms").get<double>()});

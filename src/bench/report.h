@@ -15,7 +15,7 @@ void writeResultsJson(const BenchReport& report, const std::filesystem::path& pa
 // One row per scenario x technique x pass that ran, for spreadsheets and plotting tools.
 void writeResultsCsv(const BenchReport& report, const std::filesystem::path& path);
 // What writeResultsJson wrote, as far as the charts need it: run metadata and per scenario its
-// suite, scene, settings, light count, status and passes. Throws InputError naming the file and
+// suite, scene, settings, light count, status, passes and memory. Throws InputError naming the file and
 // what is wrong when it cannot be read.
 BenchReport readResultsJson(const std::filesystem::path& path);
 // Markdown tables per suite, headed by device, driver, commit and date.
