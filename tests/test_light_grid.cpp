@@ -174,14 +174,14 @@ TEST(GridImages, AwkwardLightsEveryTileAndSliceCount) {
   }
 }
 
-// Many large lights on a fine grid overflow the bins' and the index array's first allocations: the
+// Many large lights on a fine grid (tile 2) overflow the bins' and the index array's first allocations: the
 // frame is drawn again with room for every entry, and the image is still forward's.
 TEST(GridImages, OverflowsGrowAndLoseNoLight) {
   const Scene scene = test::awkwardLightsScene(400);
   RenderSettings settings;
   settings.width = 96;
   settings.height = 54;
-  settings.tileSize = 1;
+  settings.tileSize = 2;
   const test::Rendered reference = test::render(scene, test::reference(settings));
   settings.technique = "clustered";
   settings.clusterSlices = 32;

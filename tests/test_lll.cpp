@@ -148,7 +148,7 @@ TEST(LllLists, OverflowingBinsGrowAndLoseNoLight) {
   RenderSettings settings;
   settings.technique = "lll";
   settings.lllFill = "compute";
-  settings.tileSize = 1;
+  settings.tileSize = 2;
   settings.width = 96;
   settings.height = 54;
   std::vector<std::pair<std::string, double>> stats;
