@@ -174,8 +174,8 @@ TEST(GridImages, AwkwardLightsEveryTileAndSliceCount) {
   }
 }
 
-// Many large lights on a fine grid (tile 2) overflow the bins' and the index array's first allocations: the
-// frame is drawn again with room for every entry, and the image is still forward's.
+// Many large lights on a fine grid (tile 2) overflow the bins' and the index array's first
+// allocations: the frame is drawn again with room for every entry, and the image is still forward's.
 TEST(GridImages, OverflowsGrowAndLoseNoLight) {
   const Scene scene = test::awkwardLightsScene(400);
   RenderSettings settings;
