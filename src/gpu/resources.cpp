@@ -220,6 +220,15 @@ std::vector<uint8_t> readBack(Context& context, const Buffer& buffer, VkDeviceSi
   return out;
 }
 
+VkSampler createNearestClampSampler(Context& context) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  VkSampler sampler = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &sampler));
+  return sampler;
+}
+
 std::vector<uint32_t> readBackWords(Context& context, const Buffer& buffer) {
   const std::vector<uint8_t> bytes = readBack(context, buffer, buffer.size());
   std::vector<uint32_t> words(bytes.size() / 4);

@@ -96,6 +96,10 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccess
 // writing it (a barrier from every command's writes, then one to the host: a fence alone does not
 // make another submission's writes visible to the copy).
 std::vector<uint8_t> readBack(Context& context, const Buffer& buffer, VkDeviceSize bytes);
+// A nearest-filtering, clamp-to-edge sampler (for texel-exact reads of depth and G-buffers); the
+// caller destroys it.
+VkSampler createNearestClampSampler(Context& context);
+
 // The whole buffer as 32-bit words (for tests and tools reading a technique's lists).
 std::vector<uint32_t> readBackWords(Context& context, const Buffer& buffer);
 

@@ -12,9 +12,8 @@
 namespace lll {
 
 namespace {
-// Initial entries per cell and growth past a request, so a slowly growing scene re-renders rarely.
+// Initial entries per cell (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerCell = 64;
-constexpr double kGrowth = 1.25;
 // Workgroups that bin the lights covering many cells (bin_lights.comp), 64 threads each.
 constexpr uint32_t kLargeLightGroups = 256;
 constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
@@ -120,8 +119,7 @@ bool LightBins::afterFrame() {
   lastRequested_ = read.requested;
   if (read.requested <= header_.capacity) return false;
   ++overflows_;
-  const uint64_t grown = std::max<uint64_t>(read.requested, uint64_t(double(read.requested) * kGrowth));
-  allocate(read.requested > maxEntries_ ? read.requested : std::min(maxEntries_, grown));
+  allocate(grownCapacity(read.requested, maxEntries_));
   return true;
 }
 

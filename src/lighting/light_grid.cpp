@@ -19,9 +19,8 @@ namespace lll {
 
 namespace {
 
-// Initial index entries per tile, and growth past a request on overflow.
+// Initial index entries per tile (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerTile = 32;
-constexpr double kGrowth = 1.25;
 constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 
 uint32_t parseGridDebugView(const std::string& name) {
@@ -95,10 +94,7 @@ LightGrid::LightGrid(Context& context, const GpuScene& scene, const RenderSettin
                      MemoryUse::Readback, "grid counters");
   allocate(std::min(maxEntries_, uint64_t(tiles_) * kInitialEntriesPerTile));
   bins_ = LightBins(context, tilesX_, tilesY_, settings.tileSize, scene.lightCount());
-  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
-  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &depthSampler_));
+  depthSampler_ = createNearestClampSampler(context);
   layout_ = PipelineLayout(context, {"lighting/grid/tile_range.comp", "lighting/grid/build.comp",
                                      "lighting/grid/grid_tiles.comp"});
   tileRangePipeline_ = Pipeline(context, layout_, "lighting/grid/tile_range.comp");
@@ -201,8 +197,7 @@ bool LightGrid::afterFrame() {
   const uint64_t requested = lastCounters_.requested;
   if (requested <= uniforms_.params.y) return false;
   ++overflows_;
-  const uint64_t grown = std::max<uint64_t>(requested, uint64_t(double(requested) * kGrowth));
-  allocate(requested > maxEntries_ ? requested : std::min(maxEntries_, grown));
+  allocate(grownCapacity(requested, maxEntries_));
   return true;
 }
 

@@ -30,8 +30,6 @@ constexpr uint32_t kShellBatch = 0xFFFF;
 constexpr uint32_t kBoundsLayers = 8;
 // Shell meshes of the raster fills: sphere, cone, box (the fill_shell.vert specialization).
 constexpr uint32_t kShellShapes = 3;
-// Growth beyond the requested links on overflow, so a slowly growing scene re-renders rarely.
-constexpr double kPoolGrowth = 1.25;
 
 constexpr VkShaderStageFlags kAllStages =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
@@ -224,10 +222,7 @@ void LightLinkedList::createBuffers() {
   counters_ = Buffer(context_, sizeof(gpu::LllCounters), storage, MemoryUse::Readback);
   if (fill_ == LllFill::Shells)
     bounds_ = Buffer(context_, uint64_t(tiles_) * 4 * kBoundsLayers, storage, MemoryUse::Device);
-  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
-  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &depthSampler_));
+  depthSampler_ = createNearestClampSampler(context_);
 }
 
 void LightLinkedList::allocatePool(uint64_t links) {
@@ -459,8 +454,7 @@ bool LightLinkedList::afterFrame() {
     uniforms_.params.y = linkFormat_;
     maxPoolLinks_ = storageBufferCapacity(context_, linkBytes_);
   }
-  const uint64_t grown = std::max<uint64_t>(requested, uint64_t(double(requested) * kPoolGrowth));
-  allocatePool(requested > maxPoolLinks_ ? requested : std::min(maxPoolLinks_, grown));
+  allocatePool(grownCapacity(requested, maxPoolLinks_));
   return true;
 }
 

@@ -79,10 +79,7 @@ void ParticleSystem::createBuffers() {
     vkCmdFillBuffer(cmd, particles_.handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
   });
-  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
-  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &depthSampler_));
+  depthSampler_ = createNearestClampSampler(context_);
 }
 
 void ParticleSystem::uploadUniforms(const glm::vec3& source, uint32_t seed) {

@@ -2,6 +2,7 @@
 // What a technique sees of the frame being recorded, and small helpers every pass uses.
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <initializer_list>
 #include <string>
 
@@ -95,6 +96,13 @@ inline uint32_t divideRoundingUp(uint32_t value, uint32_t divisor) {
 void requireStorageBufferFits(const Context& context, uint64_t count, uint64_t bytesEach,
                               const std::string& what, const std::string& items = "lights",
                               const std::string& advice = "");
+// The capacity to grow a GPU-filled array to when a frame asked for `requested` entries: a quarter
+// more, so a slowly growing scene re-renders rarely, but no more than `most`, and exactly
+// `requested` when even that is more (the allocation then refuses it with the numbers).
+inline uint64_t grownCapacity(uint64_t requested, uint64_t most) {
+  if (requested > most) return requested;
+  return std::min(most, std::max(requested, requested + requested / 4));
+}
 // The most items of `bytesEach` bytes one storage buffer of `context`'s device holds.
 uint64_t storageBufferCapacity(const Context& context, uint64_t bytesEach);
 

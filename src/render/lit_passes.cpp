@@ -25,10 +25,7 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
     const std::string shader = litShader(lighting_, "shade_gbuffer.comp");
     computeLayout_ = PipelineLayout(context, {shader});
     compute_ = Pipeline(context, computeLayout_, shader, constants);
-    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    info.magFilter = info.minFilter = VK_FILTER_NEAREST;
-    info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &depthSampler_));
+    depthSampler_ = createNearestClampSampler(context);
   }
   const std::string fragment = litShader(lighting_, "shade_geometry.frag");
   meshLayout_ = PipelineLayout(context, {"common/mesh.vert", fragment}, {scene.materialSetLayout()});
