@@ -48,12 +48,16 @@ struct TechniqueCase {
   const char* lllShade;
   const char* surfaces;
 };
-constexpr TechniqueCase kTechniques[] = {
-    {"forward", "forward", "compute", "visibility"},   {"forward_gbuffer", "forward", "compute", "gbuffer"},
-    {"lll", "lll", "compute", "visibility"},           {"lll_gbuffer", "lll", "compute", "gbuffer"},
-    {"lll_fragment", "lll", "fragment", "visibility"}, {"deferred", "deferred", "compute", "visibility"},
-    {"prepass", "prepass", "compute", "visibility"},   {"tiled", "tiled", "compute", "visibility"},
-    {"clustered", "clustered", "compute", "visibility"}, {"clustered_gbuffer", "clustered", "compute", "gbuffer"}};
+constexpr TechniqueCase kTechniques[] = {{"forward", "forward", "compute", "visibility"},
+                                         {"forward_gbuffer", "forward", "compute", "gbuffer"},
+                                         {"lll", "lll", "compute", "visibility"},
+                                         {"lll_gbuffer", "lll", "compute", "gbuffer"},
+                                         {"lll_fragment", "lll", "fragment", "visibility"},
+                                         {"deferred", "deferred", "compute", "visibility"},
+                                         {"prepass", "prepass", "compute", "visibility"},
+                                         {"tiled", "tiled", "compute", "visibility"},
+                                         {"clustered", "clustered", "compute", "visibility"},
+                                         {"clustered_gbuffer", "clustered", "compute", "gbuffer"}};
 
 void PrintTo(const TechniqueCase& t, std::ostream* os) {
   *os << t.name;

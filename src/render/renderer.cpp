@@ -56,7 +56,8 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   validateResolution(settings.width, settings.height);
   validateTileSize(settings.tileSize);  // every frame's uniforms divide by it
   if (scene.lights.size() > gpu::kMaxLights)
-    throw InputError(fmt::format("{} lights: at most {} are supported", scene.lights.size(), gpu::kMaxLights));
+    throw InputError(
+        fmt::format("{} lights: at most {} are supported", scene.lights.size(), gpu::kMaxLights));
   requireStorageBufferFits(context, scene.lights.size(), sizeof(gpu::GpuLight), "the light array");
   gpuScene_ = std::make_unique<GpuScene>(context, scene);
   chooseSurfaces();

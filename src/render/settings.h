@@ -26,7 +26,7 @@ struct RenderSettings {
   // (render/compute_raster.h) | auto (compute where it was measured faster: a discrete GPU).
   std::string raster = "auto";
   uint32_t tileSize = 8;
-  uint32_t linksPerTile = 32;      // initial link pool: tiles * this, grown on overflow
+  uint32_t linksPerTile = 32;  // initial link pool: tiles * this, grown on overflow
   // Workgroups sharing each cell's lights in lll's compute fill (1 to 64); 0: by light count.
   uint32_t lllFillSplits = 0;
   std::string debugView = "none";  // none | heatmap | bounds | tiles
