@@ -6,10 +6,11 @@
 
 const float kPi = 3.14159265358979;
 
-// Whether the scene has spot and box lights (lightTypeConstants, render/frame.h): a pass that sets
-// them false compiles those branches out of every light evaluation.
+// Whether the scene has spot, box and virtual point lights (lightTypeConstants, render/frame.h): a
+// pass that sets them false compiles those branches out of every light evaluation.
 layout(constant_id = 30) const bool kSceneHasSpots = true;
 layout(constant_id = 31) const bool kSceneHasBoxes = true;
+layout(constant_id = 32) const bool kSceneHasVpls = true;
 
 struct Surface {
   vec3 position;
@@ -110,6 +111,12 @@ void boxHalfAxes(GpuLight light, out vec3 x, out vec3 y, out vec3 z) {
 float lightAttenuation(GpuLight light, vec3 toLight, vec3 l, float distance) {
   if (kSceneHasBoxes && uint(light.directionType.w) == kLightBox)
     return boxWindow(light, -toLight) / max(distance * distance, 1e-4);
+  if (kSceneHasVpls && uint(light.directionType.w) == kLightVpl) {
+    // A Lambertian emitter: cos(theta) about its normal; its 1/d^2 clamped at its near distance,
+    // where the point stops standing for the patch of surface it was merged from.
+    float cosine = max(dot(light.directionType.xyz, -l), 0.0);
+    return rangeAttenuation(max(distance, light.spotParams.x), light.positionRange.w) * cosine;
+  }
   return rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
 }
 

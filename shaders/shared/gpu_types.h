@@ -13,6 +13,7 @@ struct GpuLight {
   vec4 directionType;   // xyz spot: direction it points to (unit); box: its x axis over its half
                         // extent; w kLightPoint, kLightSpot or kLightBox
   vec4 spotParams;      // spot: x cos(outer cone), y cos(inner cone), z angle scale, w angle offset
+                        // VPL: x its near distance (the 1/d^2 clamp); directionType.xyz its normal
                         // box: xyz its y axis over its half extent, w hx * hy / hz (so that
                         // cross(x, y) * w is its z axis over its half extent)
 };

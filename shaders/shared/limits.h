@@ -28,6 +28,7 @@ LLL_CONST(uint, kMaxImageSide, 8192u);
 LLL_CONST(uint, kLightPoint, 0u);
 LLL_CONST(uint, kLightSpot, 1u);
 LLL_CONST(uint, kLightBox, 2u);
+LLL_CONST(uint, kLightVpl, 3u);
 // Material alpha modes, stored in GpuMaterial.flags.
 LLL_CONST(uint, kAlphaOpaque, 0u);
 LLL_CONST(uint, kAlphaMask, 1u);

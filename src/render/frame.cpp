@@ -73,12 +73,13 @@ SpecializationConstants lightTypeConstants(const GpuScene& scene) {
 }
 
 SpecializationConstants lightTypeConstants(const Scene& scene) {
-  bool spots = false, boxes = false;
+  bool spots = false, boxes = false, vpls = false;
   for (const Light& light : scene.lights) {
     spots |= light.type == LightType::Spot;
     boxes |= light.type == LightType::Box;
+    vpls |= light.type == LightType::Vpl;
   }
-  return {{30, spots ? 1u : 0u}, {31, boxes ? 1u : 0u}};
+  return {{30, spots ? 1u : 0u}, {31, boxes ? 1u : 0u}, {32, vpls ? 1u : 0u}};
 }
 
 void dispatchPerPixel(VkCommandBuffer cmd, const FrameTargets& targets) {

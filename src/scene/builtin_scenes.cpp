@@ -6,6 +6,7 @@
 #include <glm/gtx/color_space.hpp>
 
 #include "scene/builtin_atrium.h"
+#include "scene/builtin_gi_scenes.h"
 #include "scene/mesh_builder.h"
 
 namespace lll {
@@ -132,6 +133,15 @@ const BuiltinEntry kBuiltinScenes[] = {
     {"box-plane",
      "the same plane with four box lights of different sizes and orientations (Bezrati's box volumes)",
      makeBoxPlane},
+    {"cornell",
+     "indirect-light test: a closed Cornell-like room (red and green walls) with a spot on the red wall, and "
+     "a "
+     "sealed second room (try --gi vpl)",
+     builtin::makeCornell},
+    {"sphere-room",
+     "indirect-light test: the inside of a closed grey sphere with a point light at its centre (analytic "
+     "bounces)",
+     builtin::makeSphereRoom},
 };
 
 }  // namespace

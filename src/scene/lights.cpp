@@ -68,6 +68,11 @@ gpu::GpuLight toGpuLight(const Light& light) {
     g.spotParams = glm::vec4(light.boxAxisY / h.y, h.x * h.y / h.z);
     return g;
   }
+  if (light.type == LightType::Vpl) {
+    g.directionType = glm::vec4(glm::normalize(light.direction), float(gpu::kLightVpl));
+    g.spotParams = glm::vec4(light.nearDistance, 0.0f, 0.0f, 0.0f);
+    return g;
+  }
   const uint32_t type = light.type == LightType::Spot ? gpu::kLightSpot : gpu::kLightPoint;
   g.directionType = glm::vec4(glm::normalize(light.direction), float(type));
   // KHR_lights_punctual's spot falloff, precomputed: smooth = saturate(cd * scale + offset)^2.

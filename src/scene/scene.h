@@ -73,7 +73,10 @@ struct Instance {
 // Point and Spot as KHR_lights_punctual. Box: Bezrati's box-shaped light volume (the chapter draws
 // area lights as boxes): a point emitter at the box's centre whose influence is bounded by an
 // oriented box instead of a sphere, fading smoothly to zero at the box's faces (brdf.glsl).
-enum class LightType : uint32_t { Point = 0, Spot = 1, Box = 2 };
+// Vpl: a virtual point light of instant radiosity (gi/photons.h): a Lambertian emitter, intensity
+// times the cosine about `direction` (the surface normal it was deposited on), its 1/d^2 clamped
+// at nearDistance; bounded by its range sphere like a point light.
+enum class LightType : uint32_t { Point = 0, Spot = 1, Box = 2, Vpl = 3 };
 
 // KHR_lights_punctual semantics: intensity in candela, colour linear, range finite (loaders turn
 // an unbounded glTF light into a finite range, see lights.h), cone angles in radians. A box light's
@@ -81,7 +84,7 @@ enum class LightType : uint32_t { Point = 0, Spot = 1, Box = 2 };
 struct Light {
   LightType type = LightType::Point;
   glm::vec3 position{0.0f};
-  glm::vec3 direction{0.0f, 0.0f, -1.0f};  // where a spot light points, unit length
+  glm::vec3 direction{0.0f, 0.0f, -1.0f};  // where a spot light points (a VPL: its normal), unit length
   glm::vec3 color{1.0f};
   float intensity = 1.0f;
   float range = 1.0f;
@@ -91,6 +94,7 @@ struct Light {
   glm::vec3 boxAxisX{1.0f, 0.0f, 0.0f};
   glm::vec3 boxAxisY{0.0f, 1.0f, 0.0f};
   glm::vec3 halfExtents{0.5f};
+  float nearDistance = 0.0f;  // VPLs: 1/d^2 is taken as 1/max(d, nearDistance)^2
 };
 
 struct Camera {

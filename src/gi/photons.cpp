@@ -1,0 +1,314 @@
+#include "gi/photons.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <thread>
+
+#include "gi/random.h"
+#include "gi/ray_scene.h"
+#include "scene/lights.h"
+
+namespace lll::gi {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+float channelMean(const glm::vec3& c) {
+  return (c.r + c.g + c.b) / 3.0f;
+}
+float luminance(const glm::vec3& c) {
+  return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
+
+// KHR_lights_punctual's range window, the one brdf.glsl's rangeAttenuation applies.
+float rangeWindow(float distance, float range) {
+  const float r = distance / range;
+  const float w = std::clamp(1.0f - r * r * r * r, 0.0f, 1.0f);
+  return w * w;
+}
+
+// brdf.glsl's boxWindow, with the axes as the Light keeps them.
+float boxWindow(const Light& light, const glm::vec3& offset) {
+  const glm::vec3 z = glm::cross(light.boxAxisX, light.boxAxisY);
+  const glm::vec3 q =
+      glm::vec3(glm::dot(offset, light.boxAxisX), glm::dot(offset, light.boxAxisY), glm::dot(offset, z)) /
+      light.halfExtents;
+  glm::vec3 w = glm::clamp(1.0f - q * q * q * q, 0.0f, 1.0f);
+  w *= w;
+  return w.x * w.y * w.z;
+}
+
+// KHR's spot falloff as lights.cpp encodes it for the GPU: saturate(cd * scale + offset)^2.
+float spotFalloff(const Light& light, float cosAngle) {
+  const float cosOuter = std::cos(light.outerConeAngle), cosInner = std::cos(light.innerConeAngle);
+  const float scale = 1.0f / std::max(1e-4f, cosInner - cosOuter);
+  const float t = std::clamp((cosAngle - cosOuter) * scale, 0.0f, 1.0f);
+  return t * t;
+}
+
+// Solid angle a light's photons leave into: the whole sphere, or a spot's outer cone.
+float emissionSolidAngle(const Light& light) {
+  if (light.type == LightType::Spot) return 2.0f * kPi * (1.0f - std::cos(light.outerConeAngle));
+  return 4.0f * kPi;
+}
+
+bool emitsPhotons(const Light& light) {
+  return light.type != LightType::Vpl && light.intensity > 0.0f;
+}
+
+// A unit vector about `axis` at polar cosine `cosTheta` and azimuth `phi`.
+glm::vec3 aroundAxis(const glm::vec3& axis, float cosTheta, float phi) {
+  const glm::vec3 helper = std::abs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  const glm::vec3 t = glm::normalize(glm::cross(helper, axis));
+  const glm::vec3 b = glm::cross(axis, t);
+  const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+  return glm::normalize(t * (sinTheta * std::cos(phi)) + b * (sinTheta * std::sin(phi)) + axis * cosTheta);
+}
+
+struct Emitters {
+  std::vector<uint32_t> light;  // index into the scene's lights
+  std::vector<float> cdf;       // cumulative selection probability
+  std::vector<float> probability;
+};
+
+Emitters chooseEmitters(const std::vector<Light>& lights) {
+  Emitters e;
+  double total = 0.0;
+  for (uint32_t i = 0; i < lights.size(); ++i) {
+    if (!emitsPhotons(lights[i])) continue;
+    const double power =
+        double(lights[i].intensity) * channelMean(lights[i].color) * emissionSolidAngle(lights[i]);
+    if (!(power > 0.0)) continue;
+    e.light.push_back(i);
+    e.probability.push_back(float(power));
+    total += power;
+  }
+  float running = 0.0f;
+  for (float& p : e.probability) {
+    p = float(double(p) / total);
+    running += p;
+    e.cdf.push_back(running);
+  }
+  if (!e.cdf.empty()) e.cdf.back() = 1.0f;
+  return e;
+}
+
+// One photon's walk from its light; appends its deposits and returns the flux it left with.
+glm::vec3 tracePhoton(const RayScene& rays, const std::vector<Light>& lights, const Emitters& emitters,
+                      uint32_t photonCount, uint32_t bounces, Random& random,
+                      std::vector<PhotonDeposit>& out) {
+  const size_t pick = size_t(std::lower_bound(emitters.cdf.begin(), emitters.cdf.end(), random.uniform()) -
+                             emitters.cdf.begin());
+  const size_t chosen = std::min(pick, emitters.light.size() - 1);
+  const Light& light = lights[emitters.light[chosen]];
+  glm::vec3 direction;
+  float angular = 1.0f;
+  if (light.type == LightType::Spot) {
+    const float cosOuter = std::cos(light.outerConeAngle);
+    const float cosTheta = 1.0f - random.uniform() * (1.0f - cosOuter);
+    direction = aroundAxis(glm::normalize(light.direction), cosTheta, 2.0f * kPi * random.uniform());
+    angular = spotFalloff(light, cosTheta);
+  } else {
+    direction = aroundAxis(glm::vec3(0, 0, 1), 1.0f - 2.0f * random.uniform(), 2.0f * kPi * random.uniform());
+  }
+  const glm::vec3 emitted = light.color * (light.intensity * emissionSolidAngle(light) * angular /
+                                           (float(photonCount) * emitters.probability[chosen]));
+
+  glm::vec3 flux = emitted;
+  glm::vec3 origin = light.position;
+  const float offset = rays.surfaceOffset();
+  bool fromLight = true;
+  for (uint32_t deposits = 0; deposits < bounces;) {
+    // Beyond its range (its bounding radius for a box) a light's window is zero.
+    const float reach = fromLight ? light.range - glm::distance(origin, light.position)
+                                  : std::numeric_limits<float>::infinity();
+    if (!(reach > 0.0f)) break;
+    const std::optional<RayHit> hit = rays.intersect(origin, direction, fromLight ? 0.0f : offset, reach);
+    if (!hit) break;
+    const SurfaceResponse surface = rays.surfaceAt(*hit);
+    if (surface.coverage < 1.0f && random.uniform() >= surface.coverage) {
+      origin = hit->position + direction * offset;  // through the glass, unchanged
+      continue;
+    }
+    if (fromLight) {
+      flux *= light.type == LightType::Box
+                  ? boxWindow(light, hit->position - light.position)
+                  : rangeWindow(glm::distance(hit->position, light.position), light.range);
+      fromLight = false;
+    }
+    const glm::vec3 reflected = flux * surface.albedo;
+    if (glm::dot(reflected, glm::vec3(1.0f)) <= 0.0f) break;
+    out.push_back({hit->position, hit->normal, reflected});
+    ++deposits;
+    const float survival = std::min(1.0f, std::max({surface.albedo.r, surface.albedo.g, surface.albedo.b}));
+    if (random.uniform() >= survival) break;
+    flux = reflected / survival;
+    origin = hit->position + hit->normal * offset;
+    const float u = random.uniform();
+    direction = aroundAxis(hit->normal, std::sqrt(1.0f - u), 2.0f * kPi * random.uniform());
+  }
+  return emitted;
+}
+
+}  // namespace
+
+Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& flux, float nearDistance) {
+  Light vpl;
+  vpl.type = LightType::Vpl;
+  vpl.position = position;
+  vpl.direction = glm::normalize(normal);
+  const float peak = std::max({flux.r, flux.g, flux.b});
+  vpl.color = peak > 0.0f ? flux / peak : glm::vec3(0.0f);
+  vpl.intensity = peak / kPi;
+  vpl.range = std::max(rangeForUnboundedLight(vpl.intensity, vpl.color), 2.0f * nearDistance);
+  vpl.nearDistance = nearDistance;
+  return vpl;
+}
+
+std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const std::vector<Light>& lights,
+                                        const VplOptions& options, PhotonStats* stats) {
+  const auto begin = std::chrono::steady_clock::now();
+  const Emitters emitters = chooseEmitters(lights);
+  std::vector<PhotonDeposit> deposits;
+  glm::vec3 emitted(0.0f);
+  if (!emitters.light.empty() && options.photons > 0 && options.bounces > 0) {
+    const uint32_t threads =
+        std::max(1u, options.threads ? options.threads : std::thread::hardware_concurrency());
+    // Fixed chunks in photon order, each with its own output: the result does not depend on which
+    // thread took which chunk.
+    constexpr uint32_t kChunk = 1024;
+    const uint32_t chunks = (options.photons + kChunk - 1) / kChunk;
+    std::vector<std::vector<PhotonDeposit>> perChunk(chunks);
+    std::vector<glm::vec3> emittedPerChunk(chunks, glm::vec3(0.0f));
+    std::atomic<uint32_t> next{0}, done{0};
+    auto work = [&] {
+      for (uint32_t c; (c = next.fetch_add(1)) < chunks;) {
+        const uint32_t end = std::min(options.photons, (c + 1) * kChunk);
+        for (uint32_t p = c * kChunk; p < end; ++p) {
+          Random random(options.seed, p);
+          emittedPerChunk[c] +=
+              tracePhoton(rays, lights, emitters, options.photons, options.bounces, random, perChunk[c]);
+        }
+        const uint32_t finished = done.fetch_add(1) + 1;
+        if (options.progress) options.progress(double(finished) / chunks);
+      }
+    };
+    std::vector<std::thread> pool;
+    for (uint32_t t = 1; t < std::min(threads, chunks); ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    size_t total = 0;
+    for (const auto& chunk : perChunk) total += chunk.size();
+    deposits.reserve(total);
+    for (uint32_t c = 0; c < chunks; ++c) {
+      deposits.insert(deposits.end(), perChunk[c].begin(), perChunk[c].end());
+      emitted += emittedPerChunk[c];
+    }
+  }
+  if (stats) {
+    stats->photons = emitters.light.empty() ? 0 : options.photons;
+    stats->deposits = deposits.size();
+    stats->emittedFlux = emitted;
+    stats->depositedFlux = glm::vec3(0.0f);
+    for (const PhotonDeposit& d : deposits) stats->depositedFlux += d.flux;
+    stats->traceMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+  }
+  return deposits;
+}
+
+namespace {
+
+// Which way a normal leans: its dominant axis and that axis's sign (0..5).
+uint64_t normalBucket(const glm::vec3& n) {
+  const glm::vec3 a = glm::abs(n);
+  const uint64_t axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+  return axis * 2 + (n[int(axis)] < 0.0f ? 1 : 0);
+}
+
+// Deposits keyed by cell and normal bucket: 20 bits per cell coordinate, 3 for the bucket.
+constexpr float kCellSteps = float(1u << 20) - 2.0f;
+
+std::vector<std::pair<uint64_t, uint32_t>> keyDeposits(const std::vector<PhotonDeposit>& deposits,
+                                                       const Bounds& bounds, float cell) {
+  std::vector<std::pair<uint64_t, uint32_t>> keys(deposits.size());
+  for (uint32_t i = 0; i < deposits.size(); ++i) {
+    const glm::uvec3 c = glm::uvec3(glm::clamp((deposits[i].position - bounds.min) / cell, 0.0f, kCellSteps));
+    keys[i] = {(uint64_t(c.x) << 43) | (uint64_t(c.y) << 23) | (uint64_t(c.z) << 3) |
+                   normalBucket(deposits[i].normal),
+               i};
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+size_t countCells(const std::vector<std::pair<uint64_t, uint32_t>>& keys) {
+  size_t count = 0;
+  for (size_t i = 0; i < keys.size(); ++i) count += i == 0 || keys[i].first != keys[i - 1].first;
+  return count;
+}
+
+}  // namespace
+
+std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uint32_t target,
+                                 float unmergedNearDistance, PhotonStats* stats) {
+  const auto begin = std::chrono::steady_clock::now();
+  std::vector<Light> vpls;
+  auto finish = [&](float cell) {
+    if (stats) {
+      stats->cellSize = cell;
+      stats->vpls = vpls.size();
+      stats->mergeMs =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+    }
+    return vpls;
+  };
+  if (target == 0 || deposits.size() <= target) {
+    vpls.reserve(deposits.size());
+    for (const PhotonDeposit& d : deposits)
+      vpls.push_back(makeVpl(d.position, d.normal, d.flux, unmergedNearDistance));
+    return finish(0.0f);
+  }
+  Bounds bounds;
+  for (const PhotonDeposit& d : deposits) bounds.expand(d.position);
+  const float diagonal = std::max(glm::length(bounds.extent()), 1e-6f);
+  // Bisect the cell edge in log space: the largest is one cell over everything (at most six
+  // buckets, under any target >= 6), the smallest the key's resolution.
+  float lo = diagonal / kCellSteps, hi = 2.0f * diagonal;
+  while (hi / lo > 1.01f) {
+    const float mid = std::sqrt(lo * hi);
+    (countCells(keyDeposits(deposits, bounds, mid)) <= target ? hi : lo) = mid;
+  }
+  const auto keys = keyDeposits(deposits, bounds, hi);
+  for (size_t first = 0; first < keys.size();) {
+    size_t last = first;
+    glm::vec3 flux(0.0f), position(0.0f), normal(0.0f);
+    float weight = 0.0f;
+    for (; last < keys.size() && keys[last].first == keys[first].first; ++last) {
+      const PhotonDeposit& d = deposits[keys[last].second];
+      const float w = std::max(luminance(d.flux), 1e-30f);
+      flux += d.flux;
+      position += d.position * w;
+      normal += d.normal * w;
+      weight += w;
+    }
+    const float n = glm::length(normal);
+    vpls.push_back(makeVpl(position / weight, n > 0.0f ? normal / n : deposits[keys[first].second].normal,
+                           flux, 0.5f * hi));
+    first = last;
+  }
+  return finish(hi);
+}
+
+std::vector<Light> makeVirtualPointLights(const Scene& scene, const VplOptions& options, PhotonStats* stats) {
+  const RayScene rays(scene);
+  const std::vector<PhotonDeposit> deposits = tracePhotons(rays, scene.lights, options, stats);
+  const Bounds bounds = scene.worldBounds();
+  const float unmergedNear = bounds.valid() ? 1e-3f * glm::length(bounds.extent()) : 1e-3f;
+  return mergeDeposits(deposits, options.vplCount, unmergedNear, stats);
+}
+
+}  // namespace lll::gi

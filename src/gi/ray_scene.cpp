@@ -1,0 +1,207 @@
+#include "gi/ray_scene.h"
+
+#include <embree3/rtcore.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace lll::gi {
+
+struct RayScene::State {
+  const Scene* scene = nullptr;
+  RTCDevice device = nullptr;
+  RTCScene rtcScene = nullptr;
+  std::vector<uint32_t> triangleMaterial;  // per triangle
+  std::vector<glm::vec2> cornerUv;         // 3 per triangle
+  std::vector<float> materialCutoff;       // per material: the mask cutoff, or -1 when not masked
+
+  float alphaAt(uint32_t triangle, float u, float v) const {
+    const Material& m = scene->materials[triangleMaterial[triangle]];
+    float alpha = m.baseColorFactor.a;
+    if (m.baseColorTexture >= 0) {
+      const glm::vec2* c = &cornerUv[3 * size_t(triangle)];
+      alpha *= sampleTexture(scene->textures[size_t(m.baseColorTexture)],
+                             (1.0f - u - v) * c[0] + u * c[1] + v * c[2])
+                   .a;
+    }
+    return alpha;
+  }
+
+  ~State() {
+    if (rtcScene) rtcReleaseScene(rtcScene);
+    if (device) rtcReleaseDevice(device);
+  }
+};
+
+namespace {
+
+// Embree's filter callback: refuses hits on a masked material where its alpha is under the cutoff.
+void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
+  const auto* state = static_cast<const RayScene::State*>(args->geometryUserPtr);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    const uint32_t triangle = RTCHitN_primID(args->hit, args->N, i);
+    const float cutoff = state->materialCutoff[state->triangleMaterial[triangle]];
+    if (cutoff < 0.0f) continue;
+    if (state->alphaAt(triangle, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)) < cutoff)
+      args->valid[i] = 0;
+  }
+}
+
+float decodeSrgb(uint8_t value) {
+  const float c = float(value) / 255.0f;
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+}  // namespace
+
+glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv) {
+  if (texture.width == 0 || texture.height == 0) return glm::vec4(1.0f);
+  const float x = uv.x * float(texture.width) - 0.5f, y = uv.y * float(texture.height) - 0.5f;
+  const float fx = std::floor(x), fy = std::floor(y);
+  const float tx = x - fx, ty = y - fy;
+  auto wrap = [](float i, uint32_t n) {
+    const int64_t m = int64_t(n);
+    const int64_t k = int64_t(std::fmod(double(i), double(m)));
+    return uint32_t(k < 0 ? k + m : k);
+  };
+  auto texel = [&](float ix, float iy) {
+    const size_t at = (size_t(wrap(iy, texture.height)) * texture.width + wrap(ix, texture.width)) * 4;
+    const uint8_t* p = &texture.rgba[at];
+    if (texture.srgb)
+      return glm::vec4(decodeSrgb(p[0]), decodeSrgb(p[1]), decodeSrgb(p[2]), float(p[3]) / 255.0f);
+    return glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
+  };
+  return glm::mix(glm::mix(texel(fx, fy), texel(fx + 1, fy), tx),
+                  glm::mix(texel(fx, fy + 1), texel(fx + 1, fy + 1), tx), ty);
+}
+
+RayScene::RayScene(const Scene& scene) : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.scene = &scene;
+  s.device = rtcNewDevice(nullptr);
+  if (!s.device) throw std::runtime_error("Embree: could not create a device");
+  s.rtcScene = rtcNewScene(s.device);
+
+  std::vector<glm::vec3> positions;
+  std::vector<uint32_t> indices;
+  for (const Instance& instance : scene.instances) {
+    const Mesh& mesh = scene.meshes[instance.mesh];
+    for (const Primitive& p : mesh.primitives) {
+      for (uint32_t i = 0; i + 2 < p.indexCount; i += 3) {
+        for (uint32_t corner = 0; corner < 3; ++corner) {
+          const Vertex& v =
+              scene.vertices[size_t(p.vertexOffset) + scene.indices[size_t(p.firstIndex) + i + corner]];
+          indices.push_back(uint32_t(positions.size()));
+          positions.push_back(glm::vec3(instance.transform * glm::vec4(v.position, 1.0f)));
+          s.cornerUv.push_back(v.uv);
+        }
+        s.triangleMaterial.push_back(p.material);
+      }
+    }
+  }
+  bool anyMask = false;
+  for (const Material& m : scene.materials) {
+    const bool masked = m.alphaMode == AlphaMode::Mask;
+    s.materialCutoff.push_back(masked ? m.alphaCutoff : -1.0f);
+    anyMask |= masked;
+  }
+
+  const Bounds bounds = scene.worldBounds();
+  if (bounds.valid()) surfaceOffset_ = std::max(1e-5f, 1e-5f * glm::length(bounds.extent()));
+
+  if (!s.triangleMaterial.empty()) {
+    RTCGeometry geometry = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree reads vertex buffers 16 bytes at a time: one spare float3 pads the last one.
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(glm::vec3), positions.size() + 1));
+    auto* ib =
+        static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                       3 * sizeof(uint32_t), s.triangleMaterial.size()));
+    if (!vb || !ib) {
+      rtcReleaseGeometry(geometry);
+      throw std::runtime_error(
+          fmt::format("Embree: could not allocate {} triangles", s.triangleMaterial.size()));
+    }
+    std::copy_n(&positions[0].x, positions.size() * 3, vb);
+    std::copy(indices.begin(), indices.end(), ib);
+    if (anyMask) {
+      rtcSetGeometryUserData(geometry, &s);
+      rtcSetGeometryIntersectFilterFunction(geometry, alphaMaskFilter);
+      rtcSetGeometryOccludedFilterFunction(geometry, alphaMaskFilter);
+    }
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(s.rtcScene, geometry);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(s.rtcScene);
+  if (const RTCError error = rtcGetDeviceError(s.device); error != RTC_ERROR_NONE)
+    throw std::runtime_error(fmt::format("Embree: building the scene's {} triangles failed (error {})",
+                                         s.triangleMaterial.size(), int(error)));
+}
+
+RayScene::~RayScene() = default;
+
+uint64_t RayScene::triangleCount() const {
+  return state_->triangleMaterial.size();
+}
+
+std::optional<RayHit> RayScene::intersect(const glm::vec3& origin, const glm::vec3& direction, float tNear,
+                                          float tFar) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh{};
+  rh.ray.org_x = origin.x, rh.ray.org_y = origin.y, rh.ray.org_z = origin.z;
+  rh.ray.dir_x = direction.x, rh.ray.dir_y = direction.y, rh.ray.dir_z = direction.z;
+  rh.ray.tnear = tNear;
+  rh.ray.tfar = tFar;
+  rh.ray.mask = ~0u;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(state_->rtcScene, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+  RayHit hit;
+  hit.distance = rh.ray.tfar;
+  hit.position = origin + direction * rh.ray.tfar;
+  glm::vec3 n(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+  const float length = glm::length(n);
+  n = length > 0.0f ? n / length : -direction;
+  hit.normal = glm::dot(n, direction) > 0.0f ? -n : n;
+  const uint32_t triangle = rh.hit.primID;
+  hit.material = state_->triangleMaterial[triangle];
+  const glm::vec2* c = &state_->cornerUv[3 * size_t(triangle)];
+  hit.uv = (1.0f - rh.hit.u - rh.hit.v) * c[0] + rh.hit.u * c[1] + rh.hit.v * c[2];
+  return hit;
+}
+
+bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, float tNear, float tFar) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray{};
+  ray.org_x = origin.x, ray.org_y = origin.y, ray.org_z = origin.z;
+  ray.dir_x = direction.x, ray.dir_y = direction.y, ray.dir_z = direction.z;
+  ray.tnear = tNear;
+  ray.tfar = tFar;
+  ray.mask = ~0u;
+  rtcOccluded1(state_->rtcScene, &context, &ray);
+  return ray.tfar < 0.0f;  // Embree marks an occluded ray with tfar = -inf
+}
+
+SurfaceResponse RayScene::surfaceAt(const RayHit& hit) const {
+  const Material& m = state_->scene->materials[hit.material];
+  glm::vec4 base = m.baseColorFactor;
+  if (m.baseColorTexture >= 0)
+    base *= sampleTexture(state_->scene->textures[size_t(m.baseColorTexture)], hit.uv);
+  float metallic = m.metallic;
+  if (m.metallicRoughnessTexture >= 0)
+    metallic *= sampleTexture(state_->scene->textures[size_t(m.metallicRoughnessTexture)], hit.uv).b;
+  SurfaceResponse r;
+  r.albedo = glm::clamp(glm::vec3(base) * (1.0f - glm::clamp(metallic, 0.0f, 1.0f)), 0.0f, 1.0f);
+  r.coverage = m.alphaMode == AlphaMode::Blend ? glm::clamp(base.a, 0.0f, 1.0f) : 1.0f;
+  return r;
+}
+
+}  // namespace lll::gi

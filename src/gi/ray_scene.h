@@ -1,0 +1,64 @@
+#pragma once
+// The scene's triangles in world space under Embree (Debian 12's libembree-dev 3.13), for the CPU
+// work that needs rays: the photon tracer behind the virtual point lights and the path-traced
+// reference. Embree is in this one translation unit; callers see plain glm types.
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace lll::gi {
+
+struct RayHit {
+  float distance = 0.0f;
+  glm::vec3 position{0.0f};
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit geometric normal, turned to face the ray's origin
+  uint32_t material = 0;               // index into Scene::materials
+  glm::vec2 uv{0.0f};                  // TEXCOORD_0 at the hit
+};
+
+// What a material does to light at a hit, as the photon tracer and the reference see it: the
+// diffuse albedo of glTF's metallic-roughness model, (1 - metallic) * base colour (the metal lobe
+// and the dielectric's specular are not bounced: instant radiosity is diffuse), and the coverage
+// alpha of a blended surface (glass), which light crosses with probability 1 - coverage.
+struct SurfaceResponse {
+  glm::vec3 albedo{0.0f};
+  float coverage = 1.0f;
+};
+
+class RayScene {
+ public:
+  // Throws std::runtime_error when Embree cannot build the scene (out of memory).
+  explicit RayScene(const Scene& scene);
+  ~RayScene();
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
+
+  // Nearest hit along origin + t * direction for t in (tNear, tFar); `direction` unit length.
+  // Alpha-masked materials are crossed where their mask (factor x texture alpha) is below the
+  // cutoff. Safe to call from many threads at once.
+  std::optional<RayHit> intersect(const glm::vec3& origin, const glm::vec3& direction, float tNear,
+                                  float tFar) const;
+  // Whether anything blocks the segment; same masking rules.
+  bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tNear, float tFar) const;
+
+  SurfaceResponse surfaceAt(const RayHit& hit) const;
+
+  uint64_t triangleCount() const;
+  struct State;  // Embree's handles and the per-triangle data (ray_scene.cpp)
+  // A distance that lifts a ray's origin off the surface it leaves: relative to the scene's size.
+  float surfaceOffset() const { return surfaceOffset_; }
+
+ private:
+  std::unique_ptr<State> state_;
+  float surfaceOffset_ = 1e-4f;
+};
+
+// Linear RGBA of a texture at `uv`, bilinear with repeat wrapping (glTF's default sampler);
+// sRGB-encoded textures are decoded.
+glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv);
+
+}  // namespace lll::gi
