@@ -113,6 +113,12 @@ float attenuation(const Light& light, const glm::vec3& p) {
     return result;
   }
   if (d >= light.range) return 0.0f;
+  if (light.type == LightType::Vpl) {
+    // Lambertian emitter: cosine about its normal; 1/d^2 and the window at max(d, near distance).
+    const float dc = std::max(d, light.nearDistance);
+    const float window = glm::clamp(1.0f - std::pow(dc / light.range, 4.0f), 0.0f, 1.0f);
+    return window * window / (dc * dc) * std::max(glm::dot(light.direction, -toLight / d), 0.0f);
+  }
   const float window = glm::clamp(1.0f - std::pow(d / light.range, 4.0f), 0.0f, 1.0f);
   float result = window * window / (d * d);
   if (light.type == LightType::Spot) {
@@ -254,6 +260,21 @@ TEST_P(Analytic, BoxLightFootprint) {
     EXPECT_GT(c.dark, 4500);
     if (!lll) break;  // fills are lll's alone
   }
+}
+
+// A virtual point light of instant radiosity (gi/photons.h) half a metre over the plane, its normal
+// 60 degrees off straight down: the plane is lit only on the side its hemisphere faces, with the
+// cosine falloff, and under it the 1/d^2 stops at its near distance (0.8 m, more than its height).
+TEST_P(Analytic, VirtualPointLightHemisphereAndNearClamp) {
+  Scene scene = planeScene();
+  Light light = pointLight({0.0f, 0.5f, 0.0f}, 4.0f, 7.0f);
+  light.type = LightType::Vpl;
+  light.direction = glm::vec3(std::sin(kPi / 3.0f), -std::cos(kPi / 3.0f), 0.0f);
+  light.nearDistance = 0.8f;
+  scene.lights = {light};
+  const Counts c = checkAgainstFormula(scene, {}, light, GetParam());
+  EXPECT_GT(c.lit, 1200);
+  EXPECT_GT(c.dark, 2500);  // behind its hemisphere (x < ~-0.29) and beyond its range
 }
 
 // A light low over the plane (light arriving at up to ~85 degrees): a shading normal tilted by

@@ -2,8 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <vector>
 
@@ -44,6 +48,29 @@ void addOutput(PendingOutputs& outputs, const char* option, const std::optional<
   outputs.add(option, *path);
 }
 
+// Photon tracing's progress on stderr once it has run a second: redrawn in place on a terminal,
+// every quarter on a log.
+std::function<void(double)> photonProgress() {
+  const auto begin = std::chrono::steady_clock::now();
+  const bool terminal = isatty(fileno(stderr));
+  return [=, shownQuarter = 0](double fraction) mutable {
+    if (std::chrono::steady_clock::now() - begin < std::chrono::seconds(1) && fraction < 1.0) return;
+    if (terminal) {
+      fmt::print(stderr, "\rlll: tracing photons {:3.0f}%{}", 100.0 * fraction, fraction >= 1.0 ? "\n" : "");
+    } else if (int(fraction * 4.0) > shownQuarter) {
+      shownQuarter = int(fraction * 4.0);
+      fmt::print(stderr, "lll: tracing photons {:3.0f}%\n", 100.0 * fraction);
+    }
+  };
+}
+
+void printIndirectLight(const GiRequest& request, const gi::PhotonStats& s) {
+  fmt::print(stderr,
+             "lll: gi {}: {} photons, {} bounces at most: {} deposits in {:.1f} ms; {} virtual point lights "
+             "(cell {:.3g} m) in {:.1f} ms\n",
+             request.mode, s.photons, request.bounces, s.deposits, s.traceMs, s.vpls, s.cellSize, s.mergeMs);
+}
+
 }  // namespace
 
 int runRender(const RenderJob& job) {
@@ -54,8 +81,11 @@ int runRender(const RenderJob& job) {
   addOutput(outputs, "--hdr", job.outHdr, {".exr", ".pfm"});
   addOutput(outputs, "--stats", job.outStats, {});
   std::vector<std::string> warnings;
-  const Scene scene = loadScene(job.scene, &warnings);
+  IndirectLightReport gi;
+  if (job.scene.gi.mode != "none") gi.progress = photonProgress();
+  const Scene scene = loadScene(job.scene, &warnings, &gi);
   for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
+  if (job.scene.gi.mode != "none") printIndirectLight(job.scene.gi, gi.stats);
   particleOptions(scene, job.settings);  // a bad preset fails before Vulkan starts
   Context context(job.device);
   Renderer renderer(context, scene, job.settings);

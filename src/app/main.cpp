@@ -90,6 +90,26 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--cluster-slices", s.clusterSlices,
                  "clustered: depth slices per tile between its nearest and farthest surface (1 to 32)")
       ->check(CLI::Range(1u, 32u));
+  cmd.add_option(
+         "--gi", job.scene.gi.mode,
+         "indirect light: none | vpl (instant radiosity: photons traced from the lights leave virtual "
+         "point lights) | vpl-only (the virtual point lights without the direct lights)")
+      ->check(CLI::IsMember({"none", "vpl", "vpl-only"}));
+  cmd.add_option("--photons", job.scene.gi.photons, "--gi: photons traced from the lights")
+      ->check(CLI::Range(1u, lll::gi::kMaxPhotons));
+  cmd.add_option("--bounces", job.scene.gi.bounces,
+                 "--gi: deposits per photon at most (1: one-bounce indirect light)")
+      ->check(CLI::Range(1u, lll::gi::kMaxBounces));
+  cmd.add_option(
+         "--vpl-count", job.scene.gi.vplCount,
+         "--gi: merge the photons' deposits on a grid into at most this many virtual point lights (0: no "
+         "merging)")
+      ->check(CLI::Range(0u, lll::gpu::kMaxLights));
+  cmd.add_option(
+         "--vpl-cutoff", job.scene.gi.vplCutoff,
+         "--gi: a virtual point light reaches until its irradiance falls to this fraction of the scene's "
+         "mean indirect irradiance (smaller: longer ranges, longer light lists)")
+      ->check(finiteIn(1e-9, 1.0));
   cmd.add_option("--debug-view", s.debugView,
                  "none | heatmap | bounds | tiles (lll; heatmap and tiles: tiled, clustered)")
       ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));

@@ -4,12 +4,11 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <numeric>
+#include <mutex>
 #include <thread>
 
 #include "gi/random.h"
 #include "gi/ray_scene.h"
-#include "scene/lights.h"
 
 namespace lll::gi {
 namespace {
@@ -155,7 +154,8 @@ glm::vec3 tracePhoton(const RayScene& rays, const std::vector<Light>& lights, co
 
 }  // namespace
 
-Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& flux, float nearDistance) {
+Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& flux, float nearDistance,
+              float cutoffIrradiance) {
   Light vpl;
   vpl.type = LightType::Vpl;
   vpl.position = position;
@@ -163,7 +163,7 @@ Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec
   const float peak = std::max({flux.r, flux.g, flux.b});
   vpl.color = peak > 0.0f ? flux / peak : glm::vec3(0.0f);
   vpl.intensity = peak / kPi;
-  vpl.range = std::max(rangeForUnboundedLight(vpl.intensity, vpl.color), 2.0f * nearDistance);
+  vpl.range = std::max(std::sqrt(vpl.intensity / cutoffIrradiance), 2.0f * nearDistance);
   vpl.nearDistance = nearDistance;
   return vpl;
 }
@@ -183,7 +183,9 @@ std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const std::vector<
     const uint32_t chunks = (options.photons + kChunk - 1) / kChunk;
     std::vector<std::vector<PhotonDeposit>> perChunk(chunks);
     std::vector<glm::vec3> emittedPerChunk(chunks, glm::vec3(0.0f));
-    std::atomic<uint32_t> next{0}, done{0};
+    std::atomic<uint32_t> next{0};
+    uint32_t done = 0;
+    std::mutex progressMutex;
     auto work = [&] {
       for (uint32_t c; (c = next.fetch_add(1)) < chunks;) {
         const uint32_t end = std::min(options.photons, (c + 1) * kChunk);
@@ -192,8 +194,10 @@ std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const std::vector<
           emittedPerChunk[c] +=
               tracePhoton(rays, lights, emitters, options.photons, options.bounces, random, perChunk[c]);
         }
-        const uint32_t finished = done.fetch_add(1) + 1;
-        if (options.progress) options.progress(double(finished) / chunks);
+        if (options.progress) {
+          const std::lock_guard lock(progressMutex);
+          options.progress(double(++done) / chunks);
+        }
       }
     };
     std::vector<std::thread> pool;
@@ -253,8 +257,32 @@ size_t countCells(const std::vector<std::pair<uint64_t, uint32_t>>& keys) {
 
 }  // namespace
 
+double surfaceArea(const Scene& scene) {
+  double area = 0.0;
+  for (const Instance& instance : scene.instances) {
+    for (const Primitive& p : scene.meshes[instance.mesh].primitives) {
+      for (uint32_t i = 0; i + 2 < p.indexCount; i += 3) {
+        glm::vec3 c[3];
+        for (uint32_t k = 0; k < 3; ++k)
+          c[k] = glm::vec3(
+              instance.transform *
+              glm::vec4(scene.vertices[p.vertexOffset + scene.indices[p.firstIndex + i + k]].position, 1.0f));
+        area += 0.5 * double(glm::length(glm::cross(c[1] - c[0], c[2] - c[0])));
+      }
+    }
+  }
+  return area;
+}
+
+float vplCutoffIrradiance(const Scene& scene, const std::vector<PhotonDeposit>& deposits, float cutoff) {
+  double flux = 0.0;
+  for (const PhotonDeposit& d : deposits) flux += std::max({d.flux.r, d.flux.g, d.flux.b});
+  const double area = std::max(2.0 * surfaceArea(scene), 1e-12);
+  return float(std::max(double(cutoff) * flux / area, 1e-30));
+}
+
 std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uint32_t target,
-                                 float unmergedNearDistance, PhotonStats* stats) {
+                                 float unmergedNearDistance, float cutoffIrradiance, PhotonStats* stats) {
   const auto begin = std::chrono::steady_clock::now();
   std::vector<Light> vpls;
   auto finish = [&](float cell) {
@@ -269,7 +297,7 @@ std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uin
   if (target == 0 || deposits.size() <= target) {
     vpls.reserve(deposits.size());
     for (const PhotonDeposit& d : deposits)
-      vpls.push_back(makeVpl(d.position, d.normal, d.flux, unmergedNearDistance));
+      vpls.push_back(makeVpl(d.position, d.normal, d.flux, unmergedNearDistance, cutoffIrradiance));
     return finish(0.0f);
   }
   Bounds bounds;
@@ -297,7 +325,7 @@ std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uin
     }
     const float n = glm::length(normal);
     vpls.push_back(makeVpl(position / weight, n > 0.0f ? normal / n : deposits[keys[first].second].normal,
-                           flux, 0.5f * hi));
+                           flux, 0.5f * hi, cutoffIrradiance));
     first = last;
   }
   return finish(hi);
@@ -308,7 +336,8 @@ std::vector<Light> makeVirtualPointLights(const Scene& scene, const VplOptions& 
   const std::vector<PhotonDeposit> deposits = tracePhotons(rays, scene.lights, options, stats);
   const Bounds bounds = scene.worldBounds();
   const float unmergedNear = bounds.valid() ? 1e-3f * glm::length(bounds.extent()) : 1e-3f;
-  return mergeDeposits(deposits, options.vplCount, unmergedNear, stats);
+  return mergeDeposits(deposits, options.vplCount, unmergedNear,
+                       vplCutoffIrradiance(scene, deposits, options.cutoff), stats);
 }
 
 }  // namespace lll::gi

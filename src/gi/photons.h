@@ -35,14 +35,21 @@ inline constexpr uint32_t kDefaultPhotons = 100000;
 inline constexpr uint32_t kDefaultBounces = 2;
 inline constexpr uint32_t kMaxBounces = 16;
 inline constexpr uint32_t kMaxPhotons = 100000000;
+// Where a VPL's range ends (--vpl-cutoff): where its irradiance falls to this fraction of the
+// scene's mean indirect irradiance (the VPLs' total flux over the scene's surface area). Smaller
+// reaches further: every VPL then touches more pixels, and the light lists grow with it. The
+// truncation it costs is measured against the path-traced reference (bench/README.md).
+inline constexpr float kDefaultVplCutoff = 1e-3f;
 
 struct VplOptions {
   uint32_t photons = kDefaultPhotons;
   uint32_t bounces = kDefaultBounces;    // deposits per photon at most (1: one-bounce indirect light)
   uint32_t vplCount = kDefaultVplCount;  // merge target; 0 keeps every deposit as its own VPL
+  float cutoff = kDefaultVplCutoff;
   uint32_t seed = 1;
   uint32_t threads = 0;  // 0: one per hardware thread
-  // Called from the tracing thread with the fraction of photons traced so far (0..1).
+  // Called with the fraction of photons traced so far (0..1), from the tracing threads, one call at
+  // a time.
   std::function<void(double)> progress;
 };
 
@@ -69,17 +76,25 @@ struct PhotonStats {
 std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const std::vector<Light>& lights,
                                         const VplOptions& options, PhotonStats* stats = nullptr);
 
+// The irradiance at which a VPL is cut off: `cutoff` times the deposits' total flux over the scene's
+// surface area (both sides of every triangle count: light reaches either).
+float vplCutoffIrradiance(const Scene& scene, const std::vector<PhotonDeposit>& deposits, float cutoff);
+double surfaceArea(const Scene& scene);
+
 // Merges deposits on a regular grid (cells of one edge, deposits also split by the axis their
 // normal leans to, so the two sides of a thin wall stay apart) into at most `target` VPLs: flux
 // summed, position and normal flux-weighted. The cell edge is the smallest (within 1%) that meets
 // the target. Each VPL's near distance (the 1/d^2 clamp) is half the cell edge: closer than that
 // the point stands for a patch, not a point. target 0 keeps every deposit.
 std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uint32_t target,
-                                 float unmergedNearDistance, PhotonStats* stats = nullptr);
+                                 float unmergedNearDistance, float cutoffIrradiance,
+                                 PhotonStats* stats = nullptr);
 
 // The light a deposit or a merged cell becomes: intensity flux / pi along the normal, colour
-// normalised to its brightest channel, range where it fades under kUnboundedLightCutoff.
-Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& flux, float nearDistance);
+// normalised to its brightest channel, range where its brightest channel's irradiance falls to
+// `cutoffIrradiance` (at least twice its near distance).
+Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& flux, float nearDistance,
+              float cutoffIrradiance);
 
 // tracePhotons then mergeDeposits over the scene's own lights.
 std::vector<Light> makeVirtualPointLights(const Scene& scene, const VplOptions& options,

@@ -12,7 +12,56 @@
 
 namespace lll {
 
-Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings) {
+namespace {
+
+void validateGi(const GiRequest& gi) {
+  if (gi.mode != "none" && gi.mode != "vpl" && gi.mode != "vpl-only")
+    throw InputError(fmt::format("--gi {}: expected none, vpl or vpl-only", gi.mode));
+  if (gi.photons < 1 || gi.photons > gi::kMaxPhotons)
+    throw InputError(fmt::format("--photons {}: expected 1 to {}", gi.photons, gi::kMaxPhotons));
+  if (gi.bounces < 1 || gi.bounces > gi::kMaxBounces)
+    throw InputError(fmt::format("--bounces {}: expected 1 to {}", gi.bounces, gi::kMaxBounces));
+  // The merge keeps the two sides of a wall apart (six normal directions per cell): fewer than six
+  // VPLs cannot be met by any cell size.
+  if (gi.vplCount != 0 && (gi.vplCount < 6 || gi.vplCount > gpu::kMaxLights))
+    throw InputError(
+        fmt::format("--vpl-count {}: expected 0 (no merging) or 6 to {}", gi.vplCount, gpu::kMaxLights));
+  if (!(gi.vplCutoff >= 1e-9f && gi.vplCutoff <= 1.0f))
+    throw InputError(fmt::format("--vpl-cutoff {}: expected a fraction in [1e-9, 1]", gi.vplCutoff));
+}
+
+// Traces the photons from the scene's lights and adds the VPLs they leave (vpl-only: instead of
+// the lights).
+void addIndirectLight(Scene& scene, const SceneRequest& request, std::vector<std::string>* warnings,
+                      IndirectLightReport* report) {
+  gi::VplOptions options;
+  options.photons = request.gi.photons;
+  options.bounces = request.gi.bounces;
+  options.vplCount = request.gi.vplCount;
+  options.cutoff = request.gi.vplCutoff;
+  options.seed = request.seed;
+  if (report) options.progress = report->progress;
+  gi::PhotonStats stats;
+  std::vector<Light> vpls = gi::makeVirtualPointLights(scene, options, &stats);
+  if (report) report->stats = stats;
+  if (vpls.empty() && warnings)
+    warnings->push_back(
+        fmt::format("--gi {}: no photon landed on a surface that reflects light ({} lights, {} photons): "
+                    "no virtual point lights",
+                    request.gi.mode, scene.lights.size(), request.gi.photons));
+  if (request.gi.mode == "vpl-only") scene.lights.clear();
+  if (scene.lights.size() + vpls.size() > gpu::kMaxLights)
+    throw InputError(
+        fmt::format("--gi {}: {} virtual point lights and {} lights exceed the {} supported; lower "
+                    "--vpl-count",
+                    request.gi.mode, vpls.size(), scene.lights.size(), gpu::kMaxLights));
+  scene.lights.insert(scene.lights.end(), vpls.begin(), vpls.end());
+}
+
+}  // namespace
+
+Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings, IndirectLightReport* gi) {
+  validateGi(request.gi);
   const std::string name = request.scene.empty() ? std::string(kDefaultSceneName) : request.scene;
   Scene scene;
   if (auto builtin = makeBuiltinScene(name)) {
@@ -55,6 +104,7 @@ Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings)
       scene.lights[i].intensity *= intensityScale;
     }
   }
+  if (request.gi.mode != "none") addIndirectLight(scene, request, warnings, gi);
   return scene;
 }
 

@@ -2,14 +2,27 @@
 // Turns the SCENE argument into a Scene: a built-in name or a .gltf/.glb path; then adds the
 // seeded random lights asked for with --lights.
 #include <cstdint>
+#include <functional>
 #include <string>
 
+#include "gi/photons.h"
 #include "scene/scene.h"
 
 namespace lll {
 
 // Largest --light-range-scale: beyond it every random light covers the whole default scene.
 inline constexpr float kMaxLightRangeScale = 16.0f;
+
+// --gi: instant radiosity (gi/photons.h). Photons are traced from the scene's lights, the --lights
+// included, and the virtual point lights they leave are added to the scene as lights.
+struct GiRequest {
+  std::string mode = "none";  // none | vpl | vpl-only (the VPLs alone: the indirect light by itself)
+  uint32_t photons = gi::kDefaultPhotons;
+  uint32_t bounces = gi::kDefaultBounces;
+  uint32_t vplCount = gi::kDefaultVplCount;  // 0: one VPL per deposit, unmerged
+  float vplCutoff = gi::kDefaultVplCutoff;
+  bool operator==(const GiRequest&) const = default;
+};
 
 struct SceneRequest {
   std::string scene;         // built-in name or path; empty for the default scene
@@ -19,10 +32,20 @@ struct SceneRequest {
   // Also multiply their intensities by lightRangeScale^2, so a light's radiance at a given fraction
   // of its range is unchanged (the density study: more, smaller lights, the same exposure).
   bool scaleIntensityWithRange = false;
+  GiRequest gi;
   bool operator==(const SceneRequest&) const = default;
 };
 
-// Throws InputError for an unknown name, a missing or broken file, or too many lights.
-Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings = nullptr);
+// What the photon tracing did, for the command line's report; `progress` (optional) is called with
+// the fraction of photons traced.
+struct IndirectLightReport {
+  gi::PhotonStats stats;
+  std::function<void(double)> progress;
+};
+
+// Throws InputError for an unknown name, a missing or broken file, too many lights or bad --gi
+// options.
+Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings = nullptr,
+                IndirectLightReport* gi = nullptr);
 
 }  // namespace lll
