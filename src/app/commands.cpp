@@ -7,10 +7,14 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <vector>
 
+#include "bench/progress.h"
 #include "lighting/lll_memory.h"
 #include "lighting/technique.h"
 #include "particles/particle_setup.h"
@@ -18,7 +22,9 @@
 #include "render/output_files.h"
 #include "render/renderer.h"
 #include "render/stats.h"
+#include "render/tonemap.h"
 #include "scene/builtin_scenes.h"
+#include "scene/camera.h"
 #include "scene/errors.h"
 
 namespace lll {
@@ -33,14 +39,19 @@ int validationExitCode(const Context& context) {
   return 1;
 }
 
+std::string lowercaseExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
 // The image writers would reject a bad output path only after the render; checking the extension,
 // the folder and that a file can be created there first makes a typo fail at once instead of after
 // minutes of work.
 void addOutput(PendingOutputs& outputs, const char* option, const std::optional<std::string>& path,
                const std::vector<std::string>& extensions) {
   if (!path) return;
-  std::string ext = std::filesystem::path(*path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = lowercaseExtension(*path);
   if (!path->empty() && !extensions.empty() &&
       std::find(extensions.begin(), extensions.end(), ext) == extensions.end())
     throw InputError(
@@ -48,20 +59,39 @@ void addOutput(PendingOutputs& outputs, const char* option, const std::optional<
   outputs.add(option, *path);
 }
 
-// Photon tracing's progress on stderr once it has run a second: redrawn in place on a terminal,
-// every quarter on a log.
-std::function<void(double)> photonProgress() {
-  const auto begin = std::chrono::steady_clock::now();
-  const bool terminal = isatty(fileno(stderr));
-  return [=, shownQuarter = 0](double fraction) mutable {
-    if (std::chrono::steady_clock::now() - begin < std::chrono::seconds(1) && fraction < 1.0) return;
-    if (terminal) {
-      fmt::print(stderr, "\rlll: tracing photons {:3.0f}%{}", 100.0 * fraction, fraction >= 1.0 ? "\n" : "");
-    } else if (int(fraction * 4.0) > shownQuarter) {
-      shownQuarter = int(fraction * 4.0);
-      fmt::print(stderr, "lll: tracing photons {:3.0f}%\n", 100.0 * fraction);
-    }
-  };
+// A progress bar for work still running after a couple of seconds (a reference render, photon
+// tracing): a quick one (the tests', a preview) prints nothing.
+class SlowWorkProgress {
+ public:
+  explicit SlowWorkProgress(std::string label) : label_(std::move(label)), bar_(kSteps) {}
+
+  void update(double fraction) {
+    if (!shown_ && std::chrono::steady_clock::now() - begin_ < std::chrono::seconds(2)) return;
+    const size_t step = std::min(kSteps - 1, size_t(fraction * double(kSteps)));
+    if (shown_ && step <= *shown_) return;
+    bar_.start(step, label_);
+    shown_ = step;
+  }
+  void finish() {
+    if (shown_) bar_.finish(kSteps);
+  }
+
+ private:
+  static constexpr size_t kSteps = 20;
+  std::string label_;
+  std::chrono::steady_clock::time_point begin_ = std::chrono::steady_clock::now();
+  bench::ProgressBar bar_;  // says nothing until started; it times from its construction
+  std::optional<size_t> shown_;
+};
+
+HdrImage toHdrImage(const gi::RadianceImage& image) {
+  HdrImage hdr{image.width, image.height, std::vector<float>(image.rgb.size() * 4, 1.0f)};
+  for (size_t i = 0; i < image.rgb.size(); ++i) std::copy_n(&image.rgb[i].x, 3, &hdr.rgba[i * 4]);
+  return hdr;
+}
+
+bool emitsLight(const Light& light) {
+  return light.type != LightType::Vpl && light.intensity > 0.0f;
 }
 
 void printIndirectLight(const GiRequest& request, const gi::PhotonStats& s) {
@@ -82,8 +112,10 @@ int runRender(const RenderJob& job) {
   addOutput(outputs, "--stats", job.outStats, {});
   std::vector<std::string> warnings;
   IndirectLightReport gi;
-  if (job.scene.gi.mode != "none") gi.progress = photonProgress();
+  auto photonProgress = std::make_shared<SlowWorkProgress>("tracing photons");
+  if (job.scene.gi.mode != "none") gi.progress = [photonProgress](double f) { photonProgress->update(f); };
   const Scene scene = loadScene(job.scene, &warnings, &gi);
+  photonProgress->finish();
   for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
   if (job.scene.gi.mode != "none") printIndirectLight(job.scene.gi, gi.stats);
   particleOptions(scene, job.settings);  // a bad preset fails before Vulkan starts
@@ -111,6 +143,43 @@ int runRender(const RenderJob& job) {
   const auto summary = summarizePasses(frames);
   for (const PassSummary& s : summary) fmt::print(stderr, "lll: {:<24} {:9.3f} ms\n", s.name, s.medianMs);
   return validationExitCode(context);
+}
+
+int runReference(const ReferenceJob& job) {
+  validateResolution(job.width, job.height);
+  gi::validateReferenceOptions(job.options);
+  if (!(job.exposure > 0.0f) || !std::isfinite(job.exposure))
+    throw InputError(fmt::format("--exposure {}: expected a positive finite number", job.exposure));
+  if (!job.out) throw InputError("--out: required, a .exr, .pfm or .png file");
+  PendingOutputs outputs;
+  addOutput(outputs, "--out", job.out, {".exr", ".pfm", ".png"});
+  std::vector<std::string> warnings;
+  const Scene scene = loadScene(job.scene, &warnings);
+  for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
+  const Camera camera = resolveCamera(scene, job.camera);
+  if (std::none_of(scene.lights.begin(), scene.lights.end(), emitsLight))
+    fmt::print(stderr, "lll: warning: scene '{}' has no point, spot or box light: the image is black\n",
+               scene.name);
+
+  const auto begin = std::chrono::steady_clock::now();
+  SlowWorkProgress progress(fmt::format("{}x{}, {} spp", job.width, job.height, job.options.spp));
+  gi::ReferenceOptions options = job.options;
+  options.progress = [&](double fraction) { progress.update(fraction); };
+  const HdrImage hdr = toHdrImage(gi::renderReference(scene, camera, job.width, job.height, options));
+  progress.finish();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+
+  outputs.write(*job.out, [&](const auto& file) {
+    if (lowercaseExtension(*job.out) == ".png")
+      writePng(file, tonemapFilmic(hdr, job.exposure));
+    else
+      writeHdr(file, hdr);
+  });
+  outputs.commit();
+  fmt::print(stderr, "lll: reference {} camera '{}' {}x{}, {} spp, {} bounce(s){}: {:.2f} s\n", scene.name,
+             camera.name, job.width, job.height, job.options.spp, job.options.bounces,
+             job.options.indirectOnly ? ", indirect only" : "", seconds);
+  return 0;
 }
 
 int printScenes() {

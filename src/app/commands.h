@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "gi/path_tracer.h"
 #include "gpu/context.h"
 #include "render/settings.h"
 #include "scene/scene_source.h"
@@ -26,6 +27,18 @@ int runRender(const RenderJob& job);
 int printScenes();
 int printTechniques();
 int printDevices();
+
+// `lll reference`: the path-traced reference image (gi/path_tracer.h), on the CPU, no Vulkan.
+struct ReferenceJob {
+  SceneRequest scene;
+  std::string camera;  // as `lll render --camera`
+  uint32_t width = 1280;
+  uint32_t height = 720;
+  float exposure = 1.0f;  // for a .png only: radiance files are written as computed
+  gi::ReferenceOptions options;
+  std::optional<std::string> out;  // .exr or .pfm: linear radiance; .png: tonemapped as `lll render`
+};
+int runReference(const ReferenceJob& job);
 
 // `lll lll-memory`: what the light linked list needs at a resolution, tile size and average list length.
 struct LllMemoryQuery {

@@ -136,6 +136,28 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->needs(particles);
 }
 
+void addReferenceOptions(CLI::App& cmd, lll::ReferenceJob& job) {
+  auto& o = job.options;
+  cmd.add_option("scene", job.scene.scene, "built-in scene name (see `lll scenes`) or .gltf/.glb path");
+  cmd.add_option("--camera", job.camera, "camera name, or eye and target as \"ex,ey,ez,tx,ty,tz\"");
+  cmd.add_option("--width", job.width, "image width in pixels")->check(CLI::Range(1u, 8192u));
+  cmd.add_option("--height", job.height, "image height in pixels")->check(CLI::Range(1u, 8192u));
+  cmd.add_flag("--indirect", o.indirectOnly,
+               "indirect light only: no emission or direct light at the surfaces the camera sees");
+  cmd.add_option("--bounces", o.bounces, "diffuse bounces of indirect light (1: one-bounce)")
+      ->check(CLI::Range(0u, lll::gi::kMaxBounces))
+      ->capture_default_str();
+  cmd.add_option("--spp", o.spp, "samples per pixel, all through the pixel's centre")
+      ->check(CLI::Range(1u, lll::gi::kMaxReferenceSpp))
+      ->capture_default_str();
+  cmd.add_option("--seed", o.seed, "seed of the random paths (0 to 4294967295)");
+  cmd.add_option("--threads", o.threads, "threads (0: one per hardware thread)")
+      ->check(CLI::Range(0u, lll::gi::kMaxReferenceThreads));
+  cmd.add_option("--exposure", job.exposure, "exposure multiplier before tonemapping (.png only)")
+      ->check(finiteIn(1e-6, 1e6));
+  cmd.add_option("-o,--out", job.out, "radiance image (.exr, .pfm) or tonemapped sRGB .png")->required();
+}
+
 void addBenchOptions(CLI::App& cmd, lll::bench::BenchOptions& options) {
   cmd.add_option("--suite", options.suites, "suite to run, repeatable (default: every suite)")
       ->check(CLI::IsMember(lll::bench::suiteNames()));
@@ -199,6 +221,10 @@ int main(int argc, char** argv) {
   render->add_option("--hdr", job.outHdr, "linear HDR image, .exr or .pfm");
   render->add_option("--stats", job.outStats,
                      "JSON with per-pass GPU times, device, driver, resolution, lights");
+  lll::ReferenceJob reference;
+  CLI::App* referenceCmd = app.add_subcommand(
+      "reference", "path-trace a reference image of direct and indirect light on the CPU (.exr/.pfm/.png)");
+  addReferenceOptions(*referenceCmd, reference);
   CLI::App* scenes = app.add_subcommand("scenes", "list the built-in scenes");
   CLI::App* techniques = app.add_subcommand("techniques", "list the lighting techniques");
   CLI::App* devices = app.add_subcommand("devices", "list the Vulkan devices");
@@ -223,6 +249,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (*render) return lll::runRender(job);
+    if (*referenceCmd) return lll::runReference(reference);
     if (*scenes) return lll::printScenes();
     if (*techniques) return lll::printTechniques();
     if (*devices) return lll::printDevices();

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <thread>
 
+#include "gi/light_falloff.h"
 #include "gi/random.h"
 #include "gi/ray_scene.h"
 
@@ -20,32 +21,6 @@ float channelMean(const glm::vec3& c) {
 }
 float luminance(const glm::vec3& c) {
   return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-}
-
-// KHR_lights_punctual's range window, the one brdf.glsl's rangeAttenuation applies.
-float rangeWindow(float distance, float range) {
-  const float r = distance / range;
-  const float w = std::clamp(1.0f - r * r * r * r, 0.0f, 1.0f);
-  return w * w;
-}
-
-// brdf.glsl's boxWindow, with the axes as the Light keeps them.
-float boxWindow(const Light& light, const glm::vec3& offset) {
-  const glm::vec3 z = glm::cross(light.boxAxisX, light.boxAxisY);
-  const glm::vec3 q =
-      glm::vec3(glm::dot(offset, light.boxAxisX), glm::dot(offset, light.boxAxisY), glm::dot(offset, z)) /
-      light.halfExtents;
-  glm::vec3 w = glm::clamp(1.0f - q * q * q * q, 0.0f, 1.0f);
-  w *= w;
-  return w.x * w.y * w.z;
-}
-
-// KHR's spot falloff as lights.cpp encodes it for the GPU: saturate(cd * scale + offset)^2.
-float spotFalloff(const Light& light, float cosAngle) {
-  const float cosOuter = std::cos(light.outerConeAngle), cosInner = std::cos(light.innerConeAngle);
-  const float scale = 1.0f / std::max(1e-4f, cosInner - cosOuter);
-  const float t = std::clamp((cosAngle - cosOuter) * scale, 0.0f, 1.0f);
-  return t * t;
 }
 
 // Solid angle a light's photons leave into: the whole sphere, or a spot's outer cone.

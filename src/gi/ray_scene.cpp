@@ -16,6 +16,7 @@ struct RayScene::State {
   RTCScene rtcScene = nullptr;
   std::vector<uint32_t> triangleMaterial;  // per triangle
   std::vector<glm::vec2> cornerUv;         // 3 per triangle
+  std::vector<glm::vec3> cornerNormal;     // 3 per triangle, world space
   std::vector<float> materialCutoff;       // per material: the mask cutoff, or -1 when not masked
 
   float alphaAt(uint32_t triangle, float u, float v) const {
@@ -90,6 +91,7 @@ RayScene::RayScene(const Scene& scene) : state_(std::make_unique<State>()) {
   std::vector<uint32_t> indices;
   for (const Instance& instance : scene.instances) {
     const Mesh& mesh = scene.meshes[instance.mesh];
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.transform)));
     for (const Primitive& p : mesh.primitives) {
       for (uint32_t i = 0; i + 2 < p.indexCount; i += 3) {
         for (uint32_t corner = 0; corner < 3; ++corner) {
@@ -98,6 +100,7 @@ RayScene::RayScene(const Scene& scene) : state_(std::make_unique<State>()) {
           indices.push_back(uint32_t(positions.size()));
           positions.push_back(glm::vec3(instance.transform * glm::vec4(v.position, 1.0f)));
           s.cornerUv.push_back(v.uv);
+          s.cornerNormal.push_back(normalMatrix * v.normal);
         }
         s.triangleMaterial.push_back(p.material);
       }
@@ -174,6 +177,12 @@ std::optional<RayHit> RayScene::intersect(const glm::vec3& origin, const glm::ve
   hit.material = state_->triangleMaterial[triangle];
   const glm::vec2* c = &state_->cornerUv[3 * size_t(triangle)];
   hit.uv = (1.0f - rh.hit.u - rh.hit.v) * c[0] + rh.hit.u * c[1] + rh.hit.v * c[2];
+  const glm::vec3* cn = &state_->cornerNormal[3 * size_t(triangle)];
+  const glm::vec3 shading = (1.0f - rh.hit.u - rh.hit.v) * cn[0] + rh.hit.u * cn[1] + rh.hit.v * cn[2];
+  const float shadingLength = glm::length(shading);
+  hit.shadingNormal =
+      shadingLength > 0.0f && std::isfinite(shadingLength) ? shading / shadingLength : hit.normal;
+  if (glm::dot(hit.shadingNormal, hit.normal) < 0.0f) hit.shadingNormal = -hit.shadingNormal;
   return hit;
 }
 
@@ -190,6 +199,24 @@ bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, flo
   return ray.tfar < 0.0f;  // Embree marks an occluded ray with tfar = -inf
 }
 
+MaterialSample RayScene::materialAt(const RayHit& hit) const {
+  const Scene& scene = *state_->scene;
+  const Material& m = scene.materials[hit.material];
+  MaterialSample r;
+  r.baseColor = m.baseColorFactor;
+  if (m.baseColorTexture >= 0)
+    r.baseColor *= sampleTexture(scene.textures[size_t(m.baseColorTexture)], hit.uv);
+  glm::vec4 metallicRoughness(1.0f);
+  if (m.metallicRoughnessTexture >= 0)
+    metallicRoughness = sampleTexture(scene.textures[size_t(m.metallicRoughnessTexture)], hit.uv);
+  r.metallic = glm::clamp(m.metallic * metallicRoughness.b, 0.0f, 1.0f);
+  r.roughness = glm::clamp(m.roughness * metallicRoughness.g, 0.0f, 1.0f);
+  r.emissive = m.emissiveFactor * m.emissiveStrength;
+  if (m.emissiveTexture >= 0)
+    r.emissive *= glm::vec3(sampleTexture(scene.textures[size_t(m.emissiveTexture)], hit.uv));
+  return r;
+}
+
 SurfaceResponse RayScene::surfaceAt(const RayHit& hit) const {
   const Material& m = state_->scene->materials[hit.material];
   glm::vec4 base = m.baseColorFactor;
@@ -202,6 +229,12 @@ SurfaceResponse RayScene::surfaceAt(const RayHit& hit) const {
   r.albedo = glm::clamp(glm::vec3(base) * (1.0f - glm::clamp(metallic, 0.0f, 1.0f)), 0.0f, 1.0f);
   r.coverage = m.alphaMode == AlphaMode::Blend ? glm::clamp(base.a, 0.0f, 1.0f) : 1.0f;
   return r;
+}
+
+bool RayScene::hasBlendedMaterials() const {
+  for (const Material& m : state_->scene->materials)
+    if (m.alphaMode == AlphaMode::Blend) return true;
+  return false;
 }
 
 }  // namespace lll::gi

@@ -18,6 +18,9 @@ struct RayHit {
   glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit geometric normal, turned to face the ray's origin
   uint32_t material = 0;               // index into Scene::materials
   glm::vec2 uv{0.0f};                  // TEXCOORD_0 at the hit
+  // The interpolated vertex normal, on the geometric normal's side: the normal the renderer shades
+  // with where a material has no normal map (the geometric normal where the mesh's is degenerate).
+  glm::vec3 shadingNormal{0.0f, 0.0f, 1.0f};
 };
 
 // What a material does to light at a hit, as the photon tracer and the reference see it: the
@@ -27,6 +30,14 @@ struct RayHit {
 struct SurfaceResponse {
   glm::vec3 albedo{0.0f};
   float coverage = 1.0f;
+};
+
+// A material's glTF inputs at a hit, textures sampled: what the renderer's Surface is built from.
+struct MaterialSample {
+  glm::vec4 baseColor{1.0f};  // factor x texture, alpha included
+  float metallic = 0.0f;      // clamped to [0, 1]
+  float roughness = 1.0f;     // clamped to [0, 1]
+  glm::vec3 emissive{0.0f};   // factor x strength x texture
 };
 
 class RayScene {
@@ -46,6 +57,9 @@ class RayScene {
   bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tNear, float tFar) const;
 
   SurfaceResponse surfaceAt(const RayHit& hit) const;
+  MaterialSample materialAt(const RayHit& hit) const;
+  // Whether any material is blended (glass): rays may then have to cross surfaces.
+  bool hasBlendedMaterials() const;
 
   uint64_t triangleCount() const;
   struct State;  // Embree's handles and the per-triangle data (ray_scene.cpp)

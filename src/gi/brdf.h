@@ -1,0 +1,31 @@
+#pragma once
+// shaders/common/brdf.glsl on the CPU, for the path-traced reference: the glTF 2.0 reference BRDF
+// (Lambert diffuse weighted by the dielectric's Fresnel, GGX, height-correlated Smith, Schlick) and
+// KHR_lights_punctual attenuation for point, spot and box lights. Kept line for line with the GLSL
+// so that the reference differs from the renderer only in what it adds (shadows, indirect light).
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace lll::gi {
+
+inline constexpr float kPi = 3.14159265358979f;
+
+struct BrdfSurface {
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit, on the viewer's side
+  glm::vec3 view{0.0f, 0.0f, 1.0f};    // unit, from the surface towards the eye
+  glm::vec3 baseColor{1.0f};
+  float metallic = 0.0f;
+  float roughness = 1.0f;
+};
+
+// BRDF * cos(theta_l) for light arriving from unit direction l (brdf.glsl's brdfCosine).
+glm::vec3 brdfCosine(const BrdfSurface& s, const glm::vec3& l);
+
+// How much of a light's intensity reaches a point `distance` away from it, `l` the unit direction
+// from the point to the light: inverse square times the light's window (range sphere, spot cone or
+// box), zero at and beyond its range. Virtual point lights are not evaluated here (the reference
+// does not take them as input): their attenuation is 0.
+float lightAttenuation(const Light& light, const glm::vec3& l, float distance);
+
+}  // namespace lll::gi

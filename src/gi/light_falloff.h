@@ -1,0 +1,39 @@
+#pragma once
+// How a light's intensity falls off on the CPU, formula for formula as shaders/common/brdf.glsl
+// applies it on the GPU: the photon tracer and the path-traced reference must put on a wall the
+// light the renderer's direct lighting puts there.
+#include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace lll::gi {
+
+// KHR_lights_punctual's range window, the one brdf.glsl's rangeAttenuation applies.
+inline float rangeWindow(float distance, float range) {
+  const float r = distance / range;
+  const float w = std::clamp(1.0f - r * r * r * r, 0.0f, 1.0f);
+  return w * w;
+}
+
+// brdf.glsl's boxWindow, with the axes as the Light keeps them.
+inline float boxWindow(const Light& light, const glm::vec3& offset) {
+  const glm::vec3 z = glm::cross(light.boxAxisX, light.boxAxisY);
+  const glm::vec3 q =
+      glm::vec3(glm::dot(offset, light.boxAxisX), glm::dot(offset, light.boxAxisY), glm::dot(offset, z)) /
+      light.halfExtents;
+  glm::vec3 w = glm::clamp(1.0f - q * q * q * q, 0.0f, 1.0f);
+  w *= w;
+  return w.x * w.y * w.z;
+}
+
+// KHR's spot falloff as lights.cpp encodes it for the GPU: saturate(cd * scale + offset)^2.
+inline float spotFalloff(const Light& light, float cosAngle) {
+  const float cosOuter = std::cos(light.outerConeAngle), cosInner = std::cos(light.innerConeAngle);
+  const float scale = 1.0f / std::max(1e-4f, cosInner - cosOuter);
+  const float t = std::clamp((cosAngle - cosOuter) * scale, 0.0f, 1.0f);
+  return t * t;
+}
+
+}  // namespace lll::gi
