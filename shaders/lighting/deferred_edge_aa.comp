@@ -1,7 +1,8 @@
 #version 460
 // Edge-detect anti-aliasing after the deferred light pass (Infinity took it from Tabula Rasa,
 // GPU Gems 3 ch. 19): a pixel on a depth or normal discontinuity of the G-buffer is blended with
-// its four neighbours; elsewhere the lit colour passes through unchanged.
+// its four neighbours; elsewhere the lit colour passes through unchanged. Without --aa edge it only
+// copies the fp32 accumulation into the HDR target.
 #extension GL_EXT_samplerless_texture_functions : require
 #include "common/finite.glsl"
 #include "shared/gpu_types.h"
@@ -21,15 +22,21 @@ const vec2 kDepthEdge = vec2(0.02, 0.1);
 // 1 - cos of the angle between neighbouring normals: ~18 degrees starts an edge, ~41 is a full one.
 const vec2 kNormalEdge = vec2(0.05, 0.25);
 
+layout(constant_id = 0) const bool kEdgeAntiAliasing = true;
+
 const ivec2 kNeighbours[4] = ivec2[](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = ivec2(frame.viewport.xy);
   if (p.x >= size.x || p.y >= size.y) return;
+  vec4 center = texelFetch(accumulation, p, 0);
+  if (!kEdgeAntiAliasing) {
+    imageStore(hdrImage, p, center);
+    return;
+  }
   float depth = texelFetch(depthImage, p, 0).r;
   vec3 normal = texelFetch(gbuffer1, p, 0).xyz;
-  vec4 center = texelFetch(accumulation, p, 0);
   vec3 color = finiteRadiance(center.rgb);  // Inf * (1 - edge) + ... would be NaN where edge is 0
   float depths[4];
   float normalDelta = 0.0;

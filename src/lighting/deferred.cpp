@@ -3,15 +3,18 @@
 //                         (render/gbuffer.h), with ambient and emission written straight into the
 //                         accumulation target
 //   deferred-lights       each visible light as a bounding volume, additively blended
-//   deferred-edge-aa      (--aa edge) blend pixels on depth or normal discontinuities
+//   deferred-resolve      the fp32 accumulation into the HDR target; with --aa edge
+//   (deferred-edge-aa)    blending pixels on depth or normal discontinuities on the way
 // Glass and particles are the shared passes', lit through the forward lighting interface (every
 // light per pixel, the separate forward pass engines add for them) or the unlit one
 // (--deferred-translucent unlit: ambient and emission only, the seeds' Figure 1.1).
 // G-buffer 12 B/px (RGBA8 base colour + metallic, RGBA16F normal + roughness); with the D32 depth
-// and the RGBA16F accumulation that every technique has, 24 B/px. Infinity used four RGBA16F
-// targets, 32 B/px plus its Z buffer: depth again in a colour channel, velocity, extinction and a
-// material id that lll does not need, fp16 for base colour, and a forward-lit colour that here is
-// the accumulation target itself. Here depth is the prepass's, sampled directly.
+// and an RGBA32F accumulation, 32 B/px. The accumulation is fp32 because blending thousands of dim
+// lights (instant radiosity's VPLs) into fp16 rounds every addition: 1,024 VPLs lost 12.6% of their
+// light on lavapipe, whose fp16 conversion truncates, and moved pixels by 3 of 255 on the H200. Infinity used
+// four RGBA16F targets, 32 B/px plus its Z buffer: depth again in a colour channel, velocity, extinction and
+// a material id that lll does not need, fp16 for base colour, and a forward-lit colour that here is the
+// accumulation target itself. Here depth is the prepass's, sampled directly.
 #include "gpu/context.h"
 #include "gpu/fragment_counter.h"
 #include "gpu/pipeline.h"
@@ -24,7 +27,8 @@ namespace lll {
 
 namespace {
 
-constexpr double kDepthAndAccumulationBytesPerPixel = 4 + 8;
+constexpr VkFormat kAccumulationFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+constexpr double kDepthAndAccumulationBytesPerPixel = 4 + 16;
 
 const std::initializer_list<Binding> kEdgeAaBindings = {
     {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
@@ -55,19 +59,17 @@ class Deferred final : public Technique {
   Deferred(Context& context, const GpuScene& scene, const RenderSettings& settings,
            const FrameTargets& targets)
       : lightLayout_(context, kLightVolumeBindings),
-        gbuffer_(context, scene, targets),
+        gbuffer_(context, scene, targets, kAccumulationFormat),
         volumes_(context, uint32_t(scene.scene().lights.size())),
         lightFragments_(context),
         pixels_(double(targets.width) * targets.height),
         edgeAa_(edgeAntiAliasing(settings)),
         litTranslucents_(forwardLitTranslucents(settings)) {
-    if (edgeAa_) {
-      const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-      // The edge filter reads neighbours, so it cannot work in place: lights accumulate here.
-      accumulation_ = Image(context, targets.width, targets.height, kHdrFormat, usage, "accumulation");
-      edgeAaLayout_ = PipelineLayout(context, kEdgeAaBindings);
-      edgeAaPipeline_ = Pipeline(context, edgeAaLayout_, "lighting/deferred_edge_aa.comp");
-    }
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    accumulation_ = Image(context, targets.width, targets.height, kAccumulationFormat, usage, "accumulation");
+    resolveLayout_ = PipelineLayout(context, kEdgeAaBindings);
+    resolvePipeline_ = Pipeline(context, resolveLayout_, "lighting/deferred_edge_aa.comp",
+                                SpecializationConstants{{0, edgeAa_ ? 1u : 0u}});
     createLightPipelines(context);
   }
 
@@ -76,7 +78,7 @@ class Deferred final : public Technique {
   void shadeOpaque(FrameContext& frame) override {
     geometryPass(frame);
     lightPass(frame);
-    if (edgeAa_) edgeAntiAliasingPass(frame);
+    resolvePass(frame);
   }
 
   LightingInterface lighting() const override { return {litTranslucents_ ? "forward" : "unlit"}; }
@@ -96,7 +98,7 @@ class Deferred final : public Technique {
         {"lights-drawn", c.visible},
         {"lights-drawn-camera-inside", c.cameraInside},
         {"lights-drawn-as-cones", c.cones}};
-    if (accumulation_) s.push_back({"accumulation_bytes", 8.0 * pixels_});
+    s.push_back({"accumulation_bytes", 16.0 * pixels_});
     if (lastLightFragments_ >= 0.0) {
       // Fragment shader invocations of the light volumes: Infinity's cost driver.
       s.push_back({"light-volume-fragments", lastLightFragments_});
@@ -115,7 +117,7 @@ class Deferred final : public Technique {
     desc.vertexShader = "lighting/light_volume.vert";
     desc.vertexInput = VertexInput::Vertices;
     desc.fragmentShader = "lighting/deferred_light.frag";
-    desc.colorFormats = {kHdrFormat};
+    desc.colorFormats = {kAccumulationFormat};
     desc.depthFormat = kDepthFormat;
     desc.depthWrite = false;
     desc.depthClamp = true;
@@ -128,11 +130,7 @@ class Deferred final : public Technique {
     insidePipeline_ = Pipeline(context, lightLayout_, desc);
   }
 
-  const Image& accumulation(const FrameTargets& t) const { return edgeAa_ ? accumulation_ : t.hdr; }
-
-  void geometryPass(FrameContext& frame) {
-    gbuffer_.record(frame, "deferred-gbuffer", accumulation(frame.targets));
-  }
+  void geometryPass(FrameContext& frame) { gbuffer_.record(frame, "deferred-gbuffer", accumulation_); }
 
   // The CPU culls the lights and groups them by shape (points, spots) and by camera side; each
   // group is one instanced draw with one pipeline, so no state changes between its lights.
@@ -144,11 +142,11 @@ class Deferred final : public Technique {
                      [](const PlacedLightVolume& v) { return v.cameraInside ? kInside : kOutside; });
     frame.graph.pass(
         "deferred-lights",
-        {uses(accumulation(t), Use::ColorBlend), uses(t.depth, Use::DepthTest),
+        {uses(accumulation_, Use::ColorBlend), uses(t.depth, Use::DepthTest),
          uses(t.depth, Use::Sampled, kFragment), uses(gbuffer_.target0(), Use::Sampled, kFragment),
          uses(gbuffer_.target1(), Use::Sampled, kFragment)},
         [&](VkCommandBuffer cmd) {
-          beginRendering(cmd, t.width, t.height, {{accumulation(t).view(), false}}, t.depth.view(),
+          beginRendering(cmd, t.width, t.height, {{accumulation_.view(), false}}, t.depth.view(),
                          VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
           DescriptorWriter writer;
           writer
@@ -169,15 +167,15 @@ class Deferred final : public Technique {
         });
   }
 
-  void edgeAntiAliasingPass(FrameContext& frame) {
+  void resolvePass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
     constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     frame.graph.pass(
-        "deferred-edge-aa",
+        edgeAa_ ? "deferred-edge-aa" : "deferred-resolve",
         {uses(accumulation_, Use::Sampled, kCompute), uses(t.depth, Use::Sampled, kCompute),
          uses(gbuffer_.target1(), Use::Sampled, kCompute), uses(t.hdr, Use::StorageWrite, kCompute)},
         [&](VkCommandBuffer cmd) {
-          edgeAaPipeline_.bind(cmd);
+          resolvePipeline_.bind(cmd);
           DescriptorWriter()
               .storage(0, frame.uniformBuffer.handle())
               .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(),
@@ -187,16 +185,16 @@ class Deferred final : public Technique {
               .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
               .image(8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-              .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, edgeAaLayout_.handle());
+              .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolveLayout_.handle());
           dispatchPerPixel(cmd, t);
         });
   }
 
   PipelineLayout lightLayout_;
-  PipelineLayout edgeAaLayout_;
+  PipelineLayout resolveLayout_;
   Pipeline outsidePipeline_;
   Pipeline insidePipeline_;
-  Pipeline edgeAaPipeline_;
+  Pipeline resolvePipeline_;
   GBuffer gbuffer_;
   Image accumulation_;
   LightVolumeDraws volumes_;

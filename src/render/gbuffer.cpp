@@ -2,7 +2,8 @@
 
 namespace lll {
 
-GBuffer::GBuffer(Context& context, const GpuScene& scene, const FrameTargets& targets)
+GBuffer::GBuffer(Context& context, const GpuScene& scene, const FrameTargets& targets,
+                 VkFormat accumulationFormat)
     : layout_(meshPassLayout(context, scene)) {
   const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
   target0_ = Image(context, targets.width, targets.height, kFormat0, usage, "gbuffer0");
@@ -10,7 +11,7 @@ GBuffer::GBuffer(Context& context, const GpuScene& scene, const FrameTargets& ta
   GraphicsPipelineDesc desc;
   desc.vertexShader = "common/mesh.vert";
   desc.fragmentShader = "common/gbuffer.frag";
-  desc.colorFormats = {kHdrFormat, kFormat0, kFormat1};
+  desc.colorFormats = {accumulationFormat, kFormat0, kFormat1};
   desc.depthFormat = kDepthFormat;
   desc.depthWrite = false;
   desc.depthCompare = VK_COMPARE_OP_EQUAL;  // one G-buffer write per pixel: the prepass decided

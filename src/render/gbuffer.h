@@ -18,7 +18,9 @@ class GBuffer {
   static constexpr double kBytesPerPixel = 4 + 8;
 
   GBuffer() = default;
-  GBuffer(Context& context, const GpuScene& scene, const FrameTargets& targets);
+  // `accumulationFormat`: the format of the target that record() writes ambient and emission to.
+  GBuffer(Context& context, const GpuScene& scene, const FrameTargets& targets,
+          VkFormat accumulationFormat = kHdrFormat);
 
   // Draws the opaque scene once (depth EQUAL the depth pass) into `accumulation` (cleared: ambient
   // and emission) and the two targets, as the frame-graph pass `passName`.
