@@ -165,6 +165,56 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForward) {
   for (const Scenario& s : picked) EXPECT_EQ(s.settings.particleCount, 2048u);
 }
 
+// Instant radiosity: the atrium's VPLs alone at four counts and two cutoffs, every technique (the
+// brute-force and light-volume ones left out past 65,536); the Cornell room against the reference.
+TEST(BenchSuites, GiSuitesVaryTheVplCountAndCutoff) {
+  std::set<uint32_t> counts;
+  std::set<float> cutoffs;
+  for (const Scenario& s : buildSuite("gi", SuiteOptions{})) {
+    EXPECT_EQ(s.scene.gi.mode, "vpl-only");
+    EXPECT_GE(s.scene.gi.photons, 2 * s.scene.gi.vplCount) << "too few deposits to merge into the count";
+    counts.insert(s.scene.gi.vplCount);
+    cutoffs.insert(s.scene.gi.vplCutoff);
+    const std::string& t = s.settings.technique;
+    EXPECT_EQ(!s.skip.empty(),
+              (t == "forward" || t == "deferred" || t == "prepass") && s.scene.gi.vplCount > 65536)
+        << s.name << " " << t;
+    EXPECT_TRUE(s.series.ends_with(fmt::format("cutoff {}", s.scene.gi.vplCutoff))) << s.series;
+  }
+  EXPECT_EQ(counts, (std::set<uint32_t>{512, 5144, 65536, 1048576}));
+  EXPECT_EQ(cutoffs.size(), 2u);
+  const auto error = buildSuite("gi-error", SuiteOptions{});
+  EXPECT_EQ(error.size(), 12u);
+  for (const Scenario& s : error) {
+    EXPECT_TRUE(s.compareWithReference);
+    EXPECT_EQ(s.scene.scene, "cornell");
+  }
+}
+
+// The error suite really compares: each scenario's frame against the path-traced indirect light.
+TEST(BenchQuick, GiErrorSuiteMeasuresTheErrorAgainstTheReference) {
+  Context& context = test::gpuContext();
+  const size_t before = context.validationMessages().size();
+  BenchOptions options;
+  options.suites = {"gi-error"};
+  options.quick = true;
+  const BenchReport report = runBench(context, options);
+  ASSERT_EQ(report.results.size(), 6u);
+  for (const ScenarioResult& r : report.results) {
+    ASSERT_EQ(r.status, Status::Ok) << r.scenario.name << ": " << r.message;
+    std::optional<double> error, traceMs;
+    for (const auto& [key, value] : r.techniqueStats) {
+      if (key == "gi-error-vs-reference") error = value;
+      if (key == "gi-trace-ms") traceMs = value;
+    }
+    ASSERT_TRUE(error && traceMs) << r.scenario.name;
+    // 64 samples per pixel at 48x27: the reference is noisy, but VPLs are not off by half.
+    EXPECT_GT(*error, 0.0);
+    EXPECT_LT(*error, 0.5) << r.scenario.name;
+  }
+  test::expectNoValidationMessagesSince(before);
+}
+
 // Splits one CSV line, honouring quoted fields (device names hold commas).
 std::vector<std::string> csvFields(const std::string& line) {
   std::vector<std::string> fields(1);

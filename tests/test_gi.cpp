@@ -156,7 +156,7 @@ TEST(Gi, CornellFloorBesideTheRedWallIsRed) {
   EXPECT_GT(e.r, 3.0f * e.g);
   EXPECT_GT(e.r, 3.0f * e.b);
   // The spot's cone misses it: the light there is indirect only.
-  const Light& spot = builtin::makeCornell().lights[0];
+  const Light spot = builtin::makeCornell().lights[0];
   const glm::vec3 l = glm::normalize(floor - spot.position);
   EXPECT_LT(glm::dot(l, spot.direction), std::cos(spot.outerConeAngle));
 }

@@ -7,12 +7,14 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <map>
 #include <optional>
 
 #include "bench/alu_probe.h"
 #include "bench/progress.h"
 #include "bench/report.h"
+#include "gi/path_tracer.h"
 #include "lighting/technique.h"
 #include "particles/presets.h"
 #include "render/renderer.h"
@@ -51,15 +53,75 @@ class SceneCache {
   const Scene& get(const SceneRequest& request) {
     if (!scene_ || request != key_) {
       scene_.reset();
-      scene_ = loadScene(request);
+      gi_ = {};
+      scene_ = loadScene(request, nullptr, &gi_);
       key_ = request;
     }
     return *scene_;
   }
+  // What tracing the photons of the last scene took (zeros without --gi).
+  const gi::PhotonStats& photonStats() const { return gi_.stats; }
 
  private:
   SceneRequest key_;
   std::optional<Scene> scene_;
+  IndirectLightReport gi_;
+};
+
+// The path-traced indirect light each gi-error scenario is compared with, once per scene, size and
+// bounce count: 2,048 samples per pixel (64 with --quick) on every CPU core.
+class ReferenceCache {
+ public:
+  const gi::RadianceImage& get(const Scenario& s, const Camera& camera, bool quick) {
+    SceneRequest direct = s.scene;
+    direct.gi = GiRequest{};
+    const std::string key = fmt::format("{}\n{}\n{}x{}\n{}", s.scene.scene, camera.name, s.settings.width,
+                                        s.settings.height, s.scene.gi.bounces);
+    auto it = images_.find(key);
+    if (it == images_.end()) {
+      gi::ReferenceOptions options;
+      options.spp = quick ? 64 : 2048;
+      options.bounces = s.scene.gi.bounces;
+      options.indirectOnly = true;
+      it = images_
+               .emplace(key, gi::renderReference(loadScene(direct), camera, s.settings.width,
+                                                 s.settings.height, options))
+               .first;
+    }
+    return it->second;
+  }
+
+ private:
+  std::map<std::string, gi::RadianceImage> images_;
+};
+
+// Relative RMS difference over RGB of 8x8-pixel block means: the reference's per-pixel noise (about
+// 9% at 2,048 samples in the Cornell room) averages down to ~1% in a block, while the VPLs' error
+// varies slowly across the image.
+double blockError(const HdrImage& image, const gi::RadianceImage& reference) {
+  constexpr uint32_t kBlock = 8;
+  const uint32_t block = std::min({kBlock, reference.width, reference.height});
+  double difference = 0.0, magnitude = 0.0;
+  for (uint32_t by = 0; by + block <= reference.height; by += block) {
+    for (uint32_t bx = 0; bx + block <= reference.width; bx += block) {
+      glm::dvec3 got(0.0), want(0.0);
+      for (uint32_t y = by; y < by + block; ++y) {
+        for (uint32_t x = bx; x < bx + block; ++x) {
+          got += glm::dvec3(glm::vec3(image.at(x, y)));
+          want += glm::dvec3(reference.at(x, y));
+        }
+      }
+      difference += glm::dot(got - want, got - want);
+      magnitude += glm::dot(want, want);
+    }
+  }
+  return magnitude > 0.0 ? std::sqrt(difference / magnitude) : 0.0;
+}
+
+struct Caches {
+  SceneCache scenes;
+  ReferenceCache references;
+  bool quick = false;
 };
 
 void requireRegistered(const std::string& technique) {
@@ -95,7 +157,8 @@ struct Measured {
   LdrImage image;
 };
 
-Measured measure(Context& context, const Scene& scene, const Scenario& s, FrameCounts counts) {
+Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCounts counts) {
+  const Scene& scene = caches.scenes.get(s.scene);
   Measured m;
   ScenarioResult& r = m.result;
   r.scenario = s;
@@ -117,19 +180,31 @@ Measured measure(Context& context, const Scene& scene, const Scenario& s, FrameC
   for (const FrameResult& frame : timed) r.rerenders += frame.rerenders;
   r.techniqueStats = renderer.stats();
   r.memory = lightingMemory(s.settings, r.techniqueStats);
+  if (s.scene.gi.mode != "none") {
+    const gi::PhotonStats& g = caches.scenes.photonStats();
+    r.techniqueStats.insert(r.techniqueStats.end(), {{"gi-photons", double(g.photons)},
+                                                     {"gi-deposits", double(g.deposits)},
+                                                     {"gi-trace-ms", g.traceMs},
+                                                     {"gi-merge-ms", g.mergeMs},
+                                                     {"gi-cell-m", g.cellSize}});
+  }
   renderer.renderFrame(true);  // untimed: the image every technique's is compared on
   m.image = renderer.ldrImage();
+  if (s.compareWithReference)
+    r.techniqueStats.emplace_back(
+        "gi-error-vs-reference",
+        blockError(renderer.hdrImage(), caches.references.get(s, renderer.camera(), caches.quick)));
   return m;
 }
 
-Measured runScenario(Context& context, SceneCache& scenes, const Scenario& s, FrameCounts counts) {
+Measured runScenario(Context& context, Caches& caches, const Scenario& s, FrameCounts counts) {
   Measured m;
   ScenarioResult& r = m.result;
   r.scenario = s;
   try {
     if (!s.skip.empty()) throw NotAvailable(s.skip);
     requireRegistered(s.settings.technique);
-    m = measure(context, scenes.get(s.scene), s, counts);
+    m = measure(context, caches, s, counts);
   } catch (const NotAvailable& e) {
     r.status = Status::Skipped;
     r.message = e.what();
@@ -255,7 +330,8 @@ BenchReport runBench(Context& context, const BenchOptions& options,
                                   options.particleCounts};
   const std::vector<Scenario> scenarios = chosenScenarios(report, suiteOptions);
   const FrameCounts counts{report.warmupFrames, report.timedFrames};
-  SceneCache scenes;
+  Caches caches;
+  caches.quick = options.quick;
   ForwardComparisons comparisons;
   ProgressBar progress(scenarios.size());
   for (size_t i = 0; i < scenarios.size(); ++i) {
@@ -264,7 +340,7 @@ BenchReport runBench(Context& context, const BenchOptions& options,
     progress.start(i, label);
     try {
       stopIfRequested();
-      Measured measured = runScenario(context, scenes, s, counts);
+      Measured measured = runScenario(context, caches, s, counts);
       report.results.push_back(std::move(measured.result));
       comparisons.add(report, report.results.size() - 1, std::move(measured.image));
     } catch (const Interrupted&) {

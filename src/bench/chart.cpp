@@ -56,7 +56,7 @@ Results measured(const BenchReport& report, const std::string& suite) {
 std::vector<std::string> uniqueLabels(const Results& results) {
   std::vector<std::string> labels;
   for (const ScenarioResult* r : results) {
-    const std::string label = techniqueLabel(r->scenario.settings);
+    const std::string label = seriesLabel(r->scenario);
     if (std::find(labels.begin(), labels.end(), label) == labels.end()) labels.push_back(label);
   }
   return labels;
@@ -84,7 +84,13 @@ bool isOwnPass(const std::string& name) {
 // A log-log chart of `suite`'s times against light count, one line per technique (with `perPass`
 // two in the technique's colour: its own passes dashed, shade-opaque + glass solid), min-max as
 // error bars on frame times.
-enum class Measure { Frame, Passes, Memory };
+enum class Measure { Frame, Passes, Memory, ReferenceError };
+
+std::optional<double> techniqueStat(const ScenarioResult& r, const std::string& name) {
+  for (const auto& [key, value] : r.techniqueStats)
+    if (key == name) return value;
+  return std::nullopt;
+}
 
 std::optional<std::string> lightCountChart(const BenchReport& report, const fs::path& dir,
                                            const std::string& suite, const std::string& file, Measure measure,
@@ -110,7 +116,7 @@ std::optional<std::string> lightCountChart(const BenchReport& report, const fs::
   using Triple = std::optional<std::array<double, 3>>;
   for (const std::string& label : uniqueLabels(results)) {
     ++color;
-    auto mine = [&](const ScenarioResult& r) { return techniqueLabel(r.scenario.settings) == label; };
+    auto mine = [&](const ScenarioResult& r) { return seriesLabel(r.scenario) == label; };
     if (!perPass) {
       // gnuplot has eight line colours: lines past the eighth are dashed, with other points.
       const std::string style = color <= 8 ? "yerrorlines lw 2 pt 7"
@@ -120,6 +126,11 @@ std::optional<std::string> lightCountChart(const BenchReport& report, const fs::
         if (measure == Measure::Memory) {
           const double mib = r.memoryBytes() / (1024.0 * 1024.0);
           return std::array<double, 3>{mib, mib, mib};
+        }
+        if (measure == Measure::ReferenceError) {
+          const std::optional<double> e = techniqueStat(r, "gi-error-vs-reference");
+          if (!e) return std::nullopt;
+          return std::array<double, 3>{*e, *e, *e};
         }
         const PassSummary& f = *r.pass("frame");
         return std::array<double, 3>{f.medianMs, f.minMs, f.maxMs};
@@ -149,16 +160,21 @@ std::optional<std::string> lightCountChart(const BenchReport& report, const fs::
   const RenderSettings& s = results.front()->scenario.settings;
   return fmt::format(
       "{}\nset output '{}'\n"
-      "set title {}\nset xlabel 'lights in the scene (its own plus the random ones added)'\n"
+      "set title {}\nset xlabel {}\n"
       "set ylabel {}\nset logscale xy\nset format x '%.0f'\n"
       "set xrange [{}:{}]\nset xtics ({})\nset grid xtics ytics mytics\nset key top left box opaque\n{}\n",
       terminal(1280, 800), file,
       gnuplotString(fmt::format("{}: {}, {}x{}\n{}", what, results.front()->scenario.scene.scene, s.width,
                                 s.height, subtitle(report))),
+      gnuplotString(suite.starts_with("gi")
+                        ? "virtual point lights (the scene's own lights left out: --gi vpl-only)"
+                        : "lights in the scene (its own plus the random ones added)"),
       gnuplotString(measure == Measure::Passes
                         ? "GPU ms (median): the technique's own passes dashed, shade-opaque + glass solid"
                     : measure == Measure::Memory
                         ? "GPU memory of the lighting data, MiB (depth + the technique's buffers)"
+                    : measure == Measure::ReferenceError
+                        ? "relative RMS error against the path-traced reference (8x8-pixel block means)"
                         : "GPU frame time, ms (median; bars: min to max)"),
       double(*counts.begin()) / 1.25, double(*counts.rbegin()) * 1.25, fmt::join(counts, ", "), plots);
 }
@@ -171,6 +187,16 @@ std::optional<std::string> scalingChart(const BenchReport& report, const fs::pat
 std::optional<std::string> densityChart(const BenchReport& report, const fs::path& dir) {
   return lightCountChart(report, dir, "density", "density.png", Measure::Frame,
                          "Frame time against light count at constant light density");
+}
+
+std::optional<std::string> giChart(const BenchReport& report, const fs::path& dir) {
+  return lightCountChart(report, dir, "gi", "gi.png", Measure::Frame,
+                         "Frame time against VPL count (the VPLs alone), two VPL cutoffs");
+}
+
+std::optional<std::string> giErrorChart(const BenchReport& report, const fs::path& dir) {
+  return lightCountChart(report, dir, "gi-error", "gi-error.png", Measure::ReferenceError,
+                         "Instant radiosity against the path-traced indirect light, per VPL cutoff");
 }
 
 std::optional<std::string> densityMemoryChart(const BenchReport& report, const fs::path& dir) {
@@ -302,6 +328,8 @@ std::vector<fs::path> writeCharts(const BenchReport& report, const fs::path& dir
                                     {"density.png", densityChart},
                                     {"density-passes.png", densityPassesChart},
                                     {"density-memory.png", densityMemoryChart},
+                                    {"gi.png", giChart},
+                                    {"gi-error.png", giErrorChart},
                                     {"threel.png", threelChart},
                                     {"tiles.png", tilesChart}}) {
     if (const auto section = chart(report, dir)) {

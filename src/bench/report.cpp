@@ -46,6 +46,7 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"camera", s.settings.camera},
       {"technique", s.settings.technique},
       {"label", techniqueLabel(s.settings)},
+      {"series", seriesLabel(s)},
       {"fill", s.settings.technique == "lll" ? s.settings.lllFill : ""},
       {"shade", s.settings.technique == "lll" ? s.settings.lllShade : ""},
       {"surfaces", s.settings.surfaces},
@@ -204,6 +205,8 @@ BenchReport readResultsJson(const std::filesystem::path& path) {
       s.settings.surfaces = r.at("surfaces").get<std::string>();
       s.settings.raster = r.at("raster").get<std::string>();
       s.settings.tileSize = r.at("tile").get<uint32_t>();
+      if (const std::string series = r.value("series", ""); series != techniqueLabel(s.settings))
+        s.series = series;
       result.lightCount = r.at("lights").get<uint64_t>();
       const std::string status = r.at("status").get<std::string>();
       result.status = status == statusName(Status::Ok)        ? Status::Ok
@@ -212,6 +215,9 @@ BenchReport readResultsJson(const std::filesystem::path& path) {
       const nlohmann::json memory = r.value("memory", nlohmann::json::object());
       for (const auto& [key, value] : memory.items())
         if (value.is_number()) result.memory.emplace_back(key, value.get<double>());
+      const nlohmann::json stats = r.value("technique_stats", nlohmann::json::object());
+      for (const auto& [key, value] : stats.items())
+        if (value.is_number()) result.techniqueStats.emplace_back(key, value.get<double>());
       for (const nlohmann::json& p : r.at("passes"))
         result.passes.push_back({p.at("name").get<std::string>(), p.at("median_ms").get<double>(),
                                  p.at("min_ms").get<double>(), p.at("max_ms").get<double>()});

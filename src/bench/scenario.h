@@ -19,6 +19,11 @@ struct Scenario {
   // Also time the ALU roofline probe (bench/alu_probe.h) with every light at every pixel, after each
   // timed frame: its pass "alu-probe" (where every light does reach every pixel, as in ThreeL's test).
   bool aluProbe = false;
+  // The line it belongs to in the suite's charts, when not its technique's label (gi: "lll, cutoff 0.05").
+  std::string series;
+  // Instant radiosity's error: the rendered frame against the path-traced indirect light of the same
+  // scene without VPLs (gi/path_tracer.h), as "gi-error-vs-reference" in the technique's stats.
+  bool compareWithReference = false;
 };
 
 // The light linked list's variant: its fill, with "/gbuffer" when opaque surfaces come from the raster
@@ -27,6 +32,8 @@ struct Scenario {
 std::string lllVariant(const RenderSettings& settings);
 // "lll/ray" for the light linked list (its fill matters as much as the technique), else the name.
 std::string techniqueLabel(const RenderSettings& settings);
+// The scenario's line in its suite's charts: its series, or its technique's label.
+std::string seriesLabel(const Scenario& scenario);
 
 struct SuiteOptions {
   bool quick = false;        // tiny sizes and counts, so a suite runs on lavapipe in under a minute

@@ -16,6 +16,9 @@ namespace lll::bench {
 
 namespace {
 
+// The gi suites' short VPL ranges: each VPL cut off at 5% of the mean indirect irradiance.
+constexpr float kGiShortCutoff = 0.05f;
+
 struct Size {
   uint32_t width;
   uint32_t height;
@@ -195,7 +198,69 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
   return out;
 }
 
+// Instant radiosity (issue 15): the atrium lit by its VPLs alone (--gi vpl-only), 512 to a million
+// (5,144 is Infinity's figure), at the default cutoff (each VPL reaches far: quality) and at 0.05
+// (short ranges: speed), by every technique that finishes.
+std::vector<Scenario> giSuite(const SuiteOptions& options) {
+  const std::vector<uint32_t> counts =
+      options.quick ? std::vector<uint32_t>{64, 512} : std::vector<uint32_t>{512, 5144, 65536, 1048576};
+  const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
+  std::vector<Scenario> out;
+  for (const float cutoff : {gi::kDefaultVplCutoff, kGiShortCutoff}) {
+    for (const uint32_t vpls : counts) {
+      SceneRequest scene{kDefaultSceneName, 0, 1};
+      scene.gi.mode = "vpl-only";
+      scene.gi.vplCount = vpls;
+      scene.gi.photons = options.quick ? 20000 : std::max(100000u, 3 * vpls);  // ~2 deposits a photon
+      scene.gi.vplCutoff = cutoff;
+      const Scenario base = makeScenario("gi", fmt::format("{} VPLs, cutoff {}", vpls, cutoff), scene, size);
+      for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
+        const std::string& t = s.settings.technique;
+        s.series = fmt::format("{}, cutoff {}", techniqueLabel(s.settings), cutoff);
+        if ((t == "forward" || t == "deferred" || t == "prepass") && vpls > kDensityVolumeLimit)
+          s.skip = fmt::format("{} over {} lights takes seconds per frame", t, kDensityVolumeLimit);
+        else if (t == "forward" && vpls > kForwardLightLimitOnCpu && options.cpuDevice &&
+                 !options.fullForward)
+          s.skip = fmt::format("forward over {} lights on a CPU device takes hours; --full-forward runs it",
+                               kForwardLightLimitOnCpu);
+        out.push_back(s);
+      }
+    }
+  }
+  return out;
+}
+
+// Instant radiosity against ground truth: the Cornell room's indirect light (VPLs alone, lll) against
+// the path-traced reference, as the VPL count grows, with ranges that reach the whole room (cutoff
+// 1e-6), the default cutoff and the short one.
+std::vector<Scenario> giErrorSuite(const SuiteOptions& options) {
+  const std::vector<uint32_t> counts =
+      options.quick ? std::vector<uint32_t>{64, 512} : std::vector<uint32_t>{64, 512, 5144, 65536};
+  const Size size = options.quick ? Size{48, 27} : Size{480, 360};
+  std::vector<Scenario> out;
+  for (const float cutoff : {1e-6f, gi::kDefaultVplCutoff, kGiShortCutoff}) {
+    for (const uint32_t vpls : counts) {
+      SceneRequest scene{"cornell", 0, 1};
+      scene.gi.mode = "vpl-only";
+      scene.gi.vplCount = vpls;
+      scene.gi.photons = options.quick ? 20000 : std::max(100000u, 3 * vpls);
+      scene.gi.vplCutoff = cutoff;
+      Scenario s = makeScenario("gi-error", fmt::format("{} VPLs, cutoff {}", vpls, cutoff), scene, size);
+      s.settings.technique = "lll";
+      s.settings.ambient = 0.0f;
+      s.series = fmt::format("cutoff {}", cutoff);
+      s.compareWithReference = true;
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
 }  // namespace
+
+std::string seriesLabel(const Scenario& scenario) {
+  return scenario.series.empty() ? techniqueLabel(scenario.settings) : scenario.series;
+}
 
 std::string lllVariant(const RenderSettings& settings) {
   if (settings.technique != "lll") return "";
@@ -209,8 +274,8 @@ std::string techniqueLabel(const RenderSettings& settings) {
 }
 
 const std::vector<std::string>& suiteNames() {
-  static const std::vector<std::string> names = {"threel", "scaling",  "density",
-                                                 "tiles",  "overdraw", "smoke"};
+  static const std::vector<std::string> names = {"threel",   "scaling", "density", "tiles",
+                                                 "overdraw", "smoke",   "gi",      "gi-error"};
   return names;
 }
 
@@ -221,6 +286,8 @@ std::vector<Scenario> buildSuite(const std::string& suite, const SuiteOptions& o
   if (suite == "tiles") return tilesSuite(options);
   if (suite == "overdraw") return overdrawSuite(options);
   if (suite == "smoke") return smokeSuite(options);
+  if (suite == "gi") return giSuite(options);
+  if (suite == "gi-error") return giErrorSuite(options);
   throw InputError(
       fmt::format("--suite {}: unknown suite (known: {})", suite, fmt::join(suiteNames(), ", ")));
 }
