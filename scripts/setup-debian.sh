@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc spirv-tools
   libglm-dev libstb-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libfmt-dev
-  libgtest-dev libtinyexr-dev gnuplot-nox libspirv-cross-c-shared-dev libembree-dev
+  libgtest-dev libtinyexr-dev gnuplot-nox libspirv-cross-c-shared-dev libembree-dev libtbb-dev
   clang-14 libclang-rt-14-dev
 )
 missing=()

@@ -184,7 +184,7 @@ TEST(BenchSuites, GiSuitesVaryTheVplCountAndCutoff) {
   EXPECT_EQ(counts, (std::set<uint32_t>{512, 5144, 65536, 1048576}));
   EXPECT_EQ(cutoffs.size(), 2u);
   const auto error = buildSuite("gi-error", SuiteOptions{});
-  EXPECT_EQ(error.size(), 12u);
+  EXPECT_EQ(error.size(), 16u);
   for (const Scenario& s : error) {
     EXPECT_TRUE(s.compareWithReference);
     EXPECT_EQ(s.scene.scene, "cornell");
@@ -199,7 +199,7 @@ TEST(BenchQuick, GiErrorSuiteMeasuresTheErrorAgainstTheReference) {
   options.suites = {"gi-error"};
   options.quick = true;
   const BenchReport report = runBench(context, options);
-  ASSERT_EQ(report.results.size(), 6u);
+  ASSERT_EQ(report.results.size(), 8u);
   for (const ScenarioResult& r : report.results) {
     ASSERT_EQ(r.status, Status::Ok) << r.scenario.name << ": " << r.message;
     std::optional<double> error, traceMs;

@@ -287,6 +287,17 @@ TEST(Gi, ErrorAgainstTheReferenceFallsAsTheVplCountRises) {
   EXPECT_LT(previous, 0.04) << "2,048 VPLs should be within the reference's noise";
 }
 
+// --vpl-range gives every VPL the same range, whatever its flux or the count.
+TEST(Photons, FixedRangeOverridesTheCutoff) {
+  const Scene scene = builtin::makeCornell();
+  gi::VplOptions options;
+  options.photons = 8000;
+  options.vplCount = 256;
+  options.range = 3.0f;
+  for (const Light& v : gi::makeVirtualPointLights(scene, options))
+    EXPECT_FLOAT_EQ(v.range, std::max(3.0f, 2.0f * v.nearDistance));
+}
+
 // ---- the command line ----
 
 using test::CliTest;
@@ -299,6 +310,7 @@ TEST_F(CliTest, GiOptionsOutOfRange) {
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-count", "3"}), {"--vpl-count 3"});
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-cutoff", "0"}), {"--vpl-cutoff"});
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-cutoff", "nan"}), {"--vpl-cutoff"});
+  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-range", "-1"}), {"--vpl-range"});
 }
 
 }  // namespace

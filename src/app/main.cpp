@@ -110,6 +110,10 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
          "--gi: a virtual point light reaches until its irradiance falls to this fraction of the scene's "
          "mean indirect irradiance (smaller: longer ranges, longer light lists)")
       ->check(finiteIn(1e-9, 1.0));
+  cmd.add_option("--vpl-range", job.scene.gi.vplRange,
+                 "--gi: every virtual point light's range in metres instead of --vpl-cutoff's (a range that "
+                 "does not shrink as --vpl-count grows)")
+      ->check(finiteIn(0.0, 1e6));
   cmd.add_option("--debug-view", s.debugView,
                  "none | heatmap | bounds | tiles (lll; heatmap and tiles: tiled, clustered)")
       ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));

@@ -232,23 +232,34 @@ std::vector<Scenario> giSuite(const SuiteOptions& options) {
 
 // Instant radiosity against ground truth: the Cornell room's indirect light (VPLs alone, lll) against
 // the path-traced reference, as the VPL count grows, with ranges that reach the whole room (cutoff
-// 1e-6), the default cutoff and the short one.
+// 1e-6), the default cutoff, the short one, and a fixed 8 m range (--vpl-range: most of the room's 9.5 m
+// diagonal).
 std::vector<Scenario> giErrorSuite(const SuiteOptions& options) {
   const std::vector<uint32_t> counts =
       options.quick ? std::vector<uint32_t>{64, 512} : std::vector<uint32_t>{64, 512, 5144, 65536};
   const Size size = options.quick ? Size{48, 27} : Size{480, 360};
   std::vector<Scenario> out;
-  for (const float cutoff : {1e-6f, gi::kDefaultVplCutoff, kGiShortCutoff}) {
+  struct Reach {
+    float cutoff;
+    float range;
+    std::string name;
+  };
+  const Reach reaches[] = {{1e-6f, 0.0f, "cutoff 1e-06"},
+                           {gi::kDefaultVplCutoff, 0.0f, fmt::format("cutoff {}", gi::kDefaultVplCutoff)},
+                           {kGiShortCutoff, 0.0f, fmt::format("cutoff {}", kGiShortCutoff)},
+                           {gi::kDefaultVplCutoff, 8.0f, "range 8 m"}};
+  for (const Reach& reach : reaches) {
     for (const uint32_t vpls : counts) {
       SceneRequest scene{"cornell", 0, 1};
       scene.gi.mode = "vpl-only";
       scene.gi.vplCount = vpls;
       scene.gi.photons = options.quick ? 20000 : std::max(100000u, 3 * vpls);
-      scene.gi.vplCutoff = cutoff;
-      Scenario s = makeScenario("gi-error", fmt::format("{} VPLs, cutoff {}", vpls, cutoff), scene, size);
+      scene.gi.vplCutoff = reach.cutoff;
+      scene.gi.vplRange = reach.range;
+      Scenario s = makeScenario("gi-error", fmt::format("{} VPLs, {}", vpls, reach.name), scene, size);
       s.settings.technique = "lll";
       s.settings.ambient = 0.0f;
-      s.series = fmt::format("cutoff {}", cutoff);
+      s.series = reach.name;
       s.compareWithReference = true;
       out.push_back(s);
     }

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <execution>
 #include <mutex>
 #include <thread>
 
@@ -220,7 +221,9 @@ std::vector<std::pair<uint64_t, uint32_t>> keyDeposits(const std::vector<PhotonD
                    normalBucket(deposits[i].normal),
                i};
   }
-  std::sort(keys.begin(), keys.end());
+  // On every core (TBB through the standard's parallel algorithms): the bisection sorts the deposits
+  // about a dozen times, 4.4 s for 2.2 million on one H200 host core.
+  std::sort(std::execution::par_unseq, keys.begin(), keys.end());
   return keys;
 }
 
@@ -311,8 +314,11 @@ std::vector<Light> makeVirtualPointLights(const Scene& scene, const VplOptions& 
   const std::vector<PhotonDeposit> deposits = tracePhotons(rays, scene.lights, options, stats);
   const Bounds bounds = scene.worldBounds();
   const float unmergedNear = bounds.valid() ? 1e-3f * glm::length(bounds.extent()) : 1e-3f;
-  return mergeDeposits(deposits, options.vplCount, unmergedNear,
-                       vplCutoffIrradiance(scene, deposits, options.cutoff), stats);
+  std::vector<Light> vpls = mergeDeposits(deposits, options.vplCount, unmergedNear,
+                                          vplCutoffIrradiance(scene, deposits, options.cutoff), stats);
+  if (options.range > 0.0f)
+    for (Light& vpl : vpls) vpl.range = std::max(options.range, 2.0f * vpl.nearDistance);
+  return vpls;
 }
 
 }  // namespace lll::gi

@@ -46,6 +46,9 @@ struct VplOptions {
   uint32_t bounces = kDefaultBounces;    // deposits per photon at most (1: one-bounce indirect light)
   uint32_t vplCount = kDefaultVplCount;  // merge target; 0 keeps every deposit as its own VPL
   float cutoff = kDefaultVplCutoff;
+  // When positive, every VPL's range in metres instead of the cutoff's (at least twice its near
+  // distance): a range that does not shrink as the count grows, so more VPLs cost more but err less.
+  float range = 0.0f;
   uint32_t seed = 1;
   uint32_t threads = 0;  // 0: one per hardware thread
   // Called with the fraction of photons traced so far (0..1), from the tracing threads, one call at

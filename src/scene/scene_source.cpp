@@ -28,6 +28,9 @@ void validateGi(const GiRequest& gi) {
         fmt::format("--vpl-count {}: expected 0 (no merging) or 6 to {}", gi.vplCount, gpu::kMaxLights));
   if (!(gi.vplCutoff >= 1e-9f && gi.vplCutoff <= 1.0f))
     throw InputError(fmt::format("--vpl-cutoff {}: expected a fraction in [1e-9, 1]", gi.vplCutoff));
+  if (!(gi.vplRange >= 0.0f && gi.vplRange <= 1e6f))
+    throw InputError(
+        fmt::format("--vpl-range {}: expected metres in [0, 1e6] (0: from --vpl-cutoff)", gi.vplRange));
 }
 
 // Traces the photons from the scene's lights and adds the VPLs they leave (vpl-only: instead of
@@ -39,6 +42,7 @@ void addIndirectLight(Scene& scene, const SceneRequest& request, std::vector<std
   options.bounces = request.gi.bounces;
   options.vplCount = request.gi.vplCount;
   options.cutoff = request.gi.vplCutoff;
+  options.range = request.gi.vplRange;
   options.seed = request.seed;
   if (report) options.progress = report->progress;
   gi::PhotonStats stats;

@@ -21,6 +21,7 @@ struct GiRequest {
   uint32_t bounces = gi::kDefaultBounces;
   uint32_t vplCount = gi::kDefaultVplCount;  // 0: one VPL per deposit, unmerged
   float vplCutoff = gi::kDefaultVplCutoff;
+  float vplRange = 0.0f;  // metres; 0: from the cutoff
   bool operator==(const GiRequest&) const = default;
 };
 
