@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <optional>
 
 #include "scene/lights.h"
@@ -173,7 +174,7 @@ struct Counts {
 
 // Renders the plane with `light` through `path` and expects every pixel within 1% (+ 2e-4
 // absolute, fp16 storage) of the formula.
-Counts checkAgainstFormula(const Scene& scene, const PlaneMaterial& pm, const Light& light,
+Counts checkAgainstFormula(const Scene& scene, const std::function<glm::vec3(const glm::vec3&)>& expectedAt,
                            const ShadingPath& path, const std::string& fill = "compute") {
   SCOPED_TRACE(std::string(path.name) + (fill == "compute" ? "" : " fill " + fill));
   RenderSettings settings;
@@ -194,7 +195,7 @@ Counts checkAgainstFormula(const Scene& scene, const PlaneMaterial& pm, const Li
   for (uint32_t y = 0; y < settings.height; ++y) {
     for (uint32_t x = 0; x < settings.width; ++x) {
       const glm::vec3 p = groundPoint(renderer, x, y, settings.width, settings.height);
-      const glm::vec3 expected = expectedRadiance(scene, pm, light, p);
+      const glm::vec3 expected = expectedAt(p);
       const glm::vec3 got = glm::vec3(hdr.at(x, y));
       for (int c = 0; c < 3; ++c) {
         // fp16 storage and a half-pixel position error near steep falloffs bound the tolerance.
@@ -209,6 +210,12 @@ Counts checkAgainstFormula(const Scene& scene, const PlaneMaterial& pm, const Li
   EXPECT_EQ(failures, 0) << "pixels off the formula";
   test::expectNoValidationMessagesSince(before);
   return counts;
+}
+
+Counts checkAgainstFormula(const Scene& scene, const PlaneMaterial& pm, const Light& light,
+                           const ShadingPath& path, const std::string& fill = "compute") {
+  return checkAgainstFormula(
+      scene, [&](const glm::vec3& p) { return expectedRadiance(scene, pm, light, p); }, path, fill);
 }
 
 Light pointLight(glm::vec3 position, float intensity, float range) {
@@ -275,6 +282,29 @@ TEST_P(Analytic, VirtualPointLightHemisphereAndNearClamp) {
   const Counts c = checkAgainstFormula(scene, {}, light, GetParam());
   EXPECT_GT(c.lit, 1200);
   EXPECT_GT(c.dark, 2500);  // behind its hemisphere (x < ~-0.29) and beyond its range
+}
+
+// The sun (a directional light, in the frame's uniforms, never in a list): E lux from 50 degrees
+// off the zenith, coloured; every pixel gets brdf x cos x E, the same on the whole plane but for
+// the view direction.
+TEST_P(Analytic, DirectionalLightLightsEveryPixel) {
+  Scene scene = planeScene();
+  scene.lights.clear();
+  DirectionalLight sun;
+  const float zenith = 50.0f * kPi / 180.0f;
+  sun.direction = -glm::vec3(std::sin(zenith), std::cos(zenith), 0.0f);
+  sun.color = {1.0f, 0.8f, 0.6f};
+  sun.illuminance = 3.0f;
+  scene.directionalLights = {sun};
+  const PlaneMaterial pm;
+  const Counts c = checkAgainstFormula(
+      scene,
+      [&](const glm::vec3& p) {
+        const glm::vec3 v = glm::normalize(scene.cameras[0].eye - p);
+        return sun.color * sun.illuminance * brdfCosine(pm, shadingNormal(pm), v, -sun.direction);
+      },
+      GetParam());
+  EXPECT_EQ(c.dark, 0);
 }
 
 // A light low over the plane (light arriving at up to ~85 degrees): a shading normal tilted by

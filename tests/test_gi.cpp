@@ -27,7 +27,7 @@ gi::PhotonStats traceOnly(const Scene& scene, gi::VplOptions options,
                           std::vector<gi::PhotonDeposit>* out = nullptr) {
   const gi::RayScene rays(scene);
   gi::PhotonStats stats;
-  auto deposits = gi::tracePhotons(rays, scene.lights, options, &stats);
+  auto deposits = gi::tracePhotons(rays, scene, options, &stats);
   if (out) *out = std::move(deposits);
   return stats;
 }
@@ -55,6 +55,25 @@ TEST(Photons, SphereRoomDepositsTheAlbedoPerBounce) {
   EXPECT_NEAR(three.depositedFlux.r, expected, 0.02f * expected);
   std::printf("[ photons ] sphere room: 3 bounces deposit %.4f of the emitted flux (analytic %.4f)\n",
               three.depositedFlux.r / emitted, expected / emitted);
+}
+
+// The sun's photons: straight down on the 40 m plane (albedo 0.8), the first deposits carry
+// albedo x illuminance x the plane's area, whichever of the disk's photons land on it.
+TEST(Photons, SunDepositsItsIlluminanceTimesTheLitArea) {
+  Scene scene = makeBuiltinScene("plane").value();
+  scene.lights.clear();
+  DirectionalLight sun;
+  sun.direction = {0.0f, -1.0f, 0.0f};
+  sun.illuminance = 2.0f;
+  scene.directionalLights = {sun};
+  gi::VplOptions options;
+  options.photons = 40000;
+  options.bounces = 1;
+  const gi::PhotonStats s = traceOnly(scene, options);
+  const float expected = 0.8f * 2.0f * 40.0f * 40.0f;
+  // About 64% of the disk's photons land on the square: a binomial count's error is under 0.5%.
+  EXPECT_NEAR(s.depositedFlux.r, expected, 0.02f * expected);
+  std::printf("[ photons ] sun on the plane: %.1f deposited, analytic %.1f\n", s.depositedFlux.r, expected);
 }
 
 TEST(Photons, NoPhotonLeavesMoreThanTheAlbedoAllows) {

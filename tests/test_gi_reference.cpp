@@ -224,6 +224,28 @@ TEST(GiReference, DirectLightAndTonemapMatchTheRenderer) {
                           test::ImageBound{60.0, 1, 1.0, 1}, "tonemap cpu");
 }
 
+// The sun in the reference: the plane under a directional light 40 degrees off the zenith gives
+// forward's image (nothing casts a shadow on it).
+TEST(GiReference, SunMatchesTheRenderer) {
+  Scene scene = makeBuiltinScene("plane").value();
+  scene.lights.clear();
+  DirectionalLight sun;
+  sun.direction = -glm::normalize(glm::vec3(0.6f, 1.0f, 0.3f));
+  sun.illuminance = 1.5f;
+  scene.directionalLights = {sun};
+  RenderSettings settings = test::reference({});
+  settings.width = 64;
+  settings.height = 48;
+  settings.ambient = 0.0f;
+  const test::Rendered rendered = test::render(scene, settings);
+  gi::ReferenceOptions options;
+  options.bounces = 0;
+  options.spp = 1;
+  const gi::RadianceImage image = renderBuiltin(scene, "", options, settings.width, settings.height);
+  test::expectWithinBound(tonemapFilmic(toHdr(image), settings.exposure), rendered.ldr, test::kSameImage,
+                          "reference sun plane");
+}
+
 class GiReferenceCli : public test::CliTest {};
 
 TEST_F(GiReferenceCli, BadInputToTheCommandFunctionNamesTheInputAndWritesNothing) {

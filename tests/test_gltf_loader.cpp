@@ -156,7 +156,7 @@ TEST_F(GltfLoaderTest, PunctualLights) {
                     {"range", 8.0},
                     {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.6}}}},
                    {{"type", "point"}, {"intensity", 3.0}, {"color", {0.0, 1.0, 0.0}}},
-                   {{"type", "directional"}},
+                   {{"type", "directional"}, {"intensity", 5.0}, {"color", {1.0, 0.9, 0.8}}},
                    {{"type", "spot"}, {"spot", json::object()}}});
   auto light = [](int index) { return json{{"KHR_lights_punctual", {{"light", index}}}}; };
   const float s = std::sqrt(0.5f);
@@ -166,7 +166,8 @@ TEST_F(GltfLoaderTest, PunctualLights) {
                    // -90 degrees about x: the spot's -z turns to -y
                    {{"translation", {0, 5, 0}}, {"rotation", {-s, 0, 0, s}}, {"extensions", light(1)}},
                    {{"extensions", light(2)}},
-                   {{"extensions", light(3)}},
+                   // -90 degrees about x: the sun shines straight down
+                   {{"rotation", {-s, 0, 0, s}}, {"extensions", light(3)}},
                    {{"extensions", light(4)}}});
   b.setScene({0, 2, 3, 4, 5});
   LoadReport report;
@@ -195,7 +196,13 @@ TEST_F(GltfLoaderTest, PunctualLights) {
   EXPECT_FLOAT_EQ(defaultSpot.innerConeAngle, 0.0f);
   EXPECT_FLOAT_EQ(defaultSpot.outerConeAngle, 0.7853982f);
   EXPECT_FLOAT_EQ(defaultSpot.range, rangeForUnboundedLight(1.0f, glm::vec3(1.0f)));
-  EXPECT_TRUE(anyWarningContains(report, "directional"));
+  // The sun: lux as given, travelling along its node's -z, kept out of the punctual lights.
+  ASSERT_EQ(scene.directionalLights.size(), 1u);
+  const DirectionalLight& sun = scene.directionalLights[0];
+  expectVec3Near(sun.direction, {0, -1, 0});
+  EXPECT_FLOAT_EQ(sun.illuminance, 5.0f);
+  EXPECT_EQ(sun.color, glm::vec3(1.0f, 0.9f, 0.8f));
+  EXPECT_FALSE(anyWarningContains(report, "directional"));
 }
 
 TEST_F(GltfLoaderTest, PerspectiveCameras) {

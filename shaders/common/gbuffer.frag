@@ -13,7 +13,7 @@ void main() {
   GpuMaterial m = materials[draw.ids.x];
   Surface s = surfaceAtFragment(m);
   if (m.flags.x == kAlphaMask && s.alpha < m.alpha.x) discard;
-  outAccumulation = vec4(ambientAndEmissive(s), 1.0);
+  outAccumulation = vec4(unlistedLight(s), 1.0);
   outGbuffer0 = vec4(s.baseColor, s.metallic);
   outGbuffer1 = vec4(s.normal, s.roughness);
 }

@@ -83,9 +83,13 @@ Surface assembleSurface(GpuMaterial m, MaterialSamples t, vec3 position, vec3 no
   return s;
 }
 
-// What every technique adds besides its lights: emission and a small constant ambient.
-vec3 ambientAndEmissive(Surface s) {
-  return frame.ambient.rgb * s.baseColor * s.occlusion + s.emissive;
+// What every technique adds besides its listed lights: emission, a small constant ambient and the
+// directional lights (the sun), which reach every pixel and so never enter a light list.
+vec3 unlistedLight(Surface s) {
+  vec3 sum = frame.ambient.rgb * s.baseColor * s.occlusion + s.emissive;
+  for (uint i = 0u; i < frame.display.z; ++i)
+    sum += brdfCosine(s, frame.sunDirection[i].xyz) * frame.sunIlluminance[i].rgb;
+  return sum;
 }
 
 #endif

@@ -37,5 +37,5 @@ void main() {
   vec3 metalCorrection =
       specularMean > 0.0 ? specularSums.rgb * (specularSums.a / (kMetalTermScale * specularMean)) : vec3(0.0);
   vec3 specular = max(specularSums.rgb - (1.0 - s.baseColor) * metalCorrection, vec3(0.0));
-  outColor = vec4(ambientAndEmissive(s) + diffuse + specular, 1.0);
+  outColor = vec4(unlistedLight(s) + diffuse + specular, 1.0);
 }

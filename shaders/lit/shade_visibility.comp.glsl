@@ -44,7 +44,7 @@ void main() {
 #ifdef LIGHTING_EVERY_LIGHT
   color = lightFromChunks(s, covered);
   bool replaced;
-  if (covered) color = lightingView(s, pixel, viewDepth, ambientAndEmissive(s) + color, replaced);
+  if (covered) color = lightingView(s, pixel, viewDepth, unlistedLight(s) + color, replaced);
 #else
   bool replaced;
   if (covered) color = shadePixel(s, pixel, viewDepth, replaced);

@@ -25,6 +25,20 @@ vec3 scatterLight(GpuLight light, vec3 position, vec3 normal, vec3 towardEye) {
   return light.colorIntensity.rgb * (light.colorIntensity.w * attenuation * (diffuse + back) / kPi);
 }
 
+// Light the directional lights (the sun) send towards the eye per unit albedo: as a point light's,
+// with the illuminance in place of intensity times attenuation.
+vec3 scatterDirectionalLights(vec3 normal, vec3 towardEye) {
+  vec3 sum = vec3(0.0);
+  float wrap = system.shading.x;
+  for (uint i = 0u; i < frame.display.z; ++i) {
+    vec3 l = frame.sunDirection[i].xyz;
+    float diffuse = max(dot(normal, l) + wrap, 0.0) / (1.0 + wrap);
+    float back = system.shading.y * pow(max(dot(-towardEye, l), 0.0), system.shading.z);
+    sum += frame.sunIlluminance[i].rgb * ((diffuse + back) / kPi);
+  }
+  return sum;
+}
+
 // The camera's axes in world space: quads lie in the plane of `right` and `up`, `back` faces the eye.
 vec3 cameraRight() {
   return vec3(frame.view[0][0], frame.view[1][0], frame.view[2][0]);

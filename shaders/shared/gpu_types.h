@@ -30,9 +30,12 @@ struct FrameUniforms {
   vec4 depthParams;     // near, far, tan(fovy/2) * aspect, tan(fovy/2)
   uvec4 counts;         // x light count, y tile size, z tiles x, w tiles y
   vec4 ambient;         // rgb constant ambient radiance, w exposure
-  uvec4 display;  // x kDisplayFilmic or kDisplayDebug (skips the filmic curve), y heatmap scale, zw unused
+  uvec4 display;  // x kDisplayFilmic or kDisplayDebug (skips the filmic curve), y heatmap scale,
+                  // z directional lights in use, w unused
+  vec4 sunDirection[kMaxDirectionalLights];    // xyz unit, towards the light; w unused
+  vec4 sunIlluminance[kMaxDirectionalLights];  // rgb colour x illuminance (lux); w unused
 };
-LLL_CHECK_SIZE(FrameUniforms, 4 * 64 + 6 * 16);
+LLL_CHECK_SIZE(FrameUniforms, 4 * 64 + 6 * 16 + 2 * 4 * 16);
 
 // A metallic-roughness material (glTF 2.0).
 struct GpuMaterial {

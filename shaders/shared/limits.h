@@ -29,6 +29,9 @@ LLL_CONST(uint, kLightPoint, 0u);
 LLL_CONST(uint, kLightSpot, 1u);
 LLL_CONST(uint, kLightBox, 2u);
 LLL_CONST(uint, kLightVpl, 3u);
+// Directional lights (the sun, KHR_lights_punctual "directional") light every pixel and never
+// enter the light lists: they travel in the frame's uniforms, this many at most.
+LLL_CONST(uint, kMaxDirectionalLights, 4u);
 // Material alpha modes, stored in GpuMaterial.flags.
 LLL_CONST(uint, kAlphaOpaque, 0u);
 LLL_CONST(uint, kAlphaMask, 1u);

@@ -91,6 +91,10 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "clustered: depth slices per tile between its nearest and farthest surface (1 to 32)")
       ->check(CLI::Range(1u, 32u));
   cmd.add_option(
+      "--sun", job.scene.suns,
+      "a directional light, \"x,y,z,lux[,r,g,b]\": x,y,z towards the sun, its illuminance in lux and "
+      "linear colour; repeatable (4 at most, with the scene's own)");
+  cmd.add_option(
          "--gi", job.scene.gi.mode,
          "indirect light: none | vpl (instant radiosity: photons traced from the lights leave virtual "
          "point lights) | vpl-only (the virtual point lights without the direct lights)")

@@ -103,6 +103,7 @@ class PathTracer {
       : rays_(scene),
         options_(options),
         selection_(selectLights(scene.lights)),
+        suns_(scene.directionalLights),
         glass_(rays_.hasBlendedMaterials()),
         offset_(rays_.surfaceOffset()) {}
 
@@ -169,6 +170,14 @@ class PathTracer {
       if (!visible(origin, l, std::max(0.0f, distance - offset_), random)) return;
       add(l, light.color * (light.intensity * attenuation * weight));
     };
+    // Directional lights: every one, each with a shadow ray to infinity.
+    for (const DirectionalLight& sun : suns_) {
+      const glm::vec3 l = -glm::normalize(sun.direction);
+      if (glm::dot(l, hit.normal) <= 0.0f) continue;
+      if (visible(origin, l, std::numeric_limits<float>::infinity(), random))
+        add(l, sun.color * sun.illuminance);
+    }
+    if (selection_.lights.empty()) return;
     if (selection_.cdf.empty()) {
       for (const Light* light : selection_.lights) one(*light, 1.0f);
       return;
@@ -212,6 +221,7 @@ class PathTracer {
   RayScene rays_;
   const ReferenceOptions& options_;
   LightSelection selection_;
+  std::vector<DirectionalLight> suns_;
   bool glass_;
   float offset_;
 };

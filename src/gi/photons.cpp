@@ -43,63 +43,111 @@ glm::vec3 aroundAxis(const glm::vec3& axis, float cosTheta, float phi) {
   return glm::normalize(t * (sinTheta * std::cos(phi)) + b * (sinTheta * std::sin(phi)) + axis * cosTheta);
 }
 
-struct Emitters {
-  std::vector<uint32_t> light;  // index into the scene's lights
-  std::vector<float> cdf;       // cumulative selection probability
-  std::vector<float> probability;
+// A photon source: a punctual light, or a directional one shining through a disk that covers the
+// scene's bounding sphere (radius R), so that its flux is illuminance x pi R^2.
+struct Emitter {
+  const Light* light = nullptr;
+  const DirectionalLight* sun = nullptr;
 };
 
-Emitters chooseEmitters(const std::vector<Light>& lights) {
+struct Emitters {
+  std::vector<Emitter> sources;
+  std::vector<float> cdf;  // cumulative selection probability
+  std::vector<float> probability;
+  glm::vec3 sceneCenter{0.0f};
+  float sceneRadius = 0.0f;
+};
+
+Emitters chooseEmitters(const Scene& scene) {
   Emitters e;
-  double total = 0.0;
-  for (uint32_t i = 0; i < lights.size(); ++i) {
-    if (!emitsPhotons(lights[i])) continue;
-    const double power =
-        double(lights[i].intensity) * channelMean(lights[i].color) * emissionSolidAngle(lights[i]);
-    if (!(power > 0.0)) continue;
-    e.light.push_back(i);
-    e.probability.push_back(float(power));
-    total += power;
+  const Bounds bounds = scene.worldBounds();
+  if (bounds.valid()) {
+    e.sceneCenter = bounds.center();
+    e.sceneRadius = std::max(0.5f * glm::length(bounds.extent()), 1e-3f);
   }
-  float running = 0.0f;
-  for (float& p : e.probability) {
-    p = float(double(p) / total);
+  std::vector<double> power;
+  for (const Light& light : scene.lights) {
+    if (!emitsPhotons(light)) continue;
+    power.push_back(double(light.intensity) * channelMean(light.color) * emissionSolidAngle(light));
+    e.sources.push_back({&light, nullptr});
+  }
+  if (bounds.valid()) {
+    for (const DirectionalLight& sun : scene.directionalLights) {
+      power.push_back(double(sun.illuminance) * channelMean(sun.color) * kPi * e.sceneRadius * e.sceneRadius);
+      e.sources.push_back({nullptr, &sun});
+    }
+  }
+  double total = 0.0;
+  for (size_t i = 0; i < power.size();) {  // drop the dark ones
+    if (power[i] > 0.0) {
+      total += power[i++];
+    } else {
+      power.erase(power.begin() + ptrdiff_t(i));
+      e.sources.erase(e.sources.begin() + ptrdiff_t(i));
+    }
+  }
+  double running = 0.0;
+  for (const double p : power) {
     running += p;
-    e.cdf.push_back(running);
+    e.probability.push_back(float(p / total));
+    e.cdf.push_back(float(running / total));
   }
   if (!e.cdf.empty()) e.cdf.back() = 1.0f;
   return e;
 }
 
-// One photon's walk from its light; appends its deposits and returns the flux it left with.
-glm::vec3 tracePhoton(const RayScene& rays, const std::vector<Light>& lights, const Emitters& emitters,
-                      uint32_t photonCount, uint32_t bounces, Random& random,
-                      std::vector<PhotonDeposit>& out) {
-  const size_t pick = size_t(std::lower_bound(emitters.cdf.begin(), emitters.cdf.end(), random.uniform()) -
-                             emitters.cdf.begin());
-  const size_t chosen = std::min(pick, emitters.light.size() - 1);
-  const Light& light = lights[emitters.light[chosen]];
-  glm::vec3 direction;
+// Where a photon starts and where it goes, with the flux it carries (before its light's window).
+struct Emission {
+  glm::vec3 origin, direction, flux;
+};
+
+Emission emitFromLight(const Light& light, float share, Random& random) {
+  Emission e;
+  e.origin = light.position;
   float angular = 1.0f;
   if (light.type == LightType::Spot) {
     const float cosOuter = std::cos(light.outerConeAngle);
     const float cosTheta = 1.0f - random.uniform() * (1.0f - cosOuter);
-    direction = aroundAxis(glm::normalize(light.direction), cosTheta, 2.0f * kPi * random.uniform());
+    e.direction = aroundAxis(glm::normalize(light.direction), cosTheta, 2.0f * kPi * random.uniform());
     angular = spotFalloff(light, cosTheta);
   } else {
-    direction = aroundAxis(glm::vec3(0, 0, 1), 1.0f - 2.0f * random.uniform(), 2.0f * kPi * random.uniform());
+    e.direction =
+        aroundAxis(glm::vec3(0, 0, 1), 1.0f - 2.0f * random.uniform(), 2.0f * kPi * random.uniform());
   }
-  const glm::vec3 emitted = light.color * (light.intensity * emissionSolidAngle(light) * angular /
-                                           (float(photonCount) * emitters.probability[chosen]));
+  e.flux = light.color * (light.intensity * emissionSolidAngle(light) * angular * share);
+  return e;
+}
 
-  glm::vec3 flux = emitted;
-  glm::vec3 origin = light.position;
+Emission emitFromSun(const DirectionalLight& sun, const Emitters& emitters, float share, Random& random) {
+  const glm::vec3 d = glm::normalize(sun.direction);
+  const glm::vec3 helper = std::abs(d.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  const glm::vec3 t = glm::normalize(glm::cross(helper, d)), b = glm::cross(d, t);
+  const float r = emitters.sceneRadius * std::sqrt(random.uniform()), phi = 2.0f * kPi * random.uniform();
+  Emission e;
+  e.origin =
+      emitters.sceneCenter - d * (2.0f * emitters.sceneRadius) + (t * std::cos(phi) + b * std::sin(phi)) * r;
+  e.direction = d;
+  e.flux = sun.color * (sun.illuminance * kPi * emitters.sceneRadius * emitters.sceneRadius * share);
+  return e;
+}
+
+// One photon's walk from its light; appends its deposits and returns the flux it left with.
+glm::vec3 tracePhoton(const RayScene& rays, const Emitters& emitters, uint32_t photonCount, uint32_t bounces,
+                      Random& random, std::vector<PhotonDeposit>& out) {
+  const size_t pick = size_t(std::lower_bound(emitters.cdf.begin(), emitters.cdf.end(), random.uniform()) -
+                             emitters.cdf.begin());
+  const size_t chosen = std::min(pick, emitters.sources.size() - 1);
+  const float share = 1.0f / (float(photonCount) * emitters.probability[chosen]);
+  const Light* light = emitters.sources[chosen].light;
+  const Emission emission = light ? emitFromLight(*light, share, random)
+                                  : emitFromSun(*emitters.sources[chosen].sun, emitters, share, random);
+  glm::vec3 flux = emission.flux, origin = emission.origin, direction = emission.direction;
   const float offset = rays.surfaceOffset();
   bool fromLight = true;
   for (uint32_t deposits = 0; deposits < bounces;) {
-    // Beyond its range (its bounding radius for a box) a light's window is zero.
-    const float reach = fromLight ? light.range - glm::distance(origin, light.position)
-                                  : std::numeric_limits<float>::infinity();
+    // Beyond its range (its bounding radius for a box) a light's window is zero; the sun has none.
+    const float reach = fromLight && light ? light->range - glm::distance(origin, light->position)
+                                           : std::numeric_limits<float>::infinity();
     if (!(reach > 0.0f)) break;
     const std::optional<RayHit> hit = rays.intersect(origin, direction, fromLight ? 0.0f : offset, reach);
     if (!hit) break;
@@ -108,12 +156,12 @@ glm::vec3 tracePhoton(const RayScene& rays, const std::vector<Light>& lights, co
       origin = hit->position + direction * offset;  // through the glass, unchanged
       continue;
     }
-    if (fromLight) {
-      flux *= light.type == LightType::Box
-                  ? boxWindow(light, hit->position - light.position)
-                  : rangeWindow(glm::distance(hit->position, light.position), light.range);
-      fromLight = false;
+    if (fromLight && light) {
+      flux *= light->type == LightType::Box
+                  ? boxWindow(*light, hit->position - light->position)
+                  : rangeWindow(glm::distance(hit->position, light->position), light->range);
     }
+    fromLight = false;
     const glm::vec3 reflected = flux * surface.albedo;
     if (glm::dot(reflected, glm::vec3(1.0f)) <= 0.0f) break;
     out.push_back({hit->position, hit->normal, reflected});
@@ -125,7 +173,7 @@ glm::vec3 tracePhoton(const RayScene& rays, const std::vector<Light>& lights, co
     const float u = random.uniform();
     direction = aroundAxis(hit->normal, std::sqrt(1.0f - u), 2.0f * kPi * random.uniform());
   }
-  return emitted;
+  return emission.flux;
 }
 
 }  // namespace
@@ -144,13 +192,13 @@ Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec
   return vpl;
 }
 
-std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const std::vector<Light>& lights,
-                                        const VplOptions& options, PhotonStats* stats) {
+std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const Scene& scene, const VplOptions& options,
+                                        PhotonStats* stats) {
   const auto begin = std::chrono::steady_clock::now();
-  const Emitters emitters = chooseEmitters(lights);
+  const Emitters emitters = chooseEmitters(scene);
   std::vector<PhotonDeposit> deposits;
   glm::vec3 emitted(0.0f);
-  if (!emitters.light.empty() && options.photons > 0 && options.bounces > 0) {
+  if (!emitters.sources.empty() && options.photons > 0 && options.bounces > 0) {
     const uint32_t threads =
         std::max(1u, options.threads ? options.threads : std::thread::hardware_concurrency());
     // Fixed chunks in photon order, each with its own output: the result does not depend on which
@@ -168,7 +216,7 @@ std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const std::vector<
         for (uint32_t p = c * kChunk; p < end; ++p) {
           Random random(options.seed, p);
           emittedPerChunk[c] +=
-              tracePhoton(rays, lights, emitters, options.photons, options.bounces, random, perChunk[c]);
+              tracePhoton(rays, emitters, options.photons, options.bounces, random, perChunk[c]);
         }
         if (options.progress) {
           const std::lock_guard lock(progressMutex);
@@ -189,7 +237,7 @@ std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const std::vector<
     }
   }
   if (stats) {
-    stats->photons = emitters.light.empty() ? 0 : options.photons;
+    stats->photons = emitters.sources.empty() ? 0 : options.photons;
     stats->deposits = deposits.size();
     stats->emittedFlux = emitted;
     stats->depositedFlux = glm::vec3(0.0f);
@@ -311,7 +359,7 @@ std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uin
 
 std::vector<Light> makeVirtualPointLights(const Scene& scene, const VplOptions& options, PhotonStats* stats) {
   const RayScene rays(scene);
-  const std::vector<PhotonDeposit> deposits = tracePhotons(rays, scene.lights, options, stats);
+  const std::vector<PhotonDeposit> deposits = tracePhotons(rays, scene, options, stats);
   const Bounds bounds = scene.worldBounds();
   const float unmergedNear = bounds.valid() ? 1e-3f * glm::length(bounds.extent()) : 1e-3f;
   std::vector<Light> vpls = mergeDeposits(deposits, options.vplCount, unmergedNear,

@@ -74,10 +74,12 @@ struct PhotonStats {
   uint64_t vpls = 0;
 };
 
-// Traces options.photons photons from the scene's point, spot and box lights (VPLs in `lights`
-// do not emit). Deterministic for a seed, whatever the thread count.
-std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const std::vector<Light>& lights,
-                                        const VplOptions& options, PhotonStats* stats = nullptr);
+// Traces options.photons photons from the scene's point, spot, box and directional lights (its VPLs
+// do not emit). A directional light shines through a disk as wide as the scene's bounding sphere,
+// from outside it: its flux is illuminance x pi R^2. Deterministic for a seed, whatever the thread
+// count.
+std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const Scene& scene, const VplOptions& options,
+                                        PhotonStats* stats = nullptr);
 
 // The irradiance at which a VPL is cut off: `cutoff` times the deposits' total flux over the scene's
 // surface area (both sides of every triangle count: light reaches either).

@@ -196,6 +196,12 @@ void Renderer::updateUniforms() {
   const bool debugColors = settings_.debugView == "heatmap" || settings_.debugView == "bounds";
   u.display = glm::uvec4(debugColors ? gpu::kDisplayDebug : gpu::kDisplayFilmic,
                          settings_.debugView == "heatmap" ? kHeatmapScale : 0u, 0u, 0u);
+  const std::vector<DirectionalLight>& suns = gpuScene_->scene().directionalLights;
+  u.display.z = uint32_t(std::min<size_t>(suns.size(), gpu::kMaxDirectionalLights));  // loaders refuse more
+  for (uint32_t i = 0; i < u.display.z; ++i) {
+    u.sunDirection[i] = glm::vec4(-glm::normalize(suns[i].direction), 0.0f);
+    u.sunIlluminance[i] = glm::vec4(suns[i].color * suns[i].illuminance, 0.0f);
+  }
   uniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
 }
 

@@ -151,6 +151,7 @@ class GltfImporter {
   glm::dmat4 localTransform(const tinygltf::Node& node, int index) const;
   void addLight(const tinygltf::Node& node, int nodeIndex, const glm::dmat4& world);
   void addCamera(int cameraIndex, int nodeIndex, const glm::dmat4& world);
+  void addDirectionalLight(const tinygltf::Light& in, const std::string& name, const glm::dmat4& world);
   void warnAboutIgnoredData();
 
   std::filesystem::path path_;
@@ -663,8 +664,14 @@ void GltfImporter::addLight(const tinygltf::Node& node, int nodeIndex, const glm
   }
   const tinygltf::Light& in = model_.lights[size_t(index)];
   const std::string name = "light " + (in.name.empty() ? std::to_string(index) : inQuotes(in.name));
+  if (in.type == "directional") {
+    addDirectionalLight(in, name, world);
+    return;
+  }
   if (in.type != "point" && in.type != "spot") {
-    warn(name + " is of type '" + in.type + "'; only point and spot lights are supported, so it is skipped");
+    warn(name + " is of type '" + in.type +
+         "'; only point, spot and directional lights are supported, so it is "
+         "skipped");
     return;
   }
   Light out;
@@ -691,6 +698,26 @@ void GltfImporter::addLight(const tinygltf::Node& node, int nodeIndex, const glm
     out.outerConeAngle = float(outer);
   }
   scene_.lights.push_back(out);
+}
+
+// The sun: along the node's -Z; "intensity" is its illuminance in lux.
+void GltfImporter::addDirectionalLight(const tinygltf::Light& in, const std::string& name,
+                                       const glm::dmat4& world) {
+  if (scene_.directionalLights.size() >= gpu::kMaxDirectionalLights) {
+    warn(name + " is a directional light past the " + std::to_string(gpu::kMaxDirectionalLights) +
+         " the renderer takes; it is skipped");
+    return;
+  }
+  DirectionalLight out;
+  out.name = name;
+  out.direction = unitOr(glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, -1.0f, 0.0f));
+  if (!in.color.empty())
+    out.color = glm::make_vec3(numbers_.clampedArray(in.color, 3, 0.0, 1.0, name + " color").data());
+  out.illuminance = numbers_.atLeast(in.intensity, 0.0, name + " intensity");
+  if (out.illuminance > kMaxLightIntensity)
+    fail(name + " has intensity " + std::to_string(out.illuminance) + " lux, above the " +
+         std::to_string(kMaxLightIntensity) + " the renderer's 32-bit shading can take without overflow");
+  scene_.directionalLights.push_back(out);
 }
 
 void GltfImporter::addCamera(int cameraIndex, int nodeIndex, const glm::dmat4& world) {

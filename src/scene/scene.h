@@ -97,6 +97,15 @@ struct Light {
   float nearDistance = 0.0f;  // VPLs: 1/d^2 is taken as 1/max(d, nearDistance)^2
 };
 
+// KHR_lights_punctual's "directional" light (the sun): parallel light of `illuminance` lux along
+// `direction`. It lights every point and never enters the light lists (FrameUniforms carries it).
+struct DirectionalLight {
+  std::string name;
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // where the light travels, unit length
+  glm::vec3 color{1.0f};
+  float illuminance = 1.0f;
+};
+
 struct Camera {
   std::string name;
   glm::vec3 eye{0.0f};
@@ -133,7 +142,8 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Texture> textures;
   std::vector<Light> lights;
-  std::vector<Camera> cameras;  // the first one is the default
+  std::vector<DirectionalLight> directionalLights;  // at most gpu::kMaxDirectionalLights
+  std::vector<Camera> cameras;                      // the first one is the default
   // Where a particle emitter sits, when the scene has one (the default scene's smoke source).
   std::optional<glm::vec3> smokeSource;
 

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include "scene/builtin_scenes.h"
@@ -62,6 +64,50 @@ void addIndirectLight(Scene& scene, const SceneRequest& request, std::vector<std
   scene.lights.insert(scene.lights.end(), vpls.begin(), vpls.end());
 }
 
+// "x,y,z,lux[,r,g,b]" as --sun takes it.
+DirectionalLight parseSun(const std::string& text) {
+  std::vector<float> values;
+  size_t begin = 0;
+  while (begin <= text.size()) {
+    const size_t end = std::min(text.find(',', begin), text.size());
+    const std::string field = text.substr(begin, end - begin);
+    char* stop = nullptr;
+    const float value = std::strtof(field.c_str(), &stop);
+    if (field.empty() || stop != field.c_str() + field.size() || !std::isfinite(value))
+      throw InputError(fmt::format("--sun {}: '{}' is not a finite number", text, field));
+    values.push_back(value);
+    begin = end + 1;
+  }
+  if (values.size() != 4 && values.size() != 7)
+    throw InputError(fmt::format("--sun {}: expected x,y,z,lux or x,y,z,lux,r,g,b ({} numbers given)", text,
+                                 values.size()));
+  const glm::vec3 towards(values[0], values[1], values[2]);
+  if (!(glm::length(towards) > 1e-6f))
+    throw InputError(fmt::format("--sun {}: the direction towards the sun has no length", text));
+  DirectionalLight sun;
+  sun.name = "--sun " + text;
+  sun.direction = -glm::normalize(towards);
+  sun.illuminance = values[3];
+  if (!(sun.illuminance >= 0.0f && sun.illuminance <= kMaxLightIntensity))
+    throw InputError(fmt::format("--sun {}: illuminance {} lux is outside [0, {:g}]", text, values[3],
+                                 kMaxLightIntensity));
+  if (values.size() == 7) {
+    sun.color = glm::vec3(values[4], values[5], values[6]);
+    if (glm::any(glm::lessThan(sun.color, glm::vec3(0.0f))) ||
+        glm::any(glm::greaterThan(sun.color, glm::vec3(1.0f))))
+      throw InputError(fmt::format("--sun {}: colour components must lie in [0, 1]", text));
+  }
+  return sun;
+}
+
+void addSuns(Scene& scene, const std::vector<std::string>& suns) {
+  for (const std::string& text : suns) scene.directionalLights.push_back(parseSun(text));
+  if (scene.directionalLights.size() > gpu::kMaxDirectionalLights)
+    throw InputError(
+        fmt::format("--sun: the scene would have {} directional lights; at most {} are supported",
+                    scene.directionalLights.size(), gpu::kMaxDirectionalLights));
+}
+
 }  // namespace
 
 Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings, IndirectLightReport* gi) {
@@ -108,6 +154,7 @@ Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings,
       scene.lights[i].intensity *= intensityScale;
     }
   }
+  addSuns(scene, request.suns);
   if (request.gi.mode != "none") addIndirectLight(scene, request, warnings, gi);
   return scene;
 }

@@ -34,6 +34,9 @@ struct SceneRequest {
   // of its range is unchanged (the density study: more, smaller lights, the same exposure).
   bool scaleIntensityWithRange = false;
   GiRequest gi;
+  // --sun "x,y,z,lux[,r,g,b]": directional lights added to the scene's own; x,y,z point towards the
+  // sun (the light travels the other way), lux its illuminance, r,g,b its linear colour (white).
+  std::vector<std::string> suns;
   bool operator==(const SceneRequest&) const = default;
 };
 

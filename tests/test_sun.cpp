@@ -1,0 +1,81 @@
+// The sun (directional lights: KHR_lights_punctual "directional" or --sun): it reaches every pixel
+// through the frame's uniforms, never a light list, so every technique must light surfaces, glass
+// and smoke with it exactly as forward does. (The analytic plane is in test_analytic.cpp; the
+// glTF light in test_gltf_loader.cpp; its photons in test_gi.cpp.)
+#include <gtest/gtest.h>
+
+#include "particle_test_support.h"
+#include "scene/errors.h"
+#include "test_support.h"
+
+namespace lll {
+namespace {
+
+// Low in the sky over the courtyard's long axis, warm.
+const char* const kSun = "0.4,0.6,0.25,2,1,0.9,0.75";
+
+Scene sunlitAtrium() {
+  SceneRequest request{"atrium", 0, 1};
+  request.suns = {kSun};
+  return loadScene(request);
+}
+
+TEST(Sun, EveryTechniqueMatchesForward) {
+  const Scene scene = sunlitAtrium();
+  ASSERT_EQ(scene.directionalLights.size(), 1u);
+  RenderSettings settings;
+  settings.width = 128;
+  settings.height = 72;
+  const test::Rendered reference = test::render(scene, test::reference(settings));
+  // The sun is in the picture: without it the courtyard differs.
+  const test::Rendered sunless =
+      test::render(loadScene(SceneRequest{"atrium", 0, 1}), test::reference(settings));
+  EXPECT_LT(test::psnr(sunless.ldr, reference.ldr), 30.0);
+  for (const char* technique : {"forward", "lll", "tiled", "clustered", "deferred", "prepass"}) {
+    settings.technique = technique;
+    const test::ImageBound bound = settings.technique == "prepass" ? test::kPrepassBound : test::kSameImage;
+    test::expectWithinBound(test::render(scene, settings).ldr, reference.ldr, bound,
+                            std::string("sunlit atrium ") + technique);
+  }
+}
+
+// Smoke scatters the sun as it scatters a point light (particles/scattering.glsl), per pixel and
+// once per particle.
+TEST(Sun, LightsTheSmokeAsForwardDoes) {
+  const Scene scene = sunlitAtrium();
+  for (const char* lighting : {"pixel", "vertex"}) {
+    RenderSettings settings;
+    settings.width = 128;
+    settings.height = 72;
+    settings.particles = "smoke";
+    settings.particleCount = 1024;
+    settings.particleLighting = lighting;
+    const test::ParticleFrame forward =
+        test::renderParticles(scene, test::reference(settings), test::kSmokeSteps);
+    settings.technique = "lll";
+    const test::ParticleFrame lll = test::renderParticles(scene, settings, test::kSmokeSteps);
+    test::expectWithinBound(lll.image.ldr, forward.image.ldr, test::kSmokeBound,
+                            std::string("sunlit smoke ") + lighting + "-lit");
+  }
+}
+
+// --sun is checked like every other option.
+TEST(Sun, BadSunOptionsAreRefused) {
+  for (const char* bad :
+       {"0,0,0,1", "0,1,0", "0,1,0,-1", "0,1,0,1,2,0,0", "0,1,x,1", "0,1,0,inf", "0,1,0,1,1"}) {
+    SceneRequest request{"plane", 0, 1};
+    request.suns = {bad};
+    try {
+      loadScene(request);
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+    }
+  }
+  SceneRequest tooMany{"plane", 0, 1};
+  tooMany.suns.assign(gpu::kMaxDirectionalLights + 1, "0,1,0,1");
+  EXPECT_THROW(loadScene(tooMany), InputError);
+}
+
+}  // namespace
+}  // namespace lll
