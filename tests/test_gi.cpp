@@ -11,6 +11,7 @@
 #include "gi/path_tracer.h"
 #include "gi/photons.h"
 #include "gi/ray_scene.h"
+#include "render/image_compare.h"
 #include "scene/builtin_gi_scenes.h"
 #include "test_support.h"
 
@@ -253,25 +254,21 @@ TEST(Gi, EveryTechniqueMatchesForwardWithTheSameVpls) {
   }
 }
 
-// Relative RMS difference of two radiance images over RGB, compared in blocks of `block` x `block`
-// pixels: the reference's per-pixel noise (13% at 1,024 samples in the Cornell room) would hide the
-// VPLs' error, which varies slowly across the image; a 6x6 block's mean has a sixth of it.
-double relativeError(const HdrImage& image, const gi::RadianceImage& reference, uint32_t block) {
-  double difference = 0.0, magnitude = 0.0;
-  for (uint32_t by = 0; by + block <= reference.height; by += block) {
-    for (uint32_t bx = 0; bx + block <= reference.width; bx += block) {
-      glm::dvec3 got(0.0), want(0.0);
-      for (uint32_t y = by; y < by + block; ++y) {
-        for (uint32_t x = bx; x < bx + block; ++x) {
-          got += glm::dvec3(glm::vec3(image.at(x, y)));
-          want += glm::dvec3(reference.at(x, y));
-        }
-      }
-      difference += glm::dot(got - want, got - want);
-      magnitude += glm::dot(want, want);
-    }
-  }
-  return std::sqrt(difference / magnitude);
+// The block error: 0 for the same image, exactly the scale for a scaled one, and blind to noise
+// that averages out inside a block (as a reference's does, nearly).
+TEST(Gi, RelativeBlockErrorMeasuresWhatBlocksShow) {
+  std::vector<glm::vec3> rgb(8 * 4);
+  for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = glm::vec3(1.0f + 0.1f * float(i % 5), 0.5f, 0.25f);
+  const HdrImage reference = HdrImage::fromRgb(8, 4, rgb);
+  EXPECT_DOUBLE_EQ(relativeBlockError(reference, reference, 4), 0.0);
+  std::vector<glm::vec3> scaled = rgb, noisy = rgb;
+  for (glm::vec3& c : scaled) c *= 1.1f;
+  for (size_t i = 0; i < noisy.size(); ++i)
+    noisy[i] += glm::vec3((i % 2 == 0) ? 0.2f : -0.2f);  // +- in every row
+  EXPECT_NEAR(relativeBlockError(HdrImage::fromRgb(8, 4, scaled), reference, 4), 0.1, 1e-6);
+  EXPECT_NEAR(relativeBlockError(HdrImage::fromRgb(8, 4, noisy), reference, 2), 0.0, 1e-6);
+  EXPECT_GT(relativeBlockError(HdrImage::fromRgb(8, 4, noisy), reference, 1), 0.1);
+  EXPECT_THROW(relativeBlockError(reference, reference, 5), std::invalid_argument);
 }
 
 // Instant radiosity converges to the path-traced indirect light as the VPLs grow in number: in the
@@ -296,7 +293,11 @@ TEST(Gi, ErrorAgainstTheReferenceFallsAsTheVplCountRises) {
     request.gi.mode = "vpl-only";
     request.gi.vplCount = count;
     request.gi.vplCutoff = 1e-6f;  // every VPL reaches the whole room: only their number varies
-    const double error = relativeError(test::render(loadScene(request), settings).hdr, reference, 6);
+    // 6x6-pixel blocks: the reference's per-pixel noise (13% at 1,024 samples) would hide the VPLs'
+    // error, which varies slowly across the image; a block's mean has a sixth of it.
+    const double error =
+        relativeBlockError(test::render(loadScene(request), settings).hdr,
+                           HdrImage::fromRgb(reference.width, reference.height, reference.rgb), 6);
     std::printf("[ gi ] cornell, %u VPLs: %.4f relative RMS error against the path-traced reference\n", count,
                 error);
     EXPECT_LT(error, previous) << count << " VPLs";

@@ -197,31 +197,35 @@ TEST(GiReference, SameSeedSameImageWithOneOrTwoThreads) {
 }
 
 HdrImage toHdr(const gi::RadianceImage& image) {
-  HdrImage hdr{image.width, image.height, std::vector<float>(image.rgb.size() * 4, 1.0f)};
-  for (size_t i = 0; i < image.rgb.size(); ++i) std::copy_n(&image.rgb[i].x, 3, &hdr.rgba[i * 4]);
-  return hdr;
+  return HdrImage::fromRgb(image.width, image.height, image.rgb);
 }
 
-// Direct light only, one sample at each pixel centre: the renderer's forward shading without
-// ambient, through the CPU twin of its tonemap. The Cornell room has no occluder in the spot's
-// cone, so the shadow rays change nothing; where pixels differ, a rasterized edge went the other way.
-TEST(GiReference, DirectLightAndTonemapMatchTheRenderer) {
-  const Scene scene = builtin::makeCornell();
+// Renders `scene` with forward (no ambient) and the reference's direct light (one sample at each
+// pixel centre, no bounce), and compares them through the CPU twin of the tonemap.
+test::Rendered expectDirectLightMatchesForward(const Scene& scene, float exposure,
+                                               const test::ImageBound& bound, const std::string& label) {
   RenderSettings settings = test::reference({});
   settings.width = 64;
   settings.height = 48;
   settings.ambient = 0.0f;
-  settings.exposure = 2.0f;
+  settings.exposure = exposure;
   const test::Rendered rendered = test::render(scene, settings);
   gi::ReferenceOptions options;
   options.bounces = 0;
   options.spp = 1;
   const gi::RadianceImage image = renderBuiltin(scene, "", options, settings.width, settings.height);
-  test::expectWithinBound(tonemapFilmic(toHdr(image), settings.exposure), rendered.ldr, test::kRasterBound,
-                          "reference direct cornell");
+  test::expectWithinBound(tonemapFilmic(toHdr(image), exposure), rendered.ldr, bound, label);
+  return rendered;
+}
+
+// The Cornell room has no occluder in the spot's cone, so the shadow rays change nothing; where
+// pixels differ, a rasterized edge went the other way.
+TEST(GiReference, DirectLightAndTonemapMatchTheRenderer) {
+  const test::Rendered rendered = expectDirectLightMatchesForward(
+      builtin::makeCornell(), 2.0f, test::kRasterBound, "reference direct cornell");
   // The tonemap alone, on the renderer's own radiance: the same bytes up to rounding.
-  test::expectWithinBound(tonemapFilmic(rendered.hdr, settings.exposure), rendered.ldr,
-                          test::ImageBound{60.0, 1, 1.0, 1}, "tonemap cpu");
+  test::expectWithinBound(tonemapFilmic(rendered.hdr, 2.0f), rendered.ldr, test::ImageBound{60.0, 1, 1.0, 1},
+                          "tonemap cpu");
 }
 
 // The sun in the reference: the plane under a directional light 40 degrees off the zenith gives
@@ -233,17 +237,7 @@ TEST(GiReference, SunMatchesTheRenderer) {
   sun.direction = -glm::normalize(glm::vec3(0.6f, 1.0f, 0.3f));
   sun.illuminance = 1.5f;
   scene.directionalLights = {sun};
-  RenderSettings settings = test::reference({});
-  settings.width = 64;
-  settings.height = 48;
-  settings.ambient = 0.0f;
-  const test::Rendered rendered = test::render(scene, settings);
-  gi::ReferenceOptions options;
-  options.bounces = 0;
-  options.spp = 1;
-  const gi::RadianceImage image = renderBuiltin(scene, "", options, settings.width, settings.height);
-  test::expectWithinBound(tonemapFilmic(toHdr(image), settings.exposure), rendered.ldr, test::kSameImage,
-                          "reference sun plane");
+  expectDirectLightMatchesForward(scene, 1.0f, test::kSameImage, "reference sun plane");
 }
 
 class GiReferenceCli : public test::CliTest {};

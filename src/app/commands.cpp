@@ -84,12 +84,6 @@ class SlowWorkProgress {
   std::optional<size_t> shown_;
 };
 
-HdrImage toHdrImage(const gi::RadianceImage& image) {
-  HdrImage hdr{image.width, image.height, std::vector<float>(image.rgb.size() * 4, 1.0f)};
-  for (size_t i = 0; i < image.rgb.size(); ++i) std::copy_n(&image.rgb[i].x, 3, &hdr.rgba[i * 4]);
-  return hdr;
-}
-
 bool emitsLight(const Light& light) {
   return light.type != LightType::Vpl && light.intensity > 0.0f;
 }
@@ -165,7 +159,8 @@ int runReference(const ReferenceJob& job) {
   SlowWorkProgress progress(fmt::format("{}x{}, {} spp", job.width, job.height, job.options.spp));
   gi::ReferenceOptions options = job.options;
   options.progress = [&](double fraction) { progress.update(fraction); };
-  const HdrImage hdr = toHdrImage(gi::renderReference(scene, camera, job.width, job.height, options));
+  const gi::RadianceImage radiance = gi::renderReference(scene, camera, job.width, job.height, options);
+  const HdrImage hdr = HdrImage::fromRgb(radiance.width, radiance.height, radiance.rgb);
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 

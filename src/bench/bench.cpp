@@ -17,6 +17,7 @@
 #include "gi/path_tracer.h"
 #include "lighting/technique.h"
 #include "particles/presets.h"
+#include "render/image_compare.h"
 #include "render/renderer.h"
 #include "scene/errors.h"
 
@@ -95,27 +96,12 @@ class ReferenceCache {
   std::map<std::string, gi::RadianceImage> images_;
 };
 
-// Relative RMS difference over RGB of 8x8-pixel block means: the reference's per-pixel noise (about
-// 9% at 2,048 samples in the Cornell room) averages down to ~1% in a block, while the VPLs' error
-// varies slowly across the image.
-double blockError(const HdrImage& image, const gi::RadianceImage& reference) {
-  constexpr uint32_t kBlock = 8;
-  const uint32_t block = std::min({kBlock, reference.width, reference.height});
-  double difference = 0.0, magnitude = 0.0;
-  for (uint32_t by = 0; by + block <= reference.height; by += block) {
-    for (uint32_t bx = 0; bx + block <= reference.width; bx += block) {
-      glm::dvec3 got(0.0), want(0.0);
-      for (uint32_t y = by; y < by + block; ++y) {
-        for (uint32_t x = bx; x < bx + block; ++x) {
-          got += glm::dvec3(glm::vec3(image.at(x, y)));
-          want += glm::dvec3(reference.at(x, y));
-        }
-      }
-      difference += glm::dot(got - want, got - want);
-      magnitude += glm::dot(want, want);
-    }
-  }
-  return magnitude > 0.0 ? std::sqrt(difference / magnitude) : 0.0;
+// gi-error compares 8x8-pixel block means: the reference's per-pixel noise (about 9% at 2,048
+// samples in the Cornell room) averages down to ~1% in a block.
+constexpr uint32_t kReferenceErrorBlock = 8;
+
+HdrImage referenceImage(const gi::RadianceImage& image) {
+  return HdrImage::fromRgb(image.width, image.height, image.rgb);
 }
 
 struct Caches {
@@ -193,7 +179,9 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
   if (s.compareWithReference)
     r.techniqueStats.emplace_back(
         "gi-error-vs-reference",
-        blockError(renderer.hdrImage(), caches.references.get(s, renderer.camera(), caches.quick)));
+        relativeBlockError(renderer.hdrImage(),
+                           referenceImage(caches.references.get(s, renderer.camera(), caches.quick)),
+                           std::min({kReferenceErrorBlock, s.settings.width, s.settings.height})));
   return m;
 }
 

@@ -117,6 +117,18 @@ std::vector<Scenario> scalingSuite(const SuiteOptions& options) {
   return out;
 }
 
+// Leaves out, with the reason, what takes seconds a frame over `lights` lights: brute force and
+// the light-volume techniques (one draw per light, placed on the CPU) past kDensityVolumeLimit, and
+// forward on a CPU device past kForwardLightLimitOnCpu unless --full-forward.
+void skipWhereTooSlow(Scenario& s, uint32_t lights, const SuiteOptions& options) {
+  const std::string& t = s.settings.technique;
+  if ((t == "forward" || t == "deferred" || t == "prepass") && lights > kDensityVolumeLimit)
+    s.skip = fmt::format("{} over {} lights takes seconds per frame", t, kDensityVolumeLimit);
+  else if (t == "forward" && lights > kForwardLightLimitOnCpu && options.cpuDevice && !options.fullForward)
+    s.skip = fmt::format("forward over {} lights on a CPU device takes hours; --full-forward runs it",
+                         kForwardLightLimitOnCpu);
+}
+
 // The million-light question (issue 13): N random lights at constant density, their ranges scaled
 // by (1024 / N)^(1/3) and intensities by its square, so each pixel meets about as many lights, as
 // bright, at every N. Every technique runs where it finishes in reasonable time: brute force and the
@@ -133,13 +145,7 @@ std::vector<Scenario> densitySuite(const SuiteOptions& options) {
     scene.scaleIntensityWithRange = true;
     const Scenario base = makeScenario("density", fmt::format("{} lights", lights), scene, size);
     for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
-      const std::string& t = s.settings.technique;
-      if ((t == "forward" || t == "deferred" || t == "prepass") && lights > kDensityVolumeLimit)
-        s.skip = fmt::format("{} over {} lights takes seconds per frame", t, kDensityVolumeLimit);
-      else if (t == "forward" && lights > kForwardLightLimitOnCpu && options.cpuDevice &&
-               !options.fullForward)
-        s.skip = fmt::format("forward over {} lights on a CPU device takes hours; --full-forward runs it",
-                             kForwardLightLimitOnCpu);
+      skipWhereTooSlow(s, lights, options);
       out.push_back(s);
     }
   }
@@ -201,6 +207,18 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
 // Instant radiosity (issue 15): the atrium lit by its VPLs alone (--gi vpl-only), 512 to a million
 // (5,144 is Infinity's figure), at the default cutoff (each VPL reaches far: quality) and at 0.05
 // (short ranges: speed), by every technique that finishes.
+// A scene lit by its VPLs alone: `vpls` of them from about 1.5 times as many deposits.
+SceneRequest vplScene(const char* scene, uint32_t vpls, float cutoff, float range,
+                      const SuiteOptions& options) {
+  SceneRequest request{scene, 0, 1};
+  request.gi.mode = "vpl-only";
+  request.gi.vplCount = vpls;
+  request.gi.photons = options.quick ? 20000 : std::max(100000u, 3 * vpls);  // ~2 deposits a photon
+  request.gi.vplCutoff = cutoff;
+  request.gi.vplRange = range;
+  return request;
+}
+
 std::vector<Scenario> giSuite(const SuiteOptions& options) {
   const std::vector<uint32_t> counts =
       options.quick ? std::vector<uint32_t>{64, 512} : std::vector<uint32_t>{512, 5144, 65536, 1048576};
@@ -208,21 +226,11 @@ std::vector<Scenario> giSuite(const SuiteOptions& options) {
   std::vector<Scenario> out;
   for (const float cutoff : {gi::kDefaultVplCutoff, kGiShortCutoff}) {
     for (const uint32_t vpls : counts) {
-      SceneRequest scene{kDefaultSceneName, 0, 1};
-      scene.gi.mode = "vpl-only";
-      scene.gi.vplCount = vpls;
-      scene.gi.photons = options.quick ? 20000 : std::max(100000u, 3 * vpls);  // ~2 deposits a photon
-      scene.gi.vplCutoff = cutoff;
-      const Scenario base = makeScenario("gi", fmt::format("{} VPLs, cutoff {}", vpls, cutoff), scene, size);
+      const Scenario base = makeScenario("gi", fmt::format("{} VPLs, cutoff {}", vpls, cutoff),
+                                         vplScene(kDefaultSceneName, vpls, cutoff, 0.0f, options), size);
       for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
-        const std::string& t = s.settings.technique;
         s.series = fmt::format("{}, cutoff {}", techniqueLabel(s.settings), cutoff);
-        if ((t == "forward" || t == "deferred" || t == "prepass") && vpls > kDensityVolumeLimit)
-          s.skip = fmt::format("{} over {} lights takes seconds per frame", t, kDensityVolumeLimit);
-        else if (t == "forward" && vpls > kForwardLightLimitOnCpu && options.cpuDevice &&
-                 !options.fullForward)
-          s.skip = fmt::format("forward over {} lights on a CPU device takes hours; --full-forward runs it",
-                               kForwardLightLimitOnCpu);
+        skipWhereTooSlow(s, vpls, options);
         out.push_back(s);
       }
     }
@@ -250,13 +258,8 @@ std::vector<Scenario> giErrorSuite(const SuiteOptions& options) {
                            {gi::kDefaultVplCutoff, 8.0f, "range 8 m"}};
   for (const Reach& reach : reaches) {
     for (const uint32_t vpls : counts) {
-      SceneRequest scene{"cornell", 0, 1};
-      scene.gi.mode = "vpl-only";
-      scene.gi.vplCount = vpls;
-      scene.gi.photons = options.quick ? 20000 : std::max(100000u, 3 * vpls);
-      scene.gi.vplCutoff = reach.cutoff;
-      scene.gi.vplRange = reach.range;
-      Scenario s = makeScenario("gi-error", fmt::format("{} VPLs, {}", vpls, reach.name), scene, size);
+      Scenario s = makeScenario("gi-error", fmt::format("{} VPLs, {}", vpls, reach.name),
+                                vplScene("cornell", vpls, reach.cutoff, reach.range, options), size);
       s.settings.technique = "lll";
       s.settings.ambient = 0.0f;
       s.series = reach.name;

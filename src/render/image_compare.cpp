@@ -43,4 +43,26 @@ ImageDifference compareImages(const LdrImage& candidate, const LdrImage& referen
   return d;
 }
 
+double relativeBlockError(const HdrImage& candidate, const HdrImage& reference, uint32_t block) {
+  if (candidate.width != reference.width || candidate.height != reference.height)
+    throw std::invalid_argument("relativeBlockError: the images differ in size");
+  if (block == 0 || block > reference.width || block > reference.height)
+    throw std::invalid_argument("relativeBlockError: no block fits in the image");
+  double difference = 0.0, magnitude = 0.0;
+  for (uint32_t by = 0; by + block <= reference.height; by += block) {
+    for (uint32_t bx = 0; bx + block <= reference.width; bx += block) {
+      glm::dvec3 got(0.0), want(0.0);
+      for (uint32_t y = by; y < by + block; ++y) {
+        for (uint32_t x = bx; x < bx + block; ++x) {
+          got += glm::dvec3(glm::vec3(candidate.at(x, y)));
+          want += glm::dvec3(glm::vec3(reference.at(x, y)));
+        }
+      }
+      difference += glm::dot(got - want, got - want);
+      magnitude += glm::dot(want, want);
+    }
+  }
+  return magnitude > 0.0 ? std::sqrt(difference / magnitude) : 0.0;
+}
+
 }  // namespace lll

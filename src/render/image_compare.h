@@ -20,4 +20,11 @@ struct ImageDifference {
 // Throws std::invalid_argument when the two images differ in size.
 ImageDifference compareImages(const LdrImage& candidate, const LdrImage& reference, int typical = 2);
 
+// Relative RMS difference over RGB of two radiance images compared as means of `block` x `block`
+// pixels (partial blocks at the right and bottom edges left out): against a noisy reference (the
+// path tracer's) the block averages its per-pixel noise down, while an approximation's error
+// (instant radiosity's) varies slowly across the image. Throws std::invalid_argument when the
+// images differ in size or no block fits.
+double relativeBlockError(const HdrImage& candidate, const HdrImage& reference, uint32_t block);
+
 }  // namespace lll

@@ -2,6 +2,7 @@
 // The frame: upload the scene once, then per frame a short list of named, GPU-timed passes:
 //   depth-prepass -> (particles: simulate, sort, indirect) -> the technique's passes (drawing the
 //   particles after its glass) -> tonemap (-> readback when captured).
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -26,6 +27,12 @@ struct HdrImage {
   glm::vec4 at(uint32_t x, uint32_t y) const {
     const float* p = &rgba[(size_t(y) * width + x) * 4];
     return {p[0], p[1], p[2], p[3]};
+  }
+  // From linear RGB, alpha 1: radiance made on the CPU (the path-traced reference).
+  static HdrImage fromRgb(uint32_t width, uint32_t height, const std::vector<glm::vec3>& rgb) {
+    HdrImage image{width, height, std::vector<float>(rgb.size() * 4, 1.0f)};
+    for (size_t i = 0; i < rgb.size(); ++i) std::copy_n(&rgb[i].x, 3, &image.rgba[i * 4]);
+    return image;
   }
 };
 
