@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "cli_test_support.h"
+#include "gi/brdf.h"
 #include "gi/path_tracer.h"
 #include "gi/photons.h"
 #include "gi/ray_scene.h"
@@ -129,7 +130,7 @@ TEST(Photons, MergeMeetsTheTargetAndKeepsTheFlux) {
   const gi::PhotonStats s = traceOnly(scene, options, &deposits);
   for (uint32_t target : {64u, 512u, 4096u}) {
     gi::PhotonStats merged;
-    const std::vector<Light> vpls = gi::mergeDeposits(deposits, target, 0.01f, 1e-6f, &merged);
+    const std::vector<Light> vpls = gi::mergeDeposits(deposits, target, 0.01f, {1e-6f}, &merged);
     EXPECT_LE(vpls.size(), target);
     EXPECT_GT(vpls.size(), target / 2) << "the cell edge is the smallest that meets the target, within 1%";
     glm::vec3 flux(0.0f);
@@ -154,12 +155,8 @@ glm::vec3 vplIrradiance(const std::vector<Light>& vpls, const glm::vec3& p, cons
   for (const Light& v : vpls) {
     const glm::vec3 toLight = v.position - p;
     const float d = glm::length(toLight);
-    if (d >= v.range) continue;
     const glm::vec3 l = toLight / d;
-    const float dc = std::max(d, v.nearDistance);
-    const float w = std::clamp(1.0f - std::pow(dc / v.range, 4.0f), 0.0f, 1.0f);
-    sum += v.color * v.intensity * (w * w / (dc * dc)) * std::max(glm::dot(v.direction, -l), 0.0f) *
-           std::max(glm::dot(n, l), 0.0f);
+    sum += v.color * v.intensity * gi::lightAttenuation(v, l, d) * std::max(glm::dot(n, l), 0.0f);
   }
   return sum;
 }

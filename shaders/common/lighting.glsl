@@ -22,8 +22,7 @@ vec3 lightSurface(Surface s, uvec2 pixel, float viewDepth) {
 // Everything that leaves `s` towards the eye: ambient, emission and the lights, or the debug view
 // that replaces them (`replaced`: shown as is, glass included).
 vec3 shadePixel(Surface s, uvec2 pixel, float viewDepth, out bool replaced) {
-  return lightingView(s, pixel, viewDepth, unlistedLight(s) + lightSurface(s, pixel, viewDepth),
-                      replaced);
+  return lightingView(s, pixel, viewDepth, unlistedLight(s) + lightSurface(s, pixel, viewDepth), replaced);
 }
 
 #endif

@@ -30,8 +30,8 @@ struct FrameUniforms {
   vec4 depthParams;     // near, far, tan(fovy/2) * aspect, tan(fovy/2)
   uvec4 counts;         // x light count, y tile size, z tiles x, w tiles y
   vec4 ambient;         // rgb constant ambient radiance, w exposure
-  uvec4 display;  // x kDisplayFilmic or kDisplayDebug (skips the filmic curve), y heatmap scale,
-                  // z directional lights in use, w unused
+  uvec4 display;        // x kDisplayFilmic or kDisplayDebug (skips the filmic curve), y heatmap scale,
+                        // z directional lights in use, w unused
   vec4 sunDirection[kMaxDirectionalLights];    // xyz unit, towards the light; w unused
   vec4 sunIlluminance[kMaxDirectionalLights];  // rgb colour x illuminance (lux); w unused
 };

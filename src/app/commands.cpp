@@ -2,19 +2,17 @@
 
 #include <fmt/format.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <optional>
 #include <vector>
 
 #include "bench/progress.h"
+#include "gi/light_falloff.h"
 #include "lighting/lll_memory.h"
 #include "lighting/technique.h"
 #include "particles/particle_setup.h"
@@ -84,10 +82,6 @@ class SlowWorkProgress {
   std::optional<size_t> shown_;
 };
 
-bool emitsLight(const Light& light) {
-  return light.type != LightType::Vpl && light.intensity > 0.0f;
-}
-
 void printIndirectLight(const GiRequest& request, const gi::PhotonStats& s) {
   fmt::print(stderr,
              "lll: gi {}: {} photons, {} bounces at most: {} deposits in {:.1f} ms; {} virtual point lights "
@@ -106,10 +100,10 @@ int runRender(const RenderJob& job) {
   addOutput(outputs, "--stats", job.outStats, {});
   std::vector<std::string> warnings;
   IndirectLightReport gi;
-  auto photonProgress = std::make_shared<SlowWorkProgress>("tracing photons");
-  if (job.scene.gi.mode != "none") gi.progress = [photonProgress](double f) { photonProgress->update(f); };
+  SlowWorkProgress photonProgress("tracing photons");
+  if (job.scene.gi.mode != "none") gi.progress = [&](double f) { photonProgress.update(f); };
   const Scene scene = loadScene(job.scene, &warnings, &gi);
-  photonProgress->finish();
+  photonProgress.finish();
   for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
   if (job.scene.gi.mode != "none") printIndirectLight(job.scene.gi, gi.stats);
   particleOptions(scene, job.settings);  // a bad preset fails before Vulkan starts
@@ -151,8 +145,10 @@ int runReference(const ReferenceJob& job) {
   const Scene scene = loadScene(job.scene, &warnings);
   for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
   const Camera camera = resolveCamera(scene, job.camera);
-  if (std::none_of(scene.lights.begin(), scene.lights.end(), emitsLight))
-    fmt::print(stderr, "lll: warning: scene '{}' has no point, spot or box light: the image is black\n",
+  if (scene.directionalLights.empty() &&
+      std::none_of(scene.lights.begin(), scene.lights.end(), gi::emitsLight))
+    fmt::print(stderr,
+               "lll: warning: scene '{}' has no point, spot, box or directional light: the image is black\n",
                scene.name);
 
   const auto begin = std::chrono::steady_clock::now();

@@ -73,7 +73,7 @@ class SceneCache {
 // bounce count: 2,048 samples per pixel (64 with --quick) on every CPU core.
 class ReferenceCache {
  public:
-  const gi::RadianceImage& get(const Scenario& s, const Camera& camera, bool quick) {
+  const HdrImage& get(const Scenario& s, const Camera& camera, bool quick) {
     SceneRequest direct = s.scene;
     direct.gi = GiRequest{};
     const std::string key = fmt::format("{}\n{}\n{}x{}\n{}", s.scene.scene, camera.name, s.settings.width,
@@ -84,25 +84,20 @@ class ReferenceCache {
       options.spp = quick ? 64 : 2048;
       options.bounces = s.scene.gi.bounces;
       options.indirectOnly = true;
-      it = images_
-               .emplace(key, gi::renderReference(loadScene(direct), camera, s.settings.width,
-                                                 s.settings.height, options))
-               .first;
+      const gi::RadianceImage image =
+          gi::renderReference(loadScene(direct), camera, s.settings.width, s.settings.height, options);
+      it = images_.emplace(key, HdrImage::fromRgb(image.width, image.height, image.rgb)).first;
     }
     return it->second;
   }
 
  private:
-  std::map<std::string, gi::RadianceImage> images_;
+  std::map<std::string, HdrImage> images_;
 };
 
 // gi-error compares 8x8-pixel block means: the reference's per-pixel noise (about 9% at 2,048
 // samples in the Cornell room) averages down to ~1% in a block.
 constexpr uint32_t kReferenceErrorBlock = 8;
-
-HdrImage referenceImage(const gi::RadianceImage& image) {
-  return HdrImage::fromRgb(image.width, image.height, image.rgb);
-}
 
 struct Caches {
   SceneCache scenes;
@@ -179,8 +174,7 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
   if (s.compareWithReference)
     r.techniqueStats.emplace_back(
         "gi-error-vs-reference",
-        relativeBlockError(renderer.hdrImage(),
-                           referenceImage(caches.references.get(s, renderer.camera(), caches.quick)),
+        relativeBlockError(renderer.hdrImage(), caches.references.get(s, renderer.camera(), caches.quick),
                            std::min({kReferenceErrorBlock, s.settings.width, s.settings.height})));
   return m;
 }

@@ -52,7 +52,12 @@ glm::vec3 brdfCosine(const BrdfSurface& s, const glm::vec3& l) {
 }
 
 float lightAttenuation(const Light& light, const glm::vec3& l, float distance) {
-  if (light.type == LightType::Vpl || !(distance < light.range)) return 0.0f;
+  if (!(distance < light.range)) return 0.0f;
+  if (light.type == LightType::Vpl) {
+    const float clamped = std::max(distance, light.nearDistance);
+    return rangeWindow(clamped, light.range) / std::max(clamped * clamped, 1e-4f) *
+           std::max(glm::dot(light.direction, -l), 0.0f);
+  }
   const float inverseSquare = 1.0f / std::max(distance * distance, 1e-4f);
   if (light.type == LightType::Box) return boxWindow(light, -l * distance) * inverseSquare;
   const float spot = light.type == LightType::Spot

@@ -5,11 +5,10 @@
 // so that the reference differs from the renderer only in what it adds (shadows, indirect light).
 #include <glm/glm.hpp>
 
+#include "gi/sampling.h"
 #include "scene/scene.h"
 
 namespace lll::gi {
-
-inline constexpr float kPi = 3.14159265358979f;
 
 struct BrdfSurface {
   glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit, on the viewer's side
@@ -24,8 +23,8 @@ glm::vec3 brdfCosine(const BrdfSurface& s, const glm::vec3& l);
 
 // How much of a light's intensity reaches a point `distance` away from it, `l` the unit direction
 // from the point to the light: inverse square times the light's window (range sphere, spot cone or
-// box), zero at and beyond its range. Virtual point lights are not evaluated here (the reference
-// does not take them as input): their attenuation is 0.
+// box, or a VPL's cosine about its normal with 1/d^2 clamped at its near distance), zero at and
+// beyond its range.
 float lightAttenuation(const Light& light, const glm::vec3& l, float distance);
 
 }  // namespace lll::gi

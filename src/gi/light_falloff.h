@@ -6,9 +6,21 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "gi/sampling.h"
 #include "scene/scene.h"
 
 namespace lll::gi {
+
+// Whether a light sends out light of its own: VPLs only pass on what the real lights gave them.
+inline bool emitsLight(const Light& light) {
+  return light.type != LightType::Vpl && light.intensity > 0.0f;
+}
+
+// Solid angle a light shines into: the whole sphere, or a spot's outer cone.
+inline float emissionSolidAngle(const Light& light) {
+  if (light.type == LightType::Spot) return 2.0f * kPi * (1.0f - std::cos(light.outerConeAngle));
+  return 4.0f * kPi;
+}
 
 // KHR_lights_punctual's range window, the one brdf.glsl's rangeAttenuation applies.
 inline float rangeWindow(float distance, float range) {

@@ -3,16 +3,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
-#include <mutex>
 #include <optional>
-#include <thread>
 
 #include "gi/brdf.h"
+#include "gi/light_falloff.h"
 #include "gi/random.h"
 #include "gi/ray_scene.h"
+#include "gi/sampling.h"
 #include "scene/errors.h"
 
 namespace lll::gi {
@@ -64,10 +63,9 @@ LightSelection selectLights(const std::vector<Light>& all) {
   std::vector<double> power;
   double total = 0.0;
   for (const Light& light : all) {
-    if (light.type == LightType::Vpl || !(light.intensity > 0.0f)) continue;
-    const float solidAngle =
-        light.type == LightType::Spot ? 2.0f * kPi * (1.0f - std::cos(light.outerConeAngle)) : 4.0f * kPi;
-    const double p = double(light.intensity) * (light.color.r + light.color.g + light.color.b) * solidAngle;
+    if (!emitsLight(light)) continue;
+    const double p =
+        double(light.intensity) * (light.color.r + light.color.g + light.color.b) * emissionSolidAngle(light);
     if (!(p > 0.0)) continue;
     s.lights.push_back(&light);
     power.push_back(p);
@@ -82,16 +80,6 @@ LightSelection selectLights(const std::vector<Light>& all) {
   }
   s.cdf.back() = 1.0f;
   return s;
-}
-
-// A unit vector about `axis` with cosine-distributed polar angle (pdf cos / pi).
-glm::vec3 cosineAbout(const glm::vec3& axis, Random& random) {
-  const float u = random.uniform(), phi = 2.0f * kPi * random.uniform();
-  const float cosTheta = std::sqrt(1.0f - u), sinTheta = std::sqrt(u);
-  const glm::vec3 helper = std::abs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  const glm::vec3 t = glm::normalize(glm::cross(helper, axis));
-  const glm::vec3 b = glm::cross(axis, t);
-  return glm::normalize(t * (sinTheta * std::cos(phi)) + b * (sinTheta * std::sin(phi)) + axis * cosTheta);
 }
 
 // Glass crossings a ray may make before it is taken as absorbed: stacked panes, not a loop.
@@ -236,30 +224,19 @@ RadianceImage renderReference(const Scene& scene, const Camera& camera, uint32_t
   const PathTracer tracer(scene, options);
   const PixelRays pixels(camera, width, height);
   RadianceImage image{width, height, std::vector<glm::vec3>(size_t(width) * height, glm::vec3(0.0f))};
-  const uint32_t threads =
-      std::min(std::max(1u, options.threads ? options.threads : std::thread::hardware_concurrency()), height);
-  std::atomic<uint32_t> nextRow{0};
-  uint32_t rowsDone = 0;
-  std::mutex progressMutex;
-  auto work = [&] {
-    for (uint32_t y; (y = nextRow.fetch_add(1)) < height;) {
-      for (uint32_t x = 0; x < width; ++x) {
-        const size_t pixel = size_t(y) * width + x;
-        Random random(options.seed, pixel);
-        const glm::vec3 direction = pixels.direction(x, y);
-        glm::vec3 sum(0.0f);
-        for (uint32_t i = 0; i < options.spp; ++i) sum += tracer.sample(pixels.origin(), direction, random);
-        image.rgb[pixel] = sum / float(options.spp);
-      }
-      const std::lock_guard lock(progressMutex);
-      ++rowsDone;
-      if (options.progress) options.progress(double(rowsDone) / height);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (uint32_t t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  parallelFor(
+      height, options.threads,
+      [&](uint32_t y) {
+        for (uint32_t x = 0; x < width; ++x) {
+          const size_t pixel = size_t(y) * width + x;
+          Random random(options.seed, pixel);
+          const glm::vec3 direction = pixels.direction(x, y);
+          glm::vec3 sum(0.0f);
+          for (uint32_t i = 0; i < options.spp; ++i) sum += tracer.sample(pixels.origin(), direction, random);
+          image.rgb[pixel] = sum / float(options.spp);
+        }
+      },
+      options.progress);
   return image;
 }
 

@@ -1,12 +1,9 @@
 #include "gi/photons.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <execution>
-#include <mutex>
-#include <thread>
 
 #include "gi/light_falloff.h"
 #include "gi/random.h"
@@ -15,32 +12,11 @@
 namespace lll::gi {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
-
 float channelMean(const glm::vec3& c) {
   return (c.r + c.g + c.b) / 3.0f;
 }
 float luminance(const glm::vec3& c) {
   return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-}
-
-// Solid angle a light's photons leave into: the whole sphere, or a spot's outer cone.
-float emissionSolidAngle(const Light& light) {
-  if (light.type == LightType::Spot) return 2.0f * kPi * (1.0f - std::cos(light.outerConeAngle));
-  return 4.0f * kPi;
-}
-
-bool emitsPhotons(const Light& light) {
-  return light.type != LightType::Vpl && light.intensity > 0.0f;
-}
-
-// A unit vector about `axis` at polar cosine `cosTheta` and azimuth `phi`.
-glm::vec3 aroundAxis(const glm::vec3& axis, float cosTheta, float phi) {
-  const glm::vec3 helper = std::abs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  const glm::vec3 t = glm::normalize(glm::cross(helper, axis));
-  const glm::vec3 b = glm::cross(axis, t);
-  const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
-  return glm::normalize(t * (sinTheta * std::cos(phi)) + b * (sinTheta * std::sin(phi)) + axis * cosTheta);
 }
 
 // A photon source: a punctual light, or a directional one shining through a disk that covers the
@@ -67,7 +43,7 @@ Emitters chooseEmitters(const Scene& scene) {
   }
   std::vector<double> power;
   for (const Light& light : scene.lights) {
-    if (!emitsPhotons(light)) continue;
+    if (!emitsLight(light)) continue;
     power.push_back(double(light.intensity) * channelMean(light.color) * emissionSolidAngle(light));
     e.sources.push_back({&light, nullptr});
   }
@@ -120,8 +96,8 @@ Emission emitFromLight(const Light& light, float share, Random& random) {
 
 Emission emitFromSun(const DirectionalLight& sun, const Emitters& emitters, float share, Random& random) {
   const glm::vec3 d = glm::normalize(sun.direction);
-  const glm::vec3 helper = std::abs(d.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  const glm::vec3 t = glm::normalize(glm::cross(helper, d)), b = glm::cross(d, t);
+  glm::vec3 t, b;
+  perpendiculars(d, t, b);
   const float r = emitters.sceneRadius * std::sqrt(random.uniform()), phi = 2.0f * kPi * random.uniform();
   Emission e;
   e.origin =
@@ -170,8 +146,7 @@ glm::vec3 tracePhoton(const RayScene& rays, const Emitters& emitters, uint32_t p
     if (random.uniform() >= survival) break;
     flux = reflected / survival;
     origin = hit->position + hit->normal * offset;
-    const float u = random.uniform();
-    direction = aroundAxis(hit->normal, std::sqrt(1.0f - u), 2.0f * kPi * random.uniform());
+    direction = cosineAbout(hit->normal, random);
   }
   return emission.flux;
 }
@@ -179,7 +154,7 @@ glm::vec3 tracePhoton(const RayScene& rays, const Emitters& emitters, uint32_t p
 }  // namespace
 
 Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& flux, float nearDistance,
-              float cutoffIrradiance) {
+              const VplReach& reach) {
   Light vpl;
   vpl.type = LightType::Vpl;
   vpl.position = position;
@@ -187,7 +162,8 @@ Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec
   const float peak = std::max({flux.r, flux.g, flux.b});
   vpl.color = peak > 0.0f ? flux / peak : glm::vec3(0.0f);
   vpl.intensity = peak / kPi;
-  vpl.range = std::max(std::sqrt(vpl.intensity / cutoffIrradiance), 2.0f * nearDistance);
+  const float range = reach.range > 0.0f ? reach.range : std::sqrt(vpl.intensity / reach.cutoffIrradiance);
+  vpl.range = std::max(range, 2.0f * nearDistance);
   vpl.nearDistance = nearDistance;
   return vpl;
 }
@@ -199,35 +175,22 @@ std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const Scene& scene
   std::vector<PhotonDeposit> deposits;
   glm::vec3 emitted(0.0f);
   if (!emitters.sources.empty() && options.photons > 0 && options.bounces > 0) {
-    const uint32_t threads =
-        std::max(1u, options.threads ? options.threads : std::thread::hardware_concurrency());
-    // Fixed chunks in photon order, each with its own output: the result does not depend on which
-    // thread took which chunk.
+    // Fixed chunks in photon order, each with its own output.
     constexpr uint32_t kChunk = 1024;
     const uint32_t chunks = (options.photons + kChunk - 1) / kChunk;
     std::vector<std::vector<PhotonDeposit>> perChunk(chunks);
     std::vector<glm::vec3> emittedPerChunk(chunks, glm::vec3(0.0f));
-    std::atomic<uint32_t> next{0};
-    uint32_t done = 0;
-    std::mutex progressMutex;
-    auto work = [&] {
-      for (uint32_t c; (c = next.fetch_add(1)) < chunks;) {
-        const uint32_t end = std::min(options.photons, (c + 1) * kChunk);
-        for (uint32_t p = c * kChunk; p < end; ++p) {
-          Random random(options.seed, p);
-          emittedPerChunk[c] +=
-              tracePhoton(rays, emitters, options.photons, options.bounces, random, perChunk[c]);
-        }
-        if (options.progress) {
-          const std::lock_guard lock(progressMutex);
-          options.progress(double(++done) / chunks);
-        }
-      }
-    };
-    std::vector<std::thread> pool;
-    for (uint32_t t = 1; t < std::min(threads, chunks); ++t) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
+    parallelFor(
+        chunks, options.threads,
+        [&](uint32_t c) {
+          const uint32_t end = std::min(options.photons, (c + 1) * kChunk);
+          for (uint32_t p = c * kChunk; p < end; ++p) {
+            Random random(options.seed, p);
+            emittedPerChunk[c] +=
+                tracePhoton(rays, emitters, options.photons, options.bounces, random, perChunk[c]);
+          }
+        },
+        options.progress);
     size_t total = 0;
     for (const auto& chunk : perChunk) total += chunk.size();
     deposits.reserve(total);
@@ -283,32 +246,15 @@ size_t countCells(const std::vector<std::pair<uint64_t, uint32_t>>& keys) {
 
 }  // namespace
 
-double surfaceArea(const Scene& scene) {
-  double area = 0.0;
-  for (const Instance& instance : scene.instances) {
-    for (const Primitive& p : scene.meshes[instance.mesh].primitives) {
-      for (uint32_t i = 0; i + 2 < p.indexCount; i += 3) {
-        glm::vec3 c[3];
-        for (uint32_t k = 0; k < 3; ++k)
-          c[k] = glm::vec3(
-              instance.transform *
-              glm::vec4(scene.vertices[p.vertexOffset + scene.indices[p.firstIndex + i + k]].position, 1.0f));
-        area += 0.5 * double(glm::length(glm::cross(c[1] - c[0], c[2] - c[0])));
-      }
-    }
-  }
-  return area;
-}
-
-float vplCutoffIrradiance(const Scene& scene, const std::vector<PhotonDeposit>& deposits, float cutoff) {
+float vplCutoffIrradiance(double surfaceArea, const std::vector<PhotonDeposit>& deposits, float cutoff) {
   double flux = 0.0;
   for (const PhotonDeposit& d : deposits) flux += std::max({d.flux.r, d.flux.g, d.flux.b});
-  const double area = std::max(2.0 * surfaceArea(scene), 1e-12);
+  const double area = std::max(2.0 * surfaceArea, 1e-12);
   return float(std::max(double(cutoff) * flux / area, 1e-30));
 }
 
 std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uint32_t target,
-                                 float unmergedNearDistance, float cutoffIrradiance, PhotonStats* stats) {
+                                 float unmergedNearDistance, const VplReach& reach, PhotonStats* stats) {
   const auto begin = std::chrono::steady_clock::now();
   std::vector<Light> vpls;
   auto finish = [&](float cell) {
@@ -323,7 +269,7 @@ std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uin
   if (target == 0 || deposits.size() <= target) {
     vpls.reserve(deposits.size());
     for (const PhotonDeposit& d : deposits)
-      vpls.push_back(makeVpl(d.position, d.normal, d.flux, unmergedNearDistance, cutoffIrradiance));
+      vpls.push_back(makeVpl(d.position, d.normal, d.flux, unmergedNearDistance, reach));
     return finish(0.0f);
   }
   Bounds bounds;
@@ -351,7 +297,7 @@ std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uin
     }
     const float n = glm::length(normal);
     vpls.push_back(makeVpl(position / weight, n > 0.0f ? normal / n : deposits[keys[first].second].normal,
-                           flux, 0.5f * hi, cutoffIrradiance));
+                           flux, 0.5f * hi, reach));
     first = last;
   }
   return finish(hi);
@@ -362,11 +308,8 @@ std::vector<Light> makeVirtualPointLights(const Scene& scene, const VplOptions& 
   const std::vector<PhotonDeposit> deposits = tracePhotons(rays, scene, options, stats);
   const Bounds bounds = scene.worldBounds();
   const float unmergedNear = bounds.valid() ? 1e-3f * glm::length(bounds.extent()) : 1e-3f;
-  std::vector<Light> vpls = mergeDeposits(deposits, options.vplCount, unmergedNear,
-                                          vplCutoffIrradiance(scene, deposits, options.cutoff), stats);
-  if (options.range > 0.0f)
-    for (Light& vpl : vpls) vpl.range = std::max(options.range, 2.0f * vpl.nearDistance);
-  return vpls;
+  const VplReach reach{vplCutoffIrradiance(rays.surfaceArea(), deposits, options.cutoff), options.range};
+  return mergeDeposits(deposits, options.vplCount, unmergedNear, reach, stats);
 }
 
 }  // namespace lll::gi

@@ -82,9 +82,16 @@ std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const Scene& scene
                                         PhotonStats* stats = nullptr);
 
 // The irradiance at which a VPL is cut off: `cutoff` times the deposits' total flux over the scene's
-// surface area (both sides of every triangle count: light reaches either).
-float vplCutoffIrradiance(const Scene& scene, const std::vector<PhotonDeposit>& deposits, float cutoff);
-double surfaceArea(const Scene& scene);
+// surface area, `surfaceArea` (RayScene::surfaceArea), both sides of every triangle counted: light
+// reaches either.
+float vplCutoffIrradiance(double surfaceArea, const std::vector<PhotonDeposit>& deposits, float cutoff);
+
+// How far a VPL reaches: `range` metres when positive (--vpl-range), else where its brightest
+// channel's irradiance falls to `cutoffIrradiance`; at least twice its near distance either way.
+struct VplReach {
+  float cutoffIrradiance = 0.0f;
+  float range = 0.0f;
+};
 
 // Merges deposits on a regular grid (cells of one edge, deposits also split by the axis their
 // normal leans to, so the two sides of a thin wall stay apart) into at most `target` VPLs: flux
@@ -92,14 +99,13 @@ double surfaceArea(const Scene& scene);
 // the target. Each VPL's near distance (the 1/d^2 clamp) is half the cell edge: closer than that
 // the point stands for a patch, not a point. target 0 keeps every deposit.
 std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uint32_t target,
-                                 float unmergedNearDistance, float cutoffIrradiance,
+                                 float unmergedNearDistance, const VplReach& reach,
                                  PhotonStats* stats = nullptr);
 
 // The light a deposit or a merged cell becomes: intensity flux / pi along the normal, colour
-// normalised to its brightest channel, range where its brightest channel's irradiance falls to
-// `cutoffIrradiance` (at least twice its near distance).
+// normalised to its brightest channel, range from `reach`.
 Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& flux, float nearDistance,
-              float cutoffIrradiance);
+              const VplReach& reach);
 
 // tracePhotons then mergeDeposits over the scene's own lights.
 std::vector<Light> makeVirtualPointLights(const Scene& scene, const VplOptions& options,

@@ -8,6 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "scene/srgb.h"
+
 namespace lll::gi {
 
 struct RayScene::State {
@@ -53,8 +55,7 @@ void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
 }
 
 float decodeSrgb(uint8_t value) {
-  const float c = float(value) / 255.0f;
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+  return srgbDecode(float(value) / 255.0f);
 }
 
 }  // namespace
@@ -103,6 +104,8 @@ RayScene::RayScene(const Scene& scene) : state_(std::make_unique<State>()) {
           s.cornerNormal.push_back(normalMatrix * v.normal);
         }
         s.triangleMaterial.push_back(p.material);
+        const glm::vec3* c = &positions[positions.size() - 3];
+        surfaceArea_ += 0.5 * double(glm::length(glm::cross(c[1] - c[0], c[2] - c[0])));
       }
     }
   }

@@ -62,6 +62,8 @@ class RayScene {
   bool hasBlendedMaterials() const;
 
   uint64_t triangleCount() const;
+  // Area of the scene's triangles in world space (one side each), m^2.
+  double surfaceArea() const { return surfaceArea_; }
   struct State;  // Embree's handles and the per-triangle data (ray_scene.cpp)
   // A distance that lifts a ray's origin off the surface it leaves: relative to the scene's size.
   float surfaceOffset() const { return surfaceOffset_; }
@@ -69,6 +71,7 @@ class RayScene {
  private:
   std::unique_ptr<State> state_;
   float surfaceOffset_ = 1e-4f;
+  double surfaceArea_ = 0.0;
 };
 
 // Linear RGBA of a texture at `uv`, bilinear with repeat wrapping (glTF's default sampler);

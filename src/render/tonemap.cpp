@@ -4,6 +4,8 @@
 #include <cmath>
 #include <glm/gtc/packing.hpp>
 
+#include "scene/srgb.h"
+
 namespace lll {
 namespace {
 
@@ -19,10 +21,6 @@ float throughHalfFloat(float x) {
 float filmic(float x) {
   x = std::min(x, kHalfMax);
   return std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
-}
-
-float srgbEncode(float c) {
-  return c > 0.0031308f ? 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f : c * 12.92f;
 }
 
 uint8_t toUnorm8(float c) {

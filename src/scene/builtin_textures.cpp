@@ -4,6 +4,8 @@
 #include <functional>
 #include <glm/gtc/constants.hpp>
 
+#include "scene/srgb.h"
+
 namespace lll::builtin {
 
 namespace {
@@ -53,8 +55,7 @@ float fbm(float x, float y, uint32_t period, int octaves, uint32_t seed) {
 
 uint8_t toSrgb8(float linear) {
   const float c = glm::clamp(linear, 0.0f, 1.0f);
-  const float srgb = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-  return uint8_t(std::lround(srgb * 255.0f));
+  return uint8_t(std::lround(srgbEncode(c) * 255.0f));
 }
 
 // A colour texture whose texel (x, y) is `shade(x, y)` in linear RGB.
