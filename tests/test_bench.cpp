@@ -140,28 +140,35 @@ TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {
   EXPECT_THROW(buildSuite("nope", SuiteOptions{}), InputError);
 }
 
-TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForward) {
+TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAndRaster) {
   const auto full = buildSuite("smoke", SuiteOptions{});
-  ASSERT_EQ(full.size(), 12u);
+  // 3 counts x 2 lightings x 2 techniques in compute, the two counts up to 65,536 in raster too,
+  // and sparks and dust at 65,536 with lll both ways.
+  ASSERT_EQ(full.size(), 12u + 8u + 4u);
   std::set<uint32_t> counts;
-  std::set<std::string> labels, lightings;
+  std::set<std::string> labels, lightings, presets, series;
   for (const Scenario& s : full) {
-    EXPECT_EQ(s.settings.particles, "smoke");
     EXPECT_EQ(s.settings.width, 1920u);
     EXPECT_EQ(s.settings.height, 1080u);
     EXPECT_EQ(s.scene.scene, "atrium");
     EXPECT_EQ(s.scene.extraLights, 256u);
+    EXPECT_TRUE(s.settings.particleRender == "compute" || s.settings.particleCount <= 65536) << s.name;
     counts.insert(s.settings.particleCount);
     labels.insert(techniqueLabel(s.settings));
     lightings.insert(s.settings.particleLighting);
+    presets.insert(s.settings.particles);
+    series.insert(seriesLabel(s));
   }
   EXPECT_EQ(counts, (std::set<uint32_t>{1024, 65536, 1000000}));
   EXPECT_EQ(labels, (std::set<std::string>{"lll/compute", "forward"}));
   EXPECT_EQ(lightings, (std::set<std::string>{"pixel", "vertex"}));
-  EXPECT_EQ(buildSuite("smoke", SuiteOptions{.quick = true}).size(), 8u);
-  // --particle-count picks the counts (the GPU runs take the million-slot case on its own).
+  EXPECT_EQ(presets, (std::set<std::string>{"smoke", "sparks", "dust"}));
+  EXPECT_EQ(series.count("lll/compute, raster"), 1u);
+  EXPECT_EQ(series.count("sparks lll/compute, compute"), 1u);
+  EXPECT_EQ(buildSuite("smoke", SuiteOptions{.quick = true}).size(), 16u + 4u);
+  // --particle-count picks the counts (the GPU runs take the million-slot case on its own), smoke only.
   const auto picked = buildSuite("smoke", SuiteOptions{.particleCounts = {2048}});
-  EXPECT_EQ(picked.size(), 4u);
+  EXPECT_EQ(picked.size(), 8u);
   for (const Scenario& s : picked) EXPECT_EQ(s.settings.particleCount, 2048u);
 }
 
@@ -355,11 +362,15 @@ TEST(BenchQuick, SmokeSuiteTimesTheParticlePasses) {
   options.techniques = {"forward"};
   options.quick = true;
   const BenchReport report = runBench(context, options);
-  ASSERT_EQ(report.results.size(), 4u);
+  ASSERT_EQ(report.results.size(), 8u);
   for (const ScenarioResult& r : report.results) {
     ASSERT_EQ(r.status, Status::Ok) << r.scenario.name << ": " << r.message;
-    for (const char* pass : {"particles-simulate", "particles-sort", "particles-indirect", "particles-draw"})
+    for (const char* pass : {"particles-simulate", "particles-sort", "particles-indirect"})
       EXPECT_NE(r.pass(pass), nullptr) << r.scenario.name << " has no " << pass;
+    const bool compute = r.scenario.settings.particleRender == "compute";
+    EXPECT_EQ(r.pass("particles-draw") != nullptr, !compute) << r.scenario.name;
+    EXPECT_EQ(r.pass("particles-bin") != nullptr, compute) << r.scenario.name;
+    EXPECT_EQ(r.pass("particles-composite") != nullptr, compute) << r.scenario.name;
     EXPECT_EQ(r.pass("particles-light") != nullptr, r.scenario.settings.particleLighting == "vertex");
     double alive = 0.0;
     for (const auto& [key, value] : r.techniqueStats)

@@ -296,6 +296,11 @@ TEST_F(CliTest, UnknownParticleLighting) {
                  {"--particle-lighting", "texel"});
 }
 
+TEST_F(CliTest, UnknownParticleRender) {
+  expectBadInput(render("atrium", {"--particles", "smoke", "--particle-render", "splat"}),
+                 {"--particle-render", "splat"});
+}
+
 TEST_F(CliTest, ParticlesNeedASmokeSourceOrAnEmitter) {
   expectBadInput(render("plane", {"--particles", "smoke"}),
                  {"plane", "no smoke source", "--particle-emitter"});
@@ -340,8 +345,9 @@ TEST_F(CliTest, HelpListsSubcommands) {
 TEST_F(CliTest, RenderHelpListsOptions) {
   const CliResult r = runLll({"render", "--help"});
   EXPECT_EQ(r.exitCode, 0) << r;
-  for (const char* option : {"--technique", "--width", "--lights", "--camera", "--out", "--hdr", "--stats",
-                             "--particles", "--particle-lighting", "--particle-count", "--particle-emitter"})
+  for (const char* option :
+       {"--technique", "--width", "--lights", "--camera", "--out", "--hdr", "--stats", "--particles",
+        "--particle-lighting", "--particle-render", "--particle-count", "--particle-emitter"})
     EXPECT_TRUE(contains(r.output, option)) << option << " missing: " << r;
 }
 

@@ -84,6 +84,7 @@ TEST_F(HostileCli, EveryWordOptionRejectsHostileValues) {
       {render, "--aa"},
       {render, "--particles"},
       {particles, "--particle-lighting"},
+      {particles, "--particle-render"},
       {particles, "--particle-emitter"},
       {{"bench", "--quick"}, "--suite"},
       {{"bench", "--quick", "--suite", "threel"}, "--technique"},

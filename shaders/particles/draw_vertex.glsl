@@ -4,8 +4,7 @@
 // six-vertex instances leave most of a GPU's vertex batch empty. What does not vary across the quad (colour,
 // opacity, emission, and with vertex lighting the lit radiance) is computed here once per vertex and passed
 // flat.
-#include "particles/random.glsl"
-#include "particles/scattering.glsl"
+#include "particles/puff.glsl"
 
 layout(location = 0) out vec3 outWorldPosition;
 layout(location = 1) out vec2 outOffset;   // on the quad along the camera's right/up, radius 1
@@ -21,22 +20,19 @@ void main() {
   uint order = uint(gl_VertexIndex) / 6u;
   uint slot = drawOrder[order].y;
   Particle p = particles[slot];
-  float t = lifeFraction(p);
-  float radius = sizeAt(t) * p.attributes.x;
-  vec3 albedo = colorAt(t) * p.attributes.w;
+#ifdef PARTICLE_VERTEX_LIGHTING
+  PuffLook look = puffLook(p, slot, particleRadiance[order].rgb);
+#else
+  PuffLook look = puffLook(p, slot, vec3(0.0));
+#endif
   vec2 corner = kCorners[uint(gl_VertexIndex) % 6u];
   float c = cos(p.attributes.y), s = sin(p.attributes.y);
   vec2 offset = vec2(c * corner.x - s * corner.y, s * corner.x + c * corner.y);
-  vec3 world = p.positionAge.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * radius;
+  vec3 world = p.positionAge.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * look.radius;
   outWorldPosition = world;
   outOffset = offset;
-  outPattern =
-      corner * 1.5 + vec2(random01(system.modes.w, slot, 11u), random01(system.modes.w, slot, 12u)) * 64.0;
-  outAlbedoOpacity = vec4(albedo, opacityAt(t));
-  vec3 light = frame.ambient.rgb;
-#ifdef PARTICLE_VERTEX_LIGHTING
-  light += particleRadiance[order].rgb;
-#endif
-  outBaseRadiance = albedo * (light + emissionAt(t));
+  outPattern = corner * 1.5 + look.patternSeed;
+  outAlbedoOpacity = look.albedoOpacity;
+  outBaseRadiance = look.baseRadiance;
   gl_Position = frame.viewProj * vec4(world, 1.0);
 }

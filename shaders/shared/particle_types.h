@@ -74,6 +74,26 @@ struct ParticleCounters {
 };
 LLL_CHECK_SIZE(ParticleCounters, 48);
 
+// The tiled compute renderer (--particle-render compute, src/particles/particle_tiles.cpp): the
+// screen in square tiles of kParticleTileSize pixels, one workgroup each; a tile's particles are
+// sorted front to back in shared memory when at most kParticleTileSharedSort, in the tile's own
+// range of the entry array otherwise, and blended kParticleTileSize^2 at a time.
+LLL_CONST(uint, kParticleTileSize, 16u);
+LLL_CONST(uint, kParticleTileSharedSort, 1024u);
+
+// What the tiled renderer needs of one visible particle, by position in the draw order: written
+// once per frame (particles-bin), read by every pixel of every tile it covers. The quad is a disc
+// of radius 1 in "offset" space, parallel to the image plane: a pixel centre p (in pixels) is at
+// offset (p - centre.xy) * axes.xy, then turned by -rotation for the puff's pattern.
+struct ParticleScreen {
+  vec4 centre;         // xy projected centre (pixels), z view depth (m), w pattern seed x
+  vec4 axes;           // xy offset per pixel along x and y, z cos(rotation), w sin(rotation)
+  vec4 albedoOpacity;  // rgb albedo, a opacity
+  vec4 baseRadiance;   // rgb radiance not from the lights walked per pixel, w pattern seed y
+  vec4 worldRadius;    // xyz world centre, w radius (m)
+};
+LLL_CHECK_SIZE(ParticleScreen, 80);
+
 // One compare-exchange step of the bitonic sort (src/particles/bitonic_sort.h).
 struct SortPush {
   uvec4 step;  // x k (size of the sequences being merged), y j (compare distance), z element count, w unused

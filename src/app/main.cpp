@@ -136,6 +136,11 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "light particles per pixel, or once per particle at its centre (vertex)")
       ->check(CLI::IsMember({"pixel", "vertex"}))
       ->needs(particles);
+  cmd.add_option("--particle-render", s.particleRender,
+                 "draw particles as quads through the rasterizer, or blend them per tile in compute "
+                 "(auto: compute on a GPU, raster on a CPU device)")
+      ->check(CLI::IsMember({"auto", "raster", "compute"}))
+      ->needs(particles);
   cmd.add_option("--particle-count", s.particleCount, "particle slots, overriding the preset's count")
       ->check(CLI::Range(1u, 1000000u))
       ->needs(particles);

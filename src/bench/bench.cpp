@@ -117,7 +117,7 @@ void requireRegistered(const std::string& technique) {
 void requireParticlePass(const Scenario& s, const FrameResult& frame) {
   if (s.settings.particles.empty()) return;
   for (const PassTime& pass : frame.passes)
-    if (pass.name == "particles-draw") return;
+    if (pass.name == "particles-draw" || pass.name == "particles-composite") return;
   throw NotAvailable(fmt::format("{} does not draw particles", s.settings.technique));
 }
 

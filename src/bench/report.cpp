@@ -55,6 +55,7 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"particles", s.settings.particles},
       {"particle_count", s.settings.particleCount},
       {"particle_lighting", s.settings.particles.empty() ? "" : s.settings.particleLighting},
+      {"particle_render", s.settings.particles.empty() ? "" : s.settings.particleRender},
       {"status", statusName(r.status)},
       {"message", r.message},
       {"device", report.device.name},

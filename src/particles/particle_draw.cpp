@@ -1,7 +1,7 @@
 // Drawing the particles inside a technique's frame: particles-light (per-particle lighting, with
-// --particle-lighting vertex) and particles-draw (one indirect draw of camera-facing quads, back to
-// front, premultiplied alpha over the lit frame, depth-tested against the prepass and faded where
-// they meet it).
+// --particle-lighting vertex) and, with --particle-render raster, particles-draw (one indirect draw
+// of camera-facing quads, back to front, premultiplied alpha over the lit frame, depth-tested
+// against the prepass and faded where they meet it). The compute renderer is particle_tiles.cpp.
 #include <fmt/format.h>
 
 #include "gpu/context.h"
@@ -15,6 +15,13 @@ ParticleLighting parseParticleLighting(const std::string& name) {
   if (name == "pixel") return ParticleLighting::Pixel;
   if (name == "vertex") return ParticleLighting::Vertex;
   throw InputError(fmt::format("--particle-lighting {}: expected pixel or vertex", name));
+}
+
+ParticleRender parseParticleRender(const std::string& name) {
+  if (name == "auto") return ParticleRender::Auto;
+  if (name == "raster") return ParticleRender::Raster;
+  if (name == "compute") return ParticleRender::Compute;
+  throw InputError(fmt::format("--particle-render {}: expected auto, raster or compute", name));
 }
 
 const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameContext& frame,
@@ -35,8 +42,16 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
   desc.depthFormat = kDepthFormat;
   desc.constants = constants;
   DrawPipelines pipelines;
-  pipelines.drawLayout = PipelineLayout(context_, {desc.vertexShader, desc.fragmentShader});
-  pipelines.draw = Pipeline(context_, pipelines.drawLayout, desc);
+  if (render_ == ParticleRender::Raster) {
+    pipelines.drawLayout = PipelineLayout(context_, {desc.vertexShader, desc.fragmentShader});
+    pipelines.draw = Pipeline(context_, pipelines.drawLayout, desc);
+  } else {
+    const std::string shader = litShader(lighting, "particles_tiles.comp");
+    pipelines.compositeLayout = PipelineLayout(context_, {shader});
+    SpecializationConstants compositeConstants = constants;
+    compositeConstants[0] = perParticle ? 0 : 1;
+    pipelines.composite = Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
+  }
   if (perParticle) {
     const std::string shader = litShader(lighting, "particles_vertex.comp");
     pipelines.lightLayout = PipelineLayout(context_, {shader});
@@ -80,6 +95,16 @@ void ParticleSystem::lightParticles(FrameContext& frame, const DrawPipelines& pi
 void ParticleSystem::draw(FrameContext& frame, const LightingInterface& lighting) {
   const DrawPipelines& pipelines = pipelinesFor(frame, lighting);
   if (pipelines.light) lightParticles(frame, pipelines, lighting);
+  if (render_ == ParticleRender::Raster) {
+    drawRaster(frame, pipelines, lighting);
+  } else {
+    binTiles(frame);
+    composite(frame, pipelines, lighting);
+  }
+}
+
+void ParticleSystem::drawRaster(FrameContext& frame, const DrawPipelines& pipelines,
+                                const LightingInterface& lighting) {
   const FrameTargets& t = frame.targets;
   constexpr VkPipelineStageFlags2 kShaders =
       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;

@@ -24,6 +24,7 @@ std::optional<ParticleSystemOptions> particleOptions(const Scene& scene, const R
   ParticleSystemOptions options;
   options.preset = loadParticlePreset(settings.particles);
   options.lighting = parseParticleLighting(settings.particleLighting);
+  options.render = parseParticleRender(settings.particleRender);
   if (settings.particleCount > gpu::kMaxParticles)
     throw InputError(fmt::format("--particle-count {}: a particle system holds 1 to {} particles",
                                  settings.particleCount, gpu::kMaxParticles));

@@ -30,6 +30,15 @@ void computeToCompute(VkCommandBuffer cmd) {
                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 }
 
+// Auto: compute on a GPU. On a CPU device the rasterizer: Mesa's llvmpipe ends a shader
+// invocation's loops once they have run 65,535 iterations in all (see lighting/light_bins.h), and a
+// composite invocation loops over every particle of its tile and, lit per pixel, every light of
+// each: a dense plume would silently lose its far particles.
+ParticleRender resolveRender(const Context& context, ParticleRender render) {
+  if (render != ParticleRender::Auto) return render;
+  return context.isCpuDevice() ? ParticleRender::Raster : ParticleRender::Compute;
+}
+
 void packCurve(const std::vector<float>& keys, glm::vec4 (&out)[2]) {
   for (size_t i = 0; i < keys.size(); ++i) out[i / 4][int(i % 4)] = keys[i];
 }
@@ -40,6 +49,7 @@ ParticleSystem::ParticleSystem(Context& context, const ParticleSystemOptions& op
     : context_(context),
       preset_(options.preset),
       lighting_(options.lighting),
+      render_(resolveRender(context, options.render)),
       capacity_(checkedCapacity(options)),
       // The emitter spawns capacity / lifetimeMax particles a second: a slot's previous particle
       // has always died when its next one is born.
@@ -221,7 +231,14 @@ std::vector<std::pair<std::string, double>> ParticleSystem::stats() const {
           {"particle_steps", double(steps_)},
           {"particle_state_bytes", double(particles_.size())},
           {"particle_sort_bytes", double(drawOrder_.size())},
-          {"particle_radiance_bytes", double(radiance_ ? radiance_.size() : 0)}};
+          {"particle_radiance_bytes", double(radiance_ ? radiance_.size() : 0)},
+          {"particle_render_compute", render_ == ParticleRender::Compute ? 1.0 : 0.0},
+          {"particle_tile_entries_used", double(tiles_.lastRequested)},
+          {"particle_tile_entries_capacity", double(tiles_.entries ? tiles_.header.capacity : 0)},
+          {"particle_tile_bytes",
+           double(tiles_.entries ? tiles_.entries.size() + tiles_.cells.size() + tiles_.screen.size() : 0)},
+          {"particle_tile_longest", double(tiles_.longestTile)},
+          {"particle_tile_overflows", double(tiles_.overflows)}};
 }
 
 }  // namespace lll

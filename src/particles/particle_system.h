@@ -7,8 +7,10 @@
 //   particles-simulate  one fixed step (spawn, move, kill)
 //   particles-sort      keys (view depth, frustum culling), then the bitonic sort
 //   particles-indirect  visible count -> VkDrawIndirectCommand (+ the lighting pass's dispatch)
-// and each technique calls draw() after its glass: particles-light (--particle-lighting vertex),
-// particles-draw. Particles and glass are each sorted, but not against each other.
+// and the renderer calls draw() after the technique's glass: particles-light (--particle-lighting
+// vertex), then particles-draw (raster) or particles-bin and particles-composite (compute).
+// Particles and glass are each sorted, but not against each other: glass is already in the frame
+// when the particles are blended over it, so a particle behind a pane shows in front of it.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -22,6 +24,7 @@
 #include "particles/bitonic_sort.h"
 #include "particles/presets.h"
 #include "render/lighting_interface.h"
+#include "shared/light_bins_types.h"
 #include "shared/particle_types.h"
 
 namespace lll {
@@ -40,12 +43,23 @@ enum class ParticleLighting {
 // Throws InputError for anything but "pixel" or "vertex".
 ParticleLighting parseParticleLighting(const std::string& name);
 
+// How the particles reach the frame (--particle-render).
+enum class ParticleRender {
+  Auto,     // compute on a GPU, raster on a CPU device (see ParticleSystem's constructor)
+  Raster,   // camera-facing quads blended back to front by the rasterizer (particle_draw.cpp)
+  Compute,  // tiles of a compute pass blending each pixel front to back (particle_tiles.cpp)
+};
+
+// Throws InputError for anything but "auto", "raster" or "compute".
+ParticleRender parseParticleRender(const std::string& name);
+
 struct ParticleSystemOptions {
   ParticlePreset preset;
   glm::vec3 source{0.0f};  // the emitter's point: the scene's smoke source or --particle-emitter
   uint32_t count = 0;      // slots; 0: the preset's count
   uint32_t seed = 1;
   ParticleLighting lighting = ParticleLighting::Pixel;
+  ParticleRender render = ParticleRender::Auto;
 };
 
 class ParticleSystem {
@@ -66,6 +80,12 @@ class ParticleSystem {
   // stays a colour attachment.
   void draw(FrameContext& frame, const LightingInterface& lighting);
 
+  // Once the frame completed: true when the compute renderer's tile entries did not fit, with a
+  // larger array allocated; the frame must then be drawn again (without advancing).
+  bool afterFrame();
+
+  // Raster or Compute: what Auto became on this device.
+  ParticleRender render() const { return render_; }
   uint64_t steps() const { return steps_; }
   const ParticlePreset& preset() const { return preset_; }
   std::vector<std::pair<std::string, double>> stats() const;
@@ -81,7 +101,27 @@ class ParticleSystem {
     PipelineLayout drawLayout;
     Pipeline draw;
     PipelineLayout lightLayout;
-    Pipeline light;  // the per-particle lighting pass (vertex lighting); empty otherwise
+    Pipeline light;                  // the per-particle lighting pass (vertex lighting); empty otherwise
+    PipelineLayout compositeLayout;  // --particle-render compute: particles-composite
+    Pipeline composite;
+  };
+  // The compute renderer's tiles (particle_tiles.cpp), made for the frame's size on first use.
+  struct Tiles {
+    uint32_t width = 0, height = 0;
+    gpu::LightBinHeader header{};
+    uint64_t maxEntries = 0;
+    uint32_t lastRequested = 0;
+    uint32_t longestTile = 0;  // the most particles one tile held in the last frame
+    uint32_t overflows = 0;
+    Buffer headerBuffer;
+    Buffer cells;
+    Buffer entries;
+    Buffer screen;
+    PipelineLayout binLayout;
+    Pipeline count;
+    Pipeline scatter;
+    PipelineLayout scanLayout;
+    Pipeline scan;
   };
   void createBuffers();
   void uploadUniforms(const glm::vec3& source, uint32_t seed);
@@ -93,10 +133,17 @@ class ParticleSystem {
   const DrawPipelines& pipelinesFor(const FrameContext& frame, const LightingInterface& lighting);
   DescriptorWriter descriptors(const FrameContext& frame, const LightingInterface& lighting) const;
   void lightParticles(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
+  void drawRaster(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
+  // particle_tiles.cpp
+  void prepareTiles(const FrameContext& frame);
+  void allocateTileEntries(uint64_t entries);
+  void binTiles(FrameContext& frame);
+  void composite(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
 
   Context& context_;
   ParticlePreset preset_;
   ParticleLighting lighting_;
+  ParticleRender render_;
   uint32_t capacity_ = 0;
   double stepsPerLifetime_ = 0.0;  // the preset's longest lifetime, in steps
   uint64_t steps_ = 0;
@@ -111,6 +158,7 @@ class ParticleSystem {
   Pipeline simulate_;
   Pipeline keys_;
   Pipeline indirect_;
+  Tiles tiles_;
   std::map<std::string, DrawPipelines> drawPipelines_;  // by lighting interface, made on first use
 };
 

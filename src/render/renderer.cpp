@@ -211,7 +211,10 @@ FrameResult Renderer::renderFrame(bool capture) {
   // A frame recorded again (the technique asked for it) must not advance the particles twice.
   for (bool advance = true;; advance = false) {
     context_.submitAndWait([&](VkCommandBuffer cmd) { recordFrame(cmd, capture, advance); });
-    if (!technique_->afterFrame()) break;
+    // Both are asked: each grows what overflowed before the frame is drawn again.
+    const bool techniqueAgain = technique_->afterFrame();
+    const bool particlesAgain = particles_ && particles_->afterFrame();
+    if (!techniqueAgain && !particlesAgain) break;
     if (++result.rerenders > kMaxRerenders)
       throw std::runtime_error(fmt::format("technique {} asked for more than {} re-renders of one frame",
                                            settings_.technique, kMaxRerenders));

@@ -38,6 +38,7 @@ struct RenderSettings {
   // Particles: a preset name or JSON path; empty for none.
   std::string particles;
   std::string particleLighting = "pixel";  // pixel | vertex
+  std::string particleRender = "auto";     // auto | raster | compute
   uint32_t particleCount = 0;              // 0: the preset's own count
   std::string particleEmitter;             // "x,y,z": where the emitter sits; empty: the scene's smoke source
   uint32_t seed = 1;                       // simulation seed (the CLI's --seed)

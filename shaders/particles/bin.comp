@@ -1,0 +1,57 @@
+#version 460
+#define PARTICLE_TILES_WRITE
+// particles-bin's count and scatter passes (specialization constant 0: 0 counts, 1 scatters), one
+// thread per visible particle in draw order. The count pass writes what the tiles need of the
+// particle (ParticleScreen) and counts it in every tile its disc may cover; after the prefix sum
+// (bin_scan.comp) the scatter pass visits the same tiles and appends its key at their cursors.
+// Constant 1 is 1 when the particle's light was computed at its centre (particles-light).
+#include "particles/tiles.glsl"
+
+layout(local_size_x = 64) in;
+layout(constant_id = 0) const uint kScatter = 0u;
+layout(constant_id = 1) const uint kCentreLit = 0u;
+
+ParticleScreen screenOf(uint order) {
+  uint slot = drawOrder[order].y;
+  Particle p = particles[slot];
+  PuffLook look = puffLook(p, slot, kCentreLit != 0u ? particleRadiance[order].rgb : vec3(0.0));
+  vec3 view = (frame.view * vec4(p.positionAge.xyz, 1.0)).xyz;
+  vec4 clip = frame.proj * vec4(view, 1.0);
+  float depth = -view.z;
+  ParticleScreen s;
+  s.centre = vec4((clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy, depth, look.patternSeed.x);
+  // A pixel is 2 / size in NDC, and NDC = proj[i][i] * view / depth along each axis: the offset on
+  // the quad (radius 1) per pixel.
+  s.axes = vec4(2.0 * frame.viewport.zw * depth / (vec2(frame.proj[0][0], frame.proj[1][1]) * look.radius),
+                cos(p.attributes.y), sin(p.attributes.y));
+  s.albedoOpacity = look.albedoOpacity;
+  s.baseRadiance = vec4(look.baseRadiance, look.patternSeed.y);
+  s.worldRadius = vec4(p.positionAge.xyz, look.radius);
+  return s;
+}
+
+void main() {
+  uint order = gl_GlobalInvocationID.x;
+  uint visible = particleCounters.dispatch.w;
+  if (order >= visible) return;
+  ParticleScreen s;
+  if (kScatter == 0u) {
+    s = screenOf(order);
+    particleScreen[order] = s;
+  } else {
+    s = particleScreen[order];
+  }
+  uvec4 tiles;
+  if (!particleTiles(s, tiles)) return;
+  uint key = visible - 1u - order;
+  for (uint y = tiles.y; y <= tiles.w; ++y)
+    for (uint x = tiles.x; x <= tiles.z; ++x) {
+      uint cell = y * tileHeader.cellsX + x;
+      if (kScatter == 0u) {
+        atomicAdd(tileCells[cell].count, 1u);
+      } else {
+        uint slot = atomicAdd(tileCells[cell].cursor, 1u);
+        if (slot < tileHeader.capacity) tileEntries[slot] = key;
+      }
+    }
+}

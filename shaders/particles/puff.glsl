@@ -1,0 +1,63 @@
+// One puff's look at a point of its quad, shared by the raster draw (draw_fragment.glsl) and the
+// tiled compute renderer (lit/particles_tiles.comp.glsl) so both make the same image: its density
+// (round, noisy, soft at the rim) and, lit per pixel, the light it scatters there.
+#ifndef LLL_PARTICLE_PUFF_GLSL
+#define LLL_PARTICLE_PUFF_GLSL
+#include "particles/random.glsl"
+#include "particles/scattering.glsl"
+
+float valueNoise(vec2 p) {
+  ivec2 i = ivec2(floor(p));
+  vec2 f = fract(p);
+  vec2 u = f * f * (3.0 - 2.0 * f);
+  float a = float(pcg3d(uvec3(i + ivec2(0, 0), 17u)).x >> 8);
+  float b = float(pcg3d(uvec3(i + ivec2(1, 0), 17u)).x >> 8);
+  float c = float(pcg3d(uvec3(i + ivec2(0, 1), 17u)).x >> 8);
+  float d = float(pcg3d(uvec3(i + ivec2(1, 1), 17u)).x >> 8);
+  return mix(mix(a, b, u.x), mix(c, d, u.x), u.y) * (1.0 / 16777216.0);
+}
+
+// Density of the puff at radius^2 r2: falls smoothly to zero at the rim, broken up by two octaves
+// of noise so overlapping puffs do not read as discs.
+float puffDensity(float r2, vec2 pattern) {
+  float noise = 0.65 * valueNoise(pattern) + 0.35 * valueNoise(pattern * 2.3);
+  return (1.0 - r2) * (1.0 - r2) * (0.45 + 0.55 * noise);
+}
+
+// What does not vary across a particle's quad, from its slot and the frame's light at its centre
+// (`centreLight`: per-particle lighting, or zero when lit per pixel).
+struct PuffLook {
+  vec4 albedoOpacity;
+  vec3 baseRadiance;  // ambient, emission and `centreLight`, times the albedo
+  float radius;       // of the quad (m)
+  vec2 patternSeed;   // where the puff's noise pattern starts
+};
+
+PuffLook puffLook(Particle p, uint slot, vec3 centreLight) {
+  float t = lifeFraction(p);
+  PuffLook look;
+  vec3 albedo = colorAt(t) * p.attributes.w;
+  look.albedoOpacity = vec4(albedo, opacityAt(t));
+  look.baseRadiance = albedo * (frame.ambient.rgb + centreLight + emissionAt(t));
+  look.radius = sizeAt(t) * p.attributes.x;
+  look.patternSeed = vec2(random01(system.modes.w, slot, 11u), random01(system.modes.w, slot, 12u)) * 64.0;
+  return look;
+}
+
+// Soft particles: the puff fades out over the preset's softness (m) in front of the scene.
+float softFade(float sceneViewDepth, float viewDepth) {
+  return clamp((sceneViewDepth - viewDepth) / system.shading.w, 0.0, 1.0);
+}
+
+#ifdef LLL_PARTICLE_SCATTER_LIGHTS_GLSL
+// Light scattered towards the eye per unit albedo at `world`, offset `offset` (radius 1) on the
+// quad, with the normal of a sphere under it; `pixel` and `viewDepth` pick the lighting
+// interface's lights.
+vec3 puffLight(vec3 world, vec2 offset, float r2, uvec2 pixel, float viewDepth) {
+  vec3 normal = normalize(cameraRight() * offset.x + cameraUp() * offset.y + cameraBack() * sqrt(1.0 - r2));
+  vec3 towardEye = normalize(frame.cameraPosition.xyz - world);
+  return scatterLights(world, normal, towardEye, pixel, viewDepth);
+}
+#endif
+
+#endif

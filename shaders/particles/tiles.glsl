@@ -1,0 +1,63 @@
+// The tiled compute renderer's data (--particle-render compute): bindings 17 to 20 beside the
+// particle system's 11 to 16. The tiles reuse the light bins' header and cell layout
+// (shared/light_bins_types.h) so that one prefix sum (lighting/bins/bin_scan.comp, which reads them
+// at 11 and 12) serves both: cellsX x cellsY tiles of cellPixels pixels, each with the range of
+// tileEntries holding its particles.
+#ifndef LLL_PARTICLE_TILES_GLSL
+#define LLL_PARTICLE_TILES_GLSL
+#include "particles/puff.glsl"
+#include "shared/light_bins_types.h"
+
+// Written by particles-bin (PARTICLE_TILES_WRITE); the entries and the header also by the
+// composite (PARTICLE_TILES_SORT_WRITE): its in-place sort, and the longest tile.
+#ifdef PARTICLE_TILES_WRITE
+#define PARTICLE_TILES_ACCESS
+#define PARTICLE_TILES_SORT_WRITE
+#else
+#define PARTICLE_TILES_ACCESS readonly
+#endif
+#ifdef PARTICLE_TILES_SORT_WRITE
+#define PARTICLE_TILES_SORT_ACCESS
+#else
+#define PARTICLE_TILES_SORT_ACCESS readonly
+#endif
+
+// largeCount: the most particles one tile held this frame (the composite's atomicMax).
+layout(std430, set = 0, binding = 17) PARTICLE_TILES_SORT_ACCESS buffer ParticleTileHeaderBlock {
+  LightBinHeader tileHeader;
+};
+layout(std430, set = 0, binding = 18) PARTICLE_TILES_ACCESS buffer ParticleTileCellBlock {
+  LightBinCell tileCells[];
+};
+// Each tile's particles as keys (visible - 1 - draw order: the nearest first); the composite pass
+// sorts a tile's range in place when it is too long for shared memory, hence coherent.
+layout(std430, set = 0, binding = 19) coherent PARTICLE_TILES_SORT_ACCESS buffer ParticleTileEntryBlock {
+  uint tileEntries[];
+};
+layout(std430, set = 0, binding = 20) PARTICLE_TILES_ACCESS buffer ParticleScreenBlock {
+  ParticleScreen particleScreen[];
+};
+
+// The tiles (first xy, last zw, inclusive) whose pixels' centres may fall inside the particle's
+// disc; false when none does, or when its quad lies outside the depth range (the rasterizer clips
+// the whole quad there: it is parallel to the image plane).
+bool particleTiles(ParticleScreen s, out uvec4 tiles) {
+  tiles = uvec4(0u);
+  if (s.centre.z < frame.depthParams.x || s.centre.z > frame.depthParams.y) return false;
+  vec2 extent = 1.0 / abs(s.axes.xy);
+  vec2 first = floor((s.centre.xy - extent) / float(tileHeader.cellPixels));
+  vec2 last = floor((s.centre.xy + extent) / float(tileHeader.cellPixels));
+  vec2 lastTile = vec2(tileHeader.cellsX, tileHeader.cellsY) - 1.0;
+  if (any(greaterThan(first, lastTile)) || any(lessThan(last, vec2(0.0)))) return false;
+  tiles = uvec4(clamp(first, vec2(0.0), lastTile), clamp(last, vec2(0.0), lastTile));
+  return true;
+}
+
+// The range of tileEntries holding tile `cell`'s particles (clamped to the capacity: past it the
+// frame is drawn again with more room, ParticleSystem::afterFrame).
+uvec2 particleTileRange(uint cell) {
+  uint first = min(tileCells[cell].first, tileHeader.capacity);
+  return uvec2(first, min(tileCells[cell].count, tileHeader.capacity - first));
+}
+
+#endif

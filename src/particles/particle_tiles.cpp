@@ -1,0 +1,171 @@
+// The tiled compute particle renderer (--particle-render compute), after AMD's GPUParticles11 and
+// MiniEngine's ParticleTileRender: no quad reaches the rasterizer.
+//   particles-bin        count: each visible particle (draw order) writes what the tiles need of
+//                        it and counts itself in the tiles its disc may cover; scan: a prefix sum
+//                        of the counts (the light bins' shader, lighting/bins/bin_scan.comp);
+//                        scatter: each particle appends its key to those tiles.
+//   particles-composite  a workgroup per tile sorts its particles nearest first and blends every
+//                        pixel front to back, stopping where it is opaque (lit/particles_tiles.comp).
+// The entry array grows when a frame asked for more than it holds and the frame is drawn again
+// (afterFrame), as the light bins do: no particle is dropped. A tile's list longer than
+// kParticleTileSharedSort is sorted in place in the entry array instead of in shared memory:
+// slower, never wrong.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "gpu/context.h"
+#include "particles/particle_system.h"
+#include "render/frame.h"
+
+namespace lll {
+
+namespace {
+constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+// Initial entries per tile (grown on overflow, grownCapacity).
+constexpr uint64_t kInitialEntriesPerTile = 64;
+}  // namespace
+
+void ParticleSystem::prepareTiles(const FrameContext& frame) {
+  Tiles& t = tiles_;
+  if (t.width == frame.targets.width && t.height == frame.targets.height) return;
+  t.width = frame.targets.width;
+  t.height = frame.targets.height;
+  t.header = {};
+  t.header.cellsX = divideRoundingUp(t.width, gpu::kParticleTileSize);
+  t.header.cellsY = divideRoundingUp(t.height, gpu::kParticleTileSize);
+  t.header.cellPixels = gpu::kParticleTileSize;
+  const uint64_t cells = uint64_t(t.header.cellsX) * t.header.cellsY;
+  t.maxEntries = storageBufferCapacity(context_, 4);
+  t.headerBuffer = Buffer(context_, sizeof(gpu::LightBinHeader),
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                          MemoryUse::Readback, "particle tiles header");
+  t.cells = Buffer(context_, cells * sizeof(gpu::LightBinCell),
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device,
+                   "particle tiles cells");
+  requireStorageBufferFits(context_, capacity_, sizeof(gpu::ParticleScreen), "the particles' screen data",
+                           "particles", "use fewer particles (--particle-count)");
+  t.screen = Buffer(context_, uint64_t(capacity_) * sizeof(gpu::ParticleScreen),
+                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device, "particle screen data");
+  allocateTileEntries(std::min(t.maxEntries, std::max<uint64_t>(cells * kInitialEntriesPerTile, capacity_)));
+  if (!t.count) {
+    t.binLayout = PipelineLayout(context_, {"particles/bin.comp"});
+    const uint32_t centreLit = lighting_ == ParticleLighting::Vertex ? 1 : 0;
+    const SpecializationConstants constants = lightTypeConstants(frame.scene);
+    auto bin = [&](uint32_t scatter) {
+      SpecializationConstants c = constants;
+      c[0] = scatter;
+      c[1] = centreLit;
+      return Pipeline(context_, t.binLayout, "particles/bin.comp", c);
+    };
+    t.count = bin(0);
+    t.scatter = bin(1);
+    t.scanLayout = PipelineLayout(context_, {"lighting/bins/bin_scan.comp"});
+    t.scan = Pipeline(context_, t.scanLayout, "lighting/bins/bin_scan.comp");
+  }
+}
+
+void ParticleSystem::allocateTileEntries(uint64_t entries) {
+  requireStorageBufferFits(context_, entries, 4, "the particle tiles", "entries",
+                           "use fewer or smaller particles or a lower resolution");
+  tiles_.header.capacity = uint32_t(std::max<uint64_t>(entries, 1));
+  tiles_.entries = Buffer(context_, uint64_t(tiles_.header.capacity) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                          MemoryUse::Device, "particle tile entries");
+}
+
+void ParticleSystem::binTiles(FrameContext& frame) {
+  prepareTiles(frame);
+  Tiles& t = tiles_;
+  const std::vector<ResourceUse> particleReads{
+      uses(counters_, Use::IndirectRead), uses(counters_, Use::StorageRead, kCompute),
+      uses(uniforms_, Use::StorageRead, kCompute), uses(particles_, Use::StorageRead, kCompute),
+      uses(drawOrder_, Use::StorageRead, kCompute)};
+  std::vector<ResourceUse> clears{uses(t.headerBuffer, Use::TransferWrite),
+                                  uses(t.cells, Use::TransferWrite)};
+  if (radiance_) clears.push_back(uses(radiance_, Use::StorageRead, kCompute));
+  frame.graph.pass("particles-bin", clears + particleReads, [&](VkCommandBuffer cmd) {
+    gpu::LightBinHeader header = t.header;
+    header.requested = 0;
+    vkCmdUpdateBuffer(cmd, t.headerBuffer.handle(), 0, sizeof(header), &header);
+    vkCmdFillBuffer(cmd, t.cells.handle(), 0, VK_WHOLE_SIZE, 0);
+    DescriptorWriter writer;
+    writer.storage(0, frame.uniformBuffer.handle())
+        .storage(1, frame.scene.lightBuffer().handle())
+        .storage(11, uniforms_.handle())
+        .storage(12, particles_.handle())
+        .storage(13, drawOrder_.handle())
+        .storage(14, counters_.handle())
+        // Read only with vertex lighting (specialization constant 1); a stand-in otherwise.
+        .storage(15, radiance_ ? radiance_.handle() : t.screen.handle())
+        .storage(17, t.headerBuffer.handle())
+        .storage(18, t.cells.handle())
+        .storage(19, t.entries.handle())
+        .storage(20, t.screen.handle());
+    auto dispatch = [&](const Pipeline& pipeline) {
+      pipeline.bind(cmd);
+      writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.binLayout);
+      vkCmdDispatchIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, dispatch));
+    };
+    frame.graph.barriers({uses(t.headerBuffer, Use::StorageRead, kCompute),
+                          uses(t.cells, Use::StorageReadWrite, kCompute),
+                          uses(t.screen, Use::StorageWrite, kCompute)});
+    dispatch(t.count);
+    frame.graph.barriers({uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
+                          uses(t.cells, Use::StorageReadWrite, kCompute)});
+    // The scan reads the tiles where it reads the light bins (common/light_bins.glsl: 11 to 14).
+    t.scan.bind(cmd);
+    DescriptorWriter()
+        .storage(11, t.headerBuffer.handle())
+        .storage(12, t.cells.handle())
+        .storage(13, t.entries.handle())
+        .storage(14, t.entries.handle())
+        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.scanLayout);
+    vkCmdDispatch(cmd, 1, 1, 1);
+    frame.graph.barriers(
+        {uses(t.headerBuffer, Use::StorageRead, kCompute), uses(t.cells, Use::StorageReadWrite, kCompute),
+         // Only read, but one shader with the count pass, which writes it.
+         uses(t.screen, Use::StorageReadWrite, kCompute), uses(t.entries, Use::StorageWrite, kCompute)});
+    dispatch(t.scatter);
+  });
+}
+
+void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelines,
+                               const LightingInterface& lighting) {
+  Tiles& t = tiles_;
+  const FrameTargets& targets = frame.targets;
+  std::vector<ResourceUse> used{
+      uses(targets.hdr, Use::StorageReadWrite, kCompute),    uses(targets.depth, Use::Sampled, kCompute),
+      uses(counters_, Use::StorageRead, kCompute),           uses(uniforms_, Use::StorageRead, kCompute),
+      uses(t.headerBuffer, Use::StorageReadWrite, kCompute), uses(t.cells, Use::StorageRead, kCompute),
+      uses(t.entries, Use::StorageReadWrite, kCompute),      uses(t.screen, Use::StorageRead, kCompute)};
+  frame.graph.pass("particles-composite", used + lighting.reads(kCompute), [&](VkCommandBuffer cmd) {
+    pipelines.composite.bind(cmd);
+    DescriptorWriter writer = descriptors(frame, lighting);
+    writer.storage(17, t.headerBuffer.handle())
+        .storage(18, t.cells.handle())
+        .storage(19, t.entries.handle())
+        .storage(20, t.screen.handle())
+        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, targets.depth.view(),
+               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+        .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.compositeLayout);
+    vkCmdDispatch(cmd, t.header.cellsX, t.header.cellsY, 1);
+  });
+  frame.graph.barriers({uses(t.headerBuffer, Use::HostRead)});
+}
+
+bool ParticleSystem::afterFrame() {
+  Tiles& t = tiles_;
+  if (render_ != ParticleRender::Compute || !t.headerBuffer) return false;
+  gpu::LightBinHeader read{};
+  std::memcpy(&read, t.headerBuffer.mapped(), sizeof(read));
+  t.lastRequested = read.requested;
+  t.longestTile = read.largeCount;
+  if (read.requested <= t.header.capacity) return false;
+  ++t.overflows;
+  allocateTileEntries(grownCapacity(read.requested, t.maxEntries));
+  return true;
+}
+
+}  // namespace lll
