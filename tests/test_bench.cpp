@@ -142,9 +142,9 @@ TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {
 
 TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAndRaster) {
   const auto full = buildSuite("smoke", SuiteOptions{});
-  // 3 counts x 2 lightings x 2 techniques in compute, the two counts up to 65,536 in raster too,
-  // and sparks and dust at 65,536 with lll both ways.
-  ASSERT_EQ(full.size(), 12u + 8u + 4u);
+  // 3 counts x 3 lightings x 2 techniques in compute; in raster too 1,024 with every lighting and
+  // 65,536 with atlas and vertex lighting; sparks and dust at 65,536 with lll both ways.
+  ASSERT_EQ(full.size(), 18u + 6u + 4u + 4u);
   std::set<uint32_t> counts;
   std::set<std::string> labels, lightings, presets, series;
   for (const Scenario& s : full) {
@@ -153,6 +153,9 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
     EXPECT_EQ(s.scene.scene, "atrium");
     EXPECT_EQ(s.scene.extraLights, 256u);
     EXPECT_TRUE(s.settings.particleRender == "compute" || s.settings.particleCount <= 65536) << s.name;
+    EXPECT_TRUE(s.settings.particleRender == "compute" || s.settings.particleLighting != "pixel" ||
+                s.settings.particleCount <= 1024)
+        << s.name;
     counts.insert(s.settings.particleCount);
     labels.insert(techniqueLabel(s.settings));
     lightings.insert(s.settings.particleLighting);
@@ -161,14 +164,14 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
   }
   EXPECT_EQ(counts, (std::set<uint32_t>{1024, 65536, 1000000}));
   EXPECT_EQ(labels, (std::set<std::string>{"lll/compute", "forward"}));
-  EXPECT_EQ(lightings, (std::set<std::string>{"pixel", "vertex"}));
+  EXPECT_EQ(lightings, (std::set<std::string>{"pixel", "atlas", "vertex"}));
   EXPECT_EQ(presets, (std::set<std::string>{"smoke", "sparks", "dust"}));
   EXPECT_EQ(series.count("lll/compute, raster"), 1u);
   EXPECT_EQ(series.count("sparks lll/compute, compute"), 1u);
-  EXPECT_EQ(buildSuite("smoke", SuiteOptions{.quick = true}).size(), 16u + 4u);
+  EXPECT_EQ(buildSuite("smoke", SuiteOptions{.quick = true}).size(), 12u + 6u + 4u + 4u);
   // --particle-count picks the counts (the GPU runs take the million-slot case on its own), smoke only.
   const auto picked = buildSuite("smoke", SuiteOptions{.particleCounts = {2048}});
-  EXPECT_EQ(picked.size(), 8u);
+  EXPECT_EQ(picked.size(), 6u + 4u);
   for (const Scenario& s : picked) EXPECT_EQ(s.settings.particleCount, 2048u);
 }
 
@@ -206,7 +209,7 @@ TEST(BenchQuick, GiErrorSuiteMeasuresTheErrorAgainstTheReference) {
   options.suites = {"gi-error"};
   options.quick = true;
   const BenchReport report = runBench(context, options);
-  ASSERT_EQ(report.results.size(), 8u);
+  ASSERT_EQ(report.results.size(), 11u);
   for (const ScenarioResult& r : report.results) {
     ASSERT_EQ(r.status, Status::Ok) << r.scenario.name << ": " << r.message;
     std::optional<double> error, traceMs;
@@ -362,7 +365,7 @@ TEST(BenchQuick, SmokeSuiteTimesTheParticlePasses) {
   options.techniques = {"forward"};
   options.quick = true;
   const BenchReport report = runBench(context, options);
-  ASSERT_EQ(report.results.size(), 8u);
+  ASSERT_EQ(report.results.size(), 11u);
   for (const ScenarioResult& r : report.results) {
     ASSERT_EQ(r.status, Status::Ok) << r.scenario.name << ": " << r.message;
     for (const char* pass : {"particles-simulate", "particles-sort", "particles-indirect"})
@@ -371,7 +374,7 @@ TEST(BenchQuick, SmokeSuiteTimesTheParticlePasses) {
     EXPECT_EQ(r.pass("particles-draw") != nullptr, !compute) << r.scenario.name;
     EXPECT_EQ(r.pass("particles-bin") != nullptr, compute) << r.scenario.name;
     EXPECT_EQ(r.pass("particles-composite") != nullptr, compute) << r.scenario.name;
-    EXPECT_EQ(r.pass("particles-light") != nullptr, r.scenario.settings.particleLighting == "vertex");
+    EXPECT_EQ(r.pass("particles-light") != nullptr, r.scenario.settings.particleLighting != "pixel");
     double alive = 0.0;
     for (const auto& [key, value] : r.techniqueStats)
       if (key == "particles_alive") alive = value;

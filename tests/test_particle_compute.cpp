@@ -13,6 +13,9 @@ namespace {
 
 using namespace test;
 
+// Atlas lighting against per-pixel lighting of the same smoke.
+constexpr ImageBound kAtlasBound{45.0, 4, 0.99, 24};
+
 struct ComputeCase {
   const char* preset;
   const char* lighting;
@@ -58,8 +61,8 @@ TEST_P(ComputeMatchesRaster, SameParticlesSameImage) {
 INSTANTIATE_TEST_SUITE_P(
     PresetsAndLightings, ComputeMatchesRaster,
     ::testing::Values(ComputeCase{"smoke", "pixel", "lll"}, ComputeCase{"smoke", "vertex", "lll"},
-                      ComputeCase{"smoke", "pixel", "forward"}, ComputeCase{"sparks", "pixel", "lll"},
-                      ComputeCase{"dust", "pixel", "lll"}),
+                      ComputeCase{"smoke", "atlas", "lll"}, ComputeCase{"smoke", "pixel", "forward"},
+                      ComputeCase{"sparks", "pixel", "lll"}, ComputeCase{"dust", "pixel", "lll"}),
     [](const auto& info) {
       return std::string(info.param.preset) + "_" + info.param.lighting + "_" + info.param.technique;
     });
@@ -79,6 +82,19 @@ TEST(ComputeParticles, CrowdedTilesAndAGrownEntryArray) {
       << "no tile needed the in-place sort";
   test::expectWithinBound(compute.image.ldr, raster.image.ldr, test::kSmokeBound,
                           "compute particles crowded tiles");
+}
+
+// The light atlas (4 x 4 texels a particle, interpolated) against lighting every pixel: the same
+// lights, sampled coarsely across each puff. The bound is what it costs (lavapipe and the H200).
+TEST(ComputeParticles, AtlasLightingIsCloseToPixelLighting) {
+  const ParticleFrame pixel = renderWith(ComputeCase{"smoke", "pixel", "lll"}, "compute", 160, 90, 1024);
+  const ParticleFrame atlas = renderWith(ComputeCase{"smoke", "atlas", "lll"}, "compute", 160, 90, 1024);
+  const ParticleFrame vertex = renderWith(ComputeCase{"smoke", "vertex", "lll"}, "compute", 160, 90, 1024);
+  const ImageDifference a =
+      test::expectWithinBound(atlas.image.ldr, pixel.image.ldr, kAtlasBound, "atlas vs pixel lighting");
+  const ImageDifference v = compareImages(vertex.image.ldr, pixel.image.ldr);
+  // The atlas is nearer per-pixel lighting than one light per particle is.
+  EXPECT_GT(a.psnr, v.psnr);
 }
 
 // No atomic decides a colour: entries are sorted by key before blending.

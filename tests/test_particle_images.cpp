@@ -89,7 +89,7 @@ TEST_P(ParticleLightingTest, RedLightTintsOnlyTheParticlesInItsRange) {
 INSTANTIATE_TEST_SUITE_P(TechniquesAndLightings, ParticleLightingTest,
                          ::testing::Values(LightingCase{"forward", "pixel"},
                                            LightingCase{"forward", "vertex"}, LightingCase{"lll", "pixel"},
-                                           LightingCase{"lll", "vertex"}),
+                                           LightingCase{"lll", "vertex"}, LightingCase{"lll", "atlas"}),
                          [](const auto& info) {
                            return std::string(info.param.technique) + "_" + info.param.lighting;
                          });

@@ -6,15 +6,16 @@
 // which is the raster path's premultiplied back-to-front blend reordered, so both make the same
 // image. A pixel stops once less than kOpaqueTransmittance of the light behind it gets through,
 // the tile once all its pixels have; then colour + transmittance * scene replaces the scene.
-// Specialization constant 0 is 1 when each pixel walks the technique's lights (pixel lighting), 0
-// when the particle's light is complete (vertex lighting, or unlit).
+// Specialization constant 0 says where the light comes from: 1 each pixel walks the technique's
+// lights (pixel lighting), 2 the particle's light atlas (atlas lighting), 0 the particle's own
+// radiance is complete (vertex lighting, or unlit).
 #define PARTICLE_TILES_SORT_WRITE
 #include "particles/scatter_lights.glsl"
 
 #include "particles/tiles.glsl"
 
 layout(local_size_x = kParticleTileSize, local_size_y = kParticleTileSize) in;
-layout(constant_id = 0) const uint kPixelLit = 1u;
+layout(constant_id = 0) const uint kLightSource = 1u;
 layout(set = 0, binding = 16) uniform sampler2D sceneDepth;
 layout(set = 0, binding = 21, rgba16f) uniform image2D hdr;
 
@@ -25,6 +26,7 @@ const float kOpaqueTransmittance = 1.0 / 1024.0;
 
 shared uint sortedKeys[kParticleTileSharedSort];
 shared ParticleScreen staged[kThreads];
+shared uint stagedOrder[kThreads];
 shared uint finishedPixels;
 
 // The pair (a < b) that comparison `i` of one step of a bitonic sort compares, for blocks of `k`
@@ -108,6 +110,7 @@ void main() {
     uint index = start + gl_LocalInvocationIndex;
     if (index < count) {
       uint key = sortedHere ? sortedKeys[index] : tileEntries[range.x + index];
+      stagedOrder[gl_LocalInvocationIndex] = visible - 1u - key;
       staged[gl_LocalInvocationIndex] = particleScreen[visible - 1u - key];
     }
     barrier();
@@ -124,9 +127,11 @@ void main() {
       float alpha = s.albedoOpacity.a * puffDensity(r2, corner * 1.5 + vec2(s.centre.w, s.baseRadiance.w)) *
                     softFade(sceneViewDepth, s.centre.z);
       vec3 radiance = s.baseRadiance.rgb;
-      if (kPixelLit != 0u) {
+      if (kLightSource == 1u) {
         vec3 world = s.worldRadius.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * s.worldRadius.w;
         radiance += s.albedoOpacity.rgb * puffLight(world, offset, r2, uvec2(pixel), s.centre.z);
+      } else if (kLightSource == 2u) {
+        radiance += s.albedoOpacity.rgb * atlasLight(stagedOrder[j], offset);
       }
       colour += transmittance * radiance * alpha;
       transmittance *= 1.0 - alpha * (1.0 - system.blend.x);

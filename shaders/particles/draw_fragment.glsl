@@ -2,7 +2,8 @@
 // scene (soft particles: the prepass depth, sampled) and premultiplied for BlendMode::Alpha; the
 // `additive` share leaves the destination untouched, so sparks add light rather than cover it.
 // With PARTICLE_LIT (lit/particles_pixel.frag) every pixel adds the technique's lights
-// (particles/scatter_lights.glsl); without, the vertex shader's radiance is complete.
+// (particles/scatter_lights.glsl); with PARTICLE_ATLAS (draw_atlas.frag) it reads the particle's
+// light atlas; without either, the vertex shader's radiance is complete.
 #include "particles/puff.glsl"
 
 layout(location = 0) in vec3 inWorldPosition;
@@ -10,6 +11,7 @@ layout(location = 1) in vec2 inOffset;
 layout(location = 2) in vec2 inPattern;
 layout(location = 3) flat in vec4 inAlbedoOpacity;
 layout(location = 4) flat in vec3 inBaseRadiance;
+layout(location = 5) flat in uint inOrder;
 layout(location = 0) out vec4 outColor;
 layout(set = 0, binding = 16) uniform sampler2D sceneDepth;
 // Depth is only tested, never written: fragments behind the scene never run.
@@ -22,8 +24,10 @@ void main() {
   float sceneLinearDepth = linearizeDepth(texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r);
   float alpha = inAlbedoOpacity.a * puffDensity(r2, inPattern) * softFade(sceneLinearDepth, depth);
   vec3 radiance = inBaseRadiance;
-#ifdef PARTICLE_LIT
+#if defined(PARTICLE_LIT)
   radiance += inAlbedoOpacity.rgb * puffLight(inWorldPosition, inOffset, r2, uvec2(gl_FragCoord.xy), depth);
+#elif defined(PARTICLE_ATLAS)
+  radiance += inAlbedoOpacity.rgb * atlasLight(inOrder, inOffset);
 #endif
   outColor = vec4(radiance * alpha, alpha * (1.0 - system.blend.x));
 }

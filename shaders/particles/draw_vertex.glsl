@@ -12,6 +12,7 @@ layout(location = 2) out vec2 outPattern;  // the puff's noise coordinates, turn
 layout(location = 3) flat out vec4 outAlbedoOpacity;
 // rgb: radiance not from this pass's lights (ambient + emission; with vertex lighting all of it)
 layout(location = 4) flat out vec3 outBaseRadiance;
+layout(location = 5) flat out uint outOrder;  // in the draw order (--particle-lighting atlas)
 
 const vec2 kCorners[6] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(1.0, 1.0), vec2(-1.0, -1.0),
                                 vec2(1.0, 1.0), vec2(-1.0, 1.0));
@@ -34,5 +35,6 @@ void main() {
   outPattern = corner * 1.5 + look.patternSeed;
   outAlbedoOpacity = look.albedoOpacity;
   outBaseRadiance = look.baseRadiance;
+  outOrder = order;
   gl_Position = frame.viewProj * vec4(world, 1.0);
 }

@@ -40,6 +40,16 @@ layout(std430, set = 0, binding = 15) PARTICLE_RADIANCE_ACCESS buffer ParticleRa
   vec4 particleRadiance[];
 };
 
+#ifdef PARTICLE_WRITES_ATLAS
+#define PARTICLE_ATLAS_ACCESS
+#else
+#define PARTICLE_ATLAS_ACCESS readonly
+#endif
+// Per-particle light atlases (--particle-lighting atlas, shared/particle_types.h).
+layout(std430, set = 0, binding = 22) PARTICLE_ATLAS_ACCESS buffer ParticleAtlasBlock {
+  uvec2 particleAtlas[];
+};
+
 bool isAlive(Particle p) {
   return p.positionAge.w >= 0.0 && p.positionAge.w < p.velocityLifetime.w;
 }

@@ -49,6 +49,23 @@ float softFade(float sceneViewDepth, float viewDepth) {
   return clamp((sceneViewDepth - viewDepth) / system.shading.w, 0.0, 1.0);
 }
 
+// The light of the particle at draw order `order` at `offset` on its quad, per unit albedo: its
+// atlas's texels interpolated bilinearly, clamped at the outer texels' centres.
+vec3 atlasLight(uint order, vec2 offset) {
+  const float side = float(kParticleAtlasSide);
+  vec2 u = clamp((offset + 1.0) * 0.5 * side - 0.5, vec2(0.0), vec2(side - 1.0));
+  uvec2 i = min(uvec2(u), uvec2(kParticleAtlasSide - 2u));
+  vec2 f = u - vec2(i);
+  uint base = order * kParticleAtlasSide * kParticleAtlasSide + i.y * kParticleAtlasSide + i.x;
+  uvec2 t00 = particleAtlas[base], t10 = particleAtlas[base + 1u];
+  uvec2 t01 = particleAtlas[base + kParticleAtlasSide], t11 = particleAtlas[base + kParticleAtlasSide + 1u];
+  vec3 c00 = vec3(unpackHalf2x16(t00.x), unpackHalf2x16(t00.y).x);
+  vec3 c10 = vec3(unpackHalf2x16(t10.x), unpackHalf2x16(t10.y).x);
+  vec3 c01 = vec3(unpackHalf2x16(t01.x), unpackHalf2x16(t01.y).x);
+  vec3 c11 = vec3(unpackHalf2x16(t11.x), unpackHalf2x16(t11.y).x);
+  return mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y);
+}
+
 #ifdef LLL_PARTICLE_SCATTER_LIGHTS_GLSL
 // Light scattered towards the eye per unit albedo at `world`, offset `offset` (radius 1) on the
 // quad, with the normal of a sphere under it; `pixel` and `viewDepth` pick the lighting

@@ -81,6 +81,12 @@ LLL_CHECK_SIZE(ParticleCounters, 48);
 LLL_CONST(uint, kParticleTileSize, 16u);
 LLL_CONST(uint, kParticleTileSharedSort, 1024u);
 
+// --particle-lighting atlas: each visible particle's light, per unit albedo, on a grid of
+// kParticleAtlasSide^2 texels over its quad (offsets -1..1 along the camera's right and up),
+// sampled bilinearly by every pixel. Texel (i, j) of the particle at draw order k is
+// particleAtlas[k * kParticleAtlasSide^2 + j * kParticleAtlasSide + i], rgb as halves.
+LLL_CONST(uint, kParticleAtlasSide, 4u);
+
 // What the tiled renderer needs of one visible particle, by position in the draw order: written
 // once per frame (particles-bin), read by every pixel of every tile it covers. The quad is a disc
 // of radius 1 in "offset" space, parallel to the image plane: a pixel centre p (in pixels) is at

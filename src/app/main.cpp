@@ -133,8 +133,9 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       "at the scene's smoke source");
   // Without --particles these would be silently ignored.
   cmd.add_option("--particle-lighting", s.particleLighting,
-                 "light particles per pixel, or once per particle at its centre (vertex)")
-      ->check(CLI::IsMember({"pixel", "vertex"}))
+                 "light particles per pixel, on a 4x4 atlas per particle interpolated per pixel (atlas), "
+                 "or once per particle at its centre (vertex)")
+      ->check(CLI::IsMember({"pixel", "atlas", "vertex"}))
       ->needs(particles);
   cmd.add_option("--particle-render", s.particleRender,
                  "draw particles as quads through the rasterizer, or blend them per tile in compute "

@@ -14,7 +14,8 @@ namespace lll {
 ParticleLighting parseParticleLighting(const std::string& name) {
   if (name == "pixel") return ParticleLighting::Pixel;
   if (name == "vertex") return ParticleLighting::Vertex;
-  throw InputError(fmt::format("--particle-lighting {}: expected pixel or vertex", name));
+  if (name == "atlas") return ParticleLighting::Atlas;
+  throw InputError(fmt::format("--particle-lighting {}: expected pixel, atlas or vertex", name));
 }
 
 ParticleRender parseParticleRender(const std::string& name) {
@@ -28,12 +29,14 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
                                                                   const LightingInterface& lighting) {
   auto found = drawPipelines_.find(lighting.name);
   if (found != drawPipelines_.end()) return found->second;
-  const bool perParticle = lighting_ == ParticleLighting::Vertex;
+  const bool vertex = lighting_ == ParticleLighting::Vertex;
+  const bool atlas = lighting_ == ParticleLighting::Atlas;
   const SpecializationConstants constants = lightTypeConstants(frame.scene);
   GraphicsPipelineDesc desc;
-  desc.vertexShader = perParticle ? "particles/draw_vertex_lit.vert" : "particles/draw.vert";
-  desc.fragmentShader =
-      perParticle ? "particles/draw_prelit.frag" : litShader(lighting, "particles_pixel.frag");
+  desc.vertexShader = vertex ? "particles/draw_vertex_lit.vert" : "particles/draw.vert";
+  desc.fragmentShader = vertex  ? "particles/draw_prelit.frag"
+                        : atlas ? "particles/draw_atlas.frag"
+                                : litShader(lighting, "particles_pixel.frag");
   desc.vertexInput = VertexInput::None;
   desc.cullMode = VK_CULL_MODE_NONE;  // a turned quad may face either way
   desc.depthWrite = false;
@@ -49,11 +52,11 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
     const std::string shader = litShader(lighting, "particles_tiles.comp");
     pipelines.compositeLayout = PipelineLayout(context_, {shader});
     SpecializationConstants compositeConstants = constants;
-    compositeConstants[0] = perParticle ? 0 : 1;
+    compositeConstants[0] = vertex ? 0 : atlas ? 2 : 1;  // the light's source (particles_tiles.comp)
     pipelines.composite = Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
   }
-  if (perParticle) {
-    const std::string shader = litShader(lighting, "particles_vertex.comp");
+  if (vertex || atlas) {
+    const std::string shader = litShader(lighting, vertex ? "particles_vertex.comp" : "particles_atlas.comp");
     pipelines.lightLayout = PipelineLayout(context_, {shader});
     pipelines.light = Pipeline(context_, pipelines.lightLayout, shader, constants);
   }
@@ -71,6 +74,7 @@ DescriptorWriter ParticleSystem::descriptors(const FrameContext& frame,
       .storage(14, counters_.handle());
   lighting.bind(writer);
   if (radiance_) writer.storage(15, radiance_.handle());
+  if (atlas_) writer.storage(22, atlas_.handle());
   return writer;
 }
 
@@ -82,7 +86,8 @@ void ParticleSystem::lightParticles(FrameContext& frame, const DrawPipelines& pi
       std::vector<ResourceUse>{
           uses(counters_, Use::IndirectRead), uses(counters_, Use::StorageRead, kCompute),
           uses(uniforms_, Use::StorageRead, kCompute), uses(particles_, Use::StorageRead, kCompute),
-          uses(drawOrder_, Use::StorageRead, kCompute), uses(radiance_, Use::StorageWrite, kCompute)} +
+          uses(drawOrder_, Use::StorageRead, kCompute),
+          uses(radiance_ ? radiance_ : atlas_, Use::StorageWrite, kCompute)} +
           lighting.reads(kCompute),
       [&](VkCommandBuffer cmd) {
         pipelines.light.bind(cmd);
@@ -117,6 +122,7 @@ void ParticleSystem::drawRaster(FrameContext& frame, const DrawPipelines& pipeli
                                  uses(particles_, Use::StorageRead, kShaders),
                                  uses(drawOrder_, Use::StorageRead, kShaders)};
   if (radiance_) reads.push_back(uses(radiance_, Use::StorageRead, kShaders));
+  if (atlas_) reads.push_back(uses(atlas_, Use::StorageRead, kShaders));
   // Blends over what the technique drew last, in whichever pass that was.
   frame.graph.pass("particles-draw", reads + lighting.reads(kShaders), [&](VkCommandBuffer cmd) {
     beginRendering(cmd, t.width, t.height, {{t.hdr.view(), false}}, t.depth.view(),

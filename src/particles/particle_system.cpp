@@ -84,6 +84,13 @@ void ParticleSystem::createBuffers() {
                      MemoryUse::Device);
   if (lighting_ == ParticleLighting::Vertex)
     radiance_ = Buffer(context_, VkDeviceSize(capacity_) * sizeof(glm::vec4), storage, MemoryUse::Device);
+  if (lighting_ == ParticleLighting::Atlas) {
+    const uint64_t texels = uint64_t(capacity_) * gpu::kParticleAtlasSide * gpu::kParticleAtlasSide;
+    requireStorageBufferFits(context_, texels, sizeof(glm::uvec2), "the particles' light atlases", "texels",
+                             "use fewer particles or --particle-lighting vertex");
+    atlas_ =
+        Buffer(context_, texels * sizeof(glm::uvec2), storage, MemoryUse::Device, "particle light atlases");
+  }
   // Every slot starts dead: lifetime 0.
   context_.submitAndWait([&](VkCommandBuffer cmd) {
     vkCmdFillBuffer(cmd, particles_.handle(), 0, VK_WHOLE_SIZE, 0);
@@ -231,7 +238,9 @@ std::vector<std::pair<std::string, double>> ParticleSystem::stats() const {
           {"particle_steps", double(steps_)},
           {"particle_state_bytes", double(particles_.size())},
           {"particle_sort_bytes", double(drawOrder_.size())},
-          {"particle_radiance_bytes", double(radiance_ ? radiance_.size() : 0)},
+          {"particle_radiance_bytes", double(radiance_ ? radiance_.size()
+                                             : atlas_  ? atlas_.size()
+                                                       : 0)},
           {"particle_render_compute", render_ == ParticleRender::Compute ? 1.0 : 0.0},
           {"particle_tile_entries_used", double(tiles_.lastRequested)},
           {"particle_tile_entries_capacity", double(tiles_.entries ? tiles_.header.capacity : 0)},

@@ -38,9 +38,10 @@ struct FrameTargets;
 enum class ParticleLighting {
   Pixel,   // every covered pixel, with a sphere-like normal across the quad
   Vertex,  // once per particle at its centre, in compute (particles-light), facing the camera
+  Atlas,   // on a few texels per particle in compute (particles-light), interpolated per pixel
 };
 
-// Throws InputError for anything but "pixel" or "vertex".
+// Throws InputError for anything but "pixel", "atlas" or "vertex".
 ParticleLighting parseParticleLighting(const std::string& name);
 
 // How the particles reach the frame (--particle-render).
@@ -152,7 +153,8 @@ class ParticleSystem {
   Buffer particles_;
   Buffer drawOrder_;
   Buffer counters_;
-  Buffer radiance_;
+  Buffer radiance_;  // --particle-lighting vertex: each visible particle's light
+  Buffer atlas_;     // --particle-lighting atlas: each visible particle's light atlas
   VkSampler depthSampler_ = VK_NULL_HANDLE;
   PipelineLayout layout_;
   Pipeline simulate_;

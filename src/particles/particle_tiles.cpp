@@ -139,6 +139,7 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
       uses(counters_, Use::StorageRead, kCompute),           uses(uniforms_, Use::StorageRead, kCompute),
       uses(t.headerBuffer, Use::StorageReadWrite, kCompute), uses(t.cells, Use::StorageRead, kCompute),
       uses(t.entries, Use::StorageReadWrite, kCompute),      uses(t.screen, Use::StorageRead, kCompute)};
+  if (atlas_) used.push_back(uses(atlas_, Use::StorageRead, kCompute));
   frame.graph.pass("particles-composite", used + lighting.reads(kCompute), [&](VkCommandBuffer cmd) {
     pipelines.composite.bind(cmd);
     DescriptorWriter writer = descriptors(frame, lighting);
@@ -148,8 +149,10 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
         .storage(20, t.screen.handle())
         .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, targets.depth.view(),
                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-        .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.compositeLayout);
+        .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
+    // Read only with atlas lighting (specialization constant 0 == 2); a stand-in otherwise.
+    if (!atlas_) writer.storage(22, t.screen.handle());
+    writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.compositeLayout);
     vkCmdDispatch(cmd, t.header.cellsX, t.header.cellsY, 1);
   });
   frame.graph.barriers({uses(t.headerBuffer, Use::HostRead)});

@@ -37,7 +37,7 @@ struct RenderSettings {
   std::string antiAliasing = "none";            // none | edge
   // Particles: a preset name or JSON path; empty for none.
   std::string particles;
-  std::string particleLighting = "pixel";  // pixel | vertex
+  std::string particleLighting = "pixel";  // pixel | atlas | vertex
   std::string particleRender = "auto";     // auto | raster | compute
   uint32_t particleCount = 0;              // 0: the preset's own count
   std::string particleEmitter;             // "x,y,z": where the emitter sits; empty: the scene's smoke source
