@@ -144,7 +144,8 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
   const auto full = buildSuite("smoke", SuiteOptions{});
   // 3 counts x 3 lightings x 2 techniques in compute; in raster too 1,024 with every lighting and
   // 65,536 with atlas and vertex lighting; sparks and dust at 65,536 with lll both ways.
-  ASSERT_EQ(full.size(), 18u + 6u + 4u + 4u);
+  // Atlas-lit smoke with lll at half and quarter resolution: 3 counts x 2.
+  ASSERT_EQ(full.size(), 18u + 6u + 4u + 4u + 6u);
   std::set<uint32_t> counts;
   std::set<std::string> labels, lightings, presets, series;
   for (const Scenario& s : full) {
@@ -168,10 +169,11 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
   EXPECT_EQ(presets, (std::set<std::string>{"smoke", "sparks", "dust"}));
   EXPECT_EQ(series.count("lll/compute, raster"), 1u);
   EXPECT_EQ(series.count("sparks lll/compute, compute"), 1u);
-  EXPECT_EQ(buildSuite("smoke", SuiteOptions{.quick = true}).size(), 12u + 6u + 4u + 4u);
+  EXPECT_EQ(series.count("lll/compute, compute quarter"), 1u);
+  EXPECT_EQ(buildSuite("smoke", SuiteOptions{.quick = true}).size(), 12u + 6u + 4u + 4u + 4u);
   // --particle-count picks the counts (the GPU runs take the million-slot case on its own), smoke only.
   const auto picked = buildSuite("smoke", SuiteOptions{.particleCounts = {2048}});
-  EXPECT_EQ(picked.size(), 6u + 4u);
+  EXPECT_EQ(picked.size(), 6u + 4u + 2u);
   for (const Scenario& s : picked) EXPECT_EQ(s.settings.particleCount, 2048u);
 }
 
@@ -209,7 +211,7 @@ TEST(BenchQuick, GiErrorSuiteMeasuresTheErrorAgainstTheReference) {
   options.suites = {"gi-error"};
   options.quick = true;
   const BenchReport report = runBench(context, options);
-  ASSERT_EQ(report.results.size(), 11u);
+  ASSERT_EQ(report.results.size(), 8u);
   for (const ScenarioResult& r : report.results) {
     ASSERT_EQ(r.status, Status::Ok) << r.scenario.name << ": " << r.message;
     std::optional<double> error, traceMs;

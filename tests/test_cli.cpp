@@ -301,6 +301,14 @@ TEST_F(CliTest, UnknownParticleRender) {
                  {"--particle-render", "splat"});
 }
 
+TEST_F(CliTest, RasterParticlesOnlyAtFullResolution) {
+  expectBadInput(render("atrium", {"--particles", "smoke", "--particle-render", "raster",
+                                   "--particle-resolution", "half"}),
+                 {"--particle-resolution half", "compute"});
+  expectBadInput(render("atrium", {"--particles", "smoke", "--particle-resolution", "eighth"}),
+                 {"--particle-resolution", "eighth"});
+}
+
 TEST_F(CliTest, ParticlesNeedASmokeSourceOrAnEmitter) {
   expectBadInput(render("plane", {"--particles", "smoke"}),
                  {"plane", "no smoke source", "--particle-emitter"});

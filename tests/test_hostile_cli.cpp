@@ -85,6 +85,7 @@ TEST_F(HostileCli, EveryWordOptionRejectsHostileValues) {
       {render, "--particles"},
       {particles, "--particle-lighting"},
       {particles, "--particle-render"},
+      {particles, "--particle-resolution"},
       {particles, "--particle-emitter"},
       {{"bench", "--quick"}, "--suite"},
       {{"bench", "--quick", "--suite", "threel"}, "--technique"},

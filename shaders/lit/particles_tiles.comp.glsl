@@ -1,7 +1,8 @@
 // particles-composite (--particle-render compute): one workgroup per tile of the particles' tile
-// grid, one invocation per pixel. The tile's particles are sorted nearest first (in shared memory,
-// or in the tile's own range of tileEntries when there are more than kParticleTileSharedSort),
-// staged kParticleTileSize^2 at a time in shared memory, and blended front to back:
+// grid, one invocation per pixel. The tile's particles come in slabs of the draw order, nearest
+// first (ParticleTileHeader); each slab's are sorted nearest first (in shared memory, or in their
+// own range of tileEntries when there are more than kParticleTileSharedSort), staged
+// kParticleTileSize^2 at a time in shared memory, and blended front to back:
 //   colour += transmittance * radiance * alpha;  transmittance *= 1 - alpha * (1 - additive)
 // which is the raster path's premultiplied back-to-front blend reordered, so both make the same
 // image. A pixel stops once less than kOpaqueTransmittance of the light behind it gets through,
@@ -18,6 +19,12 @@ layout(local_size_x = kParticleTileSize, local_size_y = kParticleTileSize) in;
 layout(constant_id = 0) const uint kLightSource = 1u;
 layout(set = 0, binding = 16) uniform sampler2D sceneDepth;
 layout(set = 0, binding = 21, rgba16f) uniform image2D hdr;
+// Below full resolution (constant 1 is 1): the particle layer, colour and transmittance, and the
+// view depth each of its pixels was blended against (the nearest of its block of frame pixels),
+// for particles-upsample (particles/upsample.comp).
+layout(constant_id = 1) const uint kLayer = 0u;
+layout(set = 0, binding = 23, rgba16f) uniform writeonly image2D particleLayer;
+layout(set = 0, binding = 24, r32f) uniform writeonly image2D particleLayerDepth;
 
 const uint kThreads = kParticleTileSize * kParticleTileSize;
 // The error this leaves is at most this share of what lies behind the pixel: far below the fp16
@@ -25,8 +32,19 @@ const uint kThreads = kParticleTileSize * kParticleTileSize;
 const float kOpaqueTransmittance = 1.0 / 1024.0;
 
 shared uint sortedKeys[kParticleTileSharedSort];
-shared ParticleScreen staged[kThreads];
-shared uint stagedOrder[kThreads];
+// A staged particle in two parts, the part every pixel reads and the part covered pixels read.
+struct ParticleShape {
+  vec4 centre;
+  vec4 axes;
+};
+struct ParticleLook {
+  vec4 albedoOpacity;
+  vec4 baseRadiance;
+  vec4 worldRadius;
+  uint order;
+};
+shared ParticleShape stagedShape[kThreads];
+shared ParticleLook stagedLook[kThreads];
 shared uint finishedPixels;
 
 // The pair (a < b) that comparison `i` of one step of a bitonic sort compares, for blocks of `k`
@@ -78,60 +96,56 @@ void sortInPlace(uint first, uint count) {
     }
 }
 
-void main() {
-  uint cell = gl_WorkGroupID.y * tileHeader.cellsX + gl_WorkGroupID.x;
+// Blends cell `cell`'s particles into the pixel, nearest first (barriers: call it uniformly).
+// `pixel` is in particle pixels, `framePixel` the frame pixel at its centre (for the lights).
+void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, uint visible,
+               inout vec3 colour, inout float transmittance, inout bool finished) {
   uvec2 range = particleTileRange(cell);
-  if (range.y == 0u) return;  // the whole workgroup
   uint count = range.y;
-  ivec2 pixel = ivec2(gl_WorkGroupID.xy * kParticleTileSize + gl_LocalInvocationID.xy);
-  bool inside = all(lessThan(pixel, ivec2(frame.viewport.xy)));
-  float sceneViewDepth = inside ? linearizeDepth(texelFetch(sceneDepth, pixel, 0).r) : 0.0;
-  vec2 pixelCentre = vec2(pixel) + 0.5;
-  if (gl_LocalInvocationIndex == 0u) {
-    finishedPixels = 0u;
-    atomicMax(tileHeader.largeCount, count);
-  }
+  if (count == 0u) return;
+  if (gl_LocalInvocationIndex == 0u) atomicMax(tileHeader.longest, count);
   bool sortedHere = count <= kParticleTileSharedSort;
   if (sortedHere) {
     for (uint i = gl_LocalInvocationIndex; i < count; i += kThreads) sortedKeys[i] = tileEntries[range.x + i];
     barrier();
     sortShared(count);
   } else {
-    barrier();
     sortInPlace(range.x, count);
   }
-  if (!inside) atomicAdd(finishedPixels, 1u);
-
-  uint visible = particleCounters.dispatch.w;
-  vec3 colour = vec3(0.0);
-  float transmittance = 1.0;
-  bool finished = !inside;
+  vec2 pixelCentre = vec2(pixel) + 0.5;
   for (uint start = 0u; start < count; start += kThreads) {
     uint index = start + gl_LocalInvocationIndex;
     if (index < count) {
       uint key = sortedHere ? sortedKeys[index] : tileEntries[range.x + index];
-      stagedOrder[gl_LocalInvocationIndex] = visible - 1u - key;
-      staged[gl_LocalInvocationIndex] = particleScreen[visible - 1u - key];
+      uint order = visible - 1u - key;
+      ParticleScreen s = particleScreen[order];
+      stagedShape[gl_LocalInvocationIndex] = ParticleShape(s.centre, s.axes);
+      stagedLook[gl_LocalInvocationIndex] =
+          ParticleLook(s.albedoOpacity, s.baseRadiance, s.worldRadius, order);
     }
     barrier();
     uint n = min(kThreads, count - start);
     for (uint j = 0u; j < n && !finished; ++j) {
-      ParticleScreen s = staged[j];
-      if (s.centre.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
-      vec2 offset = (pixelCentre - s.centre.xy) * s.axes.xy;
+      // The shape first: most of a tile's particles miss most of its pixels.
+      ParticleShape shape = stagedShape[j];
+      if (shape.centre.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
+      vec2 offset = (pixelCentre - shape.centre.xy) * shape.axes.xy;
       float r2 = dot(offset, offset);
       if (r2 >= 1.0) continue;
+      ParticleLook look = stagedLook[j];
       // The offset turned back by the particle's rotation: where the puff's pattern is read.
-      vec2 corner =
-          vec2(s.axes.z * offset.x + s.axes.w * offset.y, s.axes.z * offset.y - s.axes.w * offset.x);
-      float alpha = s.albedoOpacity.a * puffDensity(r2, corner * 1.5 + vec2(s.centre.w, s.baseRadiance.w)) *
-                    softFade(sceneViewDepth, s.centre.z);
-      vec3 radiance = s.baseRadiance.rgb;
+      vec2 corner = vec2(shape.axes.z * offset.x + shape.axes.w * offset.y,
+                         shape.axes.z * offset.y - shape.axes.w * offset.x);
+      float alpha = look.albedoOpacity.a *
+                    puffDensity(r2, corner * 1.5 + vec2(shape.centre.w, look.baseRadiance.w)) *
+                    softFade(sceneViewDepth, shape.centre.z);
+      vec3 radiance = look.baseRadiance.rgb;
       if (kLightSource == 1u) {
-        vec3 world = s.worldRadius.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * s.worldRadius.w;
-        radiance += s.albedoOpacity.rgb * puffLight(world, offset, r2, uvec2(pixel), s.centre.z);
+        vec3 world =
+            look.worldRadius.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * look.worldRadius.w;
+        radiance += look.albedoOpacity.rgb * puffLight(world, offset, r2, framePixel, shape.centre.z);
       } else if (kLightSource == 2u) {
-        radiance += s.albedoOpacity.rgb * atlasLight(stagedOrder[j], offset);
+        radiance += look.albedoOpacity.rgb * atlasLight(look.order, offset);
       }
       colour += transmittance * radiance * alpha;
       transmittance *= 1.0 - alpha * (1.0 - system.blend.x);
@@ -141,9 +155,53 @@ void main() {
       }
     }
     barrier();
-    if (finishedPixels == kThreads) break;  // read between two barriers: the same in every invocation
+    if (finishedPixels == kThreads) return;  // read between two barriers: the same in every invocation
   }
-  if (inside) {
+}
+
+// The view depth a particle pixel blends against: the frame's, or below full resolution the
+// nearest in its block (no particle shows over geometry nearer than it; the upsample sorts out the
+// pixels behind).
+float particlePixelDepth(ivec2 pixel) {
+  int scale = int(tileHeader.scale);
+  if (scale == 1) return linearizeDepth(texelFetch(sceneDepth, pixel, 0).r);
+  ivec2 last = ivec2(frame.viewport.xy) - 1;
+  float nearest = 3.4e38;
+  for (int y = 0; y < scale; ++y)
+    for (int x = 0; x < scale; ++x) {
+      ivec2 p = min(pixel * scale + ivec2(x, y), last);
+      nearest = min(nearest, linearizeDepth(texelFetch(sceneDepth, p, 0).r));
+    }
+  return nearest;
+}
+
+void main() {
+  uint tile = gl_WorkGroupID.y * tileHeader.tilesX + gl_WorkGroupID.x;
+  ivec2 pixel = ivec2(gl_WorkGroupID.xy * kParticleTileSize + gl_LocalInvocationID.xy);
+  uint scale = tileHeader.scale;
+  ivec2 size = (ivec2(frame.viewport.xy) + int(scale) - 1) / int(scale);
+  bool inside = all(lessThan(pixel, size));
+  uvec2 framePixel = min(uvec2(pixel) * scale + scale / 2u, uvec2(frame.viewport.xy) - 1u);
+  float sceneViewDepth = inside ? particlePixelDepth(pixel) : 0.0;
+  if (gl_LocalInvocationIndex == 0u) finishedPixels = 0u;
+  barrier();
+  if (!inside) atomicAdd(finishedPixels, 1u);
+  uint visible = particleCounters.dispatch.w;
+  vec3 colour = vec3(0.0);
+  float transmittance = 1.0;
+  bool finished = !inside;
+  uint slabs = tileHeader.cellsX;
+  for (uint slab = 0u; slab < slabs; ++slab) {
+    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, visible, colour, transmittance,
+              finished);
+    barrier();
+    if (finishedPixels == kThreads) break;
+  }
+  if (!inside) return;
+  if (kLayer != 0u) {
+    imageStore(particleLayer, pixel, vec4(colour, transmittance));
+    imageStore(particleLayerDepth, pixel, vec4(sceneViewDepth));
+  } else if (transmittance < 1.0 || colour != vec3(0.0)) {  // additive particles leave it at 1
     vec4 scene = imageLoad(hdr, pixel);
     imageStore(hdr, pixel, vec4(colour + transmittance * scene.rgb, scene.a));
   }

@@ -19,11 +19,14 @@ ParticleScreen screenOf(uint order) {
   vec4 clip = frame.proj * vec4(view, 1.0);
   float depth = -view.z;
   ParticleScreen s;
-  s.centre = vec4((clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy, depth, look.patternSeed.x);
+  // In particle pixels (tileHeader.scale frame pixels a side).
+  float scale = float(tileHeader.scale);
+  s.centre = vec4((clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy / scale, depth, look.patternSeed.x);
   // A pixel is 2 / size in NDC, and NDC = proj[i][i] * view / depth along each axis: the offset on
   // the quad (radius 1) per pixel.
-  s.axes = vec4(2.0 * frame.viewport.zw * depth / (vec2(frame.proj[0][0], frame.proj[1][1]) * look.radius),
-                cos(p.attributes.y), sin(p.attributes.y));
+  s.axes =
+      vec4(2.0 * scale * frame.viewport.zw * depth / (vec2(frame.proj[0][0], frame.proj[1][1]) * look.radius),
+           cos(p.attributes.y), sin(p.attributes.y));
   s.albedoOpacity = look.albedoOpacity;
   s.baseRadiance = vec4(look.baseRadiance, look.patternSeed.y);
   s.worldRadius = vec4(p.positionAge.xyz, look.radius);
@@ -44,9 +47,11 @@ void main() {
   uvec4 tiles;
   if (!particleTiles(s, tiles)) return;
   uint key = visible - 1u - order;
+  uint slabs = tileHeader.cellsX;
+  uint slab = key * slabs / visible;  // below 2^32: kMaxParticles x kParticleMaxSlabs
   for (uint y = tiles.y; y <= tiles.w; ++y)
     for (uint x = tiles.x; x <= tiles.z; ++x) {
-      uint cell = y * tileHeader.cellsX + x;
+      uint cell = (y * tileHeader.tilesX + x) * slabs + slab;
       if (kScatter == 0u) {
         atomicAdd(tileCells[cell].count, 1u);
       } else {

@@ -1,8 +1,6 @@
 // The tiled compute renderer's data (--particle-render compute): bindings 17 to 20 beside the
-// particle system's 11 to 16. The tiles reuse the light bins' header and cell layout
-// (shared/light_bins_types.h) so that one prefix sum (lighting/bins/bin_scan.comp, which reads them
-// at 11 and 12) serves both: cellsX x cellsY tiles of cellPixels pixels, each with the range of
-// tileEntries holding its particles.
+// particle system's 11 to 16. Cells are the light bins' (shared/light_bins_types.h), one per tile
+// and slab (ParticleTileHeader), so that one prefix sum (lighting/bins/bin_scan.comp) serves both.
 #ifndef LLL_PARTICLE_TILES_GLSL
 #define LLL_PARTICLE_TILES_GLSL
 #include "particles/puff.glsl"
@@ -22,9 +20,8 @@
 #define PARTICLE_TILES_SORT_ACCESS readonly
 #endif
 
-// largeCount: the most particles one tile held this frame (the composite's atomicMax).
 layout(std430, set = 0, binding = 17) PARTICLE_TILES_SORT_ACCESS buffer ParticleTileHeaderBlock {
-  LightBinHeader tileHeader;
+  ParticleTileHeader tileHeader;
 };
 layout(std430, set = 0, binding = 18) PARTICLE_TILES_ACCESS buffer ParticleTileCellBlock {
   LightBinCell tileCells[];
@@ -45,15 +42,15 @@ bool particleTiles(ParticleScreen s, out uvec4 tiles) {
   tiles = uvec4(0u);
   if (s.centre.z < frame.depthParams.x || s.centre.z > frame.depthParams.y) return false;
   vec2 extent = 1.0 / abs(s.axes.xy);
-  vec2 first = floor((s.centre.xy - extent) / float(tileHeader.cellPixels));
-  vec2 last = floor((s.centre.xy + extent) / float(tileHeader.cellPixels));
-  vec2 lastTile = vec2(tileHeader.cellsX, tileHeader.cellsY) - 1.0;
+  vec2 first = floor((s.centre.xy - extent) / float(kParticleTileSize));
+  vec2 last = floor((s.centre.xy + extent) / float(kParticleTileSize));
+  vec2 lastTile = vec2(tileHeader.tilesX, tileHeader.tilesY) - 1.0;
   if (any(greaterThan(first, lastTile)) || any(lessThan(last, vec2(0.0)))) return false;
   tiles = uvec4(clamp(first, vec2(0.0), lastTile), clamp(last, vec2(0.0), lastTile));
   return true;
 }
 
-// The range of tileEntries holding tile `cell`'s particles (clamped to the capacity: past it the
+// The range of tileEntries holding cell `cell`'s particles (clamped to the capacity: past it the
 // frame is drawn again with more room, ParticleSystem::afterFrame).
 uvec2 particleTileRange(uint cell) {
   uint first = min(tileCells[cell].first, tileHeader.capacity);

@@ -80,12 +80,35 @@ LLL_CHECK_SIZE(ParticleCounters, 48);
 // range of the entry array otherwise, and blended kParticleTileSize^2 at a time.
 LLL_CONST(uint, kParticleTileSize, 16u);
 LLL_CONST(uint, kParticleTileSharedSort, 1024u);
+// Slabs a tile's list is cut into: one per kParticlesPerSlab particle slots, a power of two, at
+// most kParticleMaxSlabs (ParticleTileHeader).
+LLL_CONST(uint, kParticlesPerSlab, 16384u);
+LLL_CONST(uint, kParticleMaxSlabs, 64u);
 
 // --particle-lighting atlas: each visible particle's light, per unit albedo, on a grid of
 // kParticleAtlasSide^2 texels over its quad (offsets -1..1 along the camera's right and up),
 // sampled bilinearly by every pixel. Texel (i, j) of the particle at draw order k is
 // particleAtlas[k * kParticleAtlasSide^2 + j * kParticleAtlasSide + i], rgb as halves.
 LLL_CONST(uint, kParticleAtlasSide, 4u);
+
+// The tiled renderer's header. It works in particle pixels: the frame's with
+// --particle-resolution full, 2 x 2 or 4 x 4 of them (`scale`) at half or quarter resolution. Each tile's
+// list is cut into `slabs` by draw order (slab s holds the keys k with k * slabs / visible == s, nearest
+// first), so a tile whose front slabs make it opaque never sorts or reads the rest. Its cells (LightBinCell,
+// one per tile and slab, tile-major) are summed by the light bins' prefix sum (lighting/bins/bin_scan.comp):
+// the fields it reads, requested, cellsX and cellsY, are where LightBinHeader has them (checked in
+// particle_tiles.cpp).
+struct ParticleTileHeader {
+  uint requested;  // entries the scatter asked for, also past `capacity`
+  uint capacity;   // entries tileEntries holds
+  uint cellsX;     // slabs per tile
+  uint cellsY;     // tiles (tilesX x tilesY): cellsX x cellsY cells
+  uint tilesX;     // tiles across and down the screen, kParticleTileSize pixels a side
+  uint tilesY;
+  uint longest;  // the most particles one cell held this frame (the composite's atomicMax)
+  uint scale;    // full-resolution pixels per particle pixel along each axis (1, 2 or 4)
+};
+LLL_CHECK_SIZE(ParticleTileHeader, 32);
 
 // What the tiled renderer needs of one visible particle, by position in the draw order: written
 // once per frame (particles-bin), read by every pixel of every tile it covers. The quad is a disc

@@ -142,6 +142,11 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "(auto: compute on a GPU, raster on a CPU device)")
       ->check(CLI::IsMember({"auto", "raster", "compute"}))
       ->needs(particles);
+  cmd.add_option("--particle-resolution", s.particleResolution,
+                 "blend particles at full, half or quarter resolution, upsampled with the depth "
+                 "(compute renderer)")
+      ->check(CLI::IsMember({"full", "half", "quarter"}))
+      ->needs(particles);
   cmd.add_option("--particle-count", s.particleCount, "particle slots, overriding the preset's count")
       ->check(CLI::Range(1u, 1000000u))
       ->needs(particles);

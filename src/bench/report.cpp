@@ -56,6 +56,7 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"particle_count", s.settings.particleCount},
       {"particle_lighting", s.settings.particles.empty() ? "" : s.settings.particleLighting},
       {"particle_render", s.settings.particles.empty() ? "" : s.settings.particleRender},
+      {"particle_resolution", s.settings.particles.empty() ? "" : s.settings.particleResolution},
       {"status", statusName(r.status)},
       {"message", r.message},
       {"device", report.device.name},

@@ -187,7 +187,8 @@ std::vector<Scenario> overdrawSuite(const SuiteOptions& options) {
 // (lll) or by every light (forward, the same frame brute force), blended per tile in compute and,
 // up to 65,536 (pixel-lit: 1,024), drawn by the rasterizer too (on the H200 a settled 65,536
 // pixel-lit took 3.2 s a frame there, a million 2.0 s vertex-lit). The sparks and dust presets at
-// 65,536 with lll, both ways, unless --particle-count picks the counts. The runner settles the
+// 65,536 with lll, both ways, unless --particle-count picks the counts; atlas-lit smoke with lll
+// at half and quarter resolution (compute). The runner settles the
 // plume first (bench.cpp).
 std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
   const std::vector<uint32_t> counts = !options.particleCounts.empty() ? options.particleCounts
@@ -197,29 +198,36 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
   const uint32_t rasterMost = options.quick ? 4096 : 65536;
   std::vector<Scenario> out;
   auto add = [&](const char* preset, uint32_t particles, const char* lighting,
-                 const std::vector<std::string>& techniques) {
-    for (const char* render : {"compute", "raster"}) {
+                 const std::vector<std::string>& techniques, const std::vector<std::string>& renders,
+                 const std::string& resolution) {
+    for (const std::string& render : renders) {
       const uint32_t most = std::string(lighting) == "pixel" ? 1024 : rasterMost;
-      if (std::string(render) == "raster" && particles > most) continue;
+      if (render == "raster" && particles > most) continue;
       const std::string name = std::string(preset) == "smoke" ? "" : std::string(preset) + " ";
+      const std::string how = resolution == "full" ? render : render + " " + resolution;
       Scenario base =
-          makeScenario("smoke", fmt::format("{}{} particles {}-lit, {}", name, particles, lighting, render),
+          makeScenario("smoke", fmt::format("{}{} particles {}-lit, {}", name, particles, lighting, how),
                        SceneRequest{kDefaultSceneName, 256, 1}, size);
       base.settings.particles = preset;
       base.settings.particleCount = particles;
       base.settings.particleLighting = lighting;
       base.settings.particleRender = render;
+      base.settings.particleResolution = resolution;
       for (Scenario s : perTechnique(base, techniques, false)) {
-        s.series = fmt::format("{}{}, {}", name, techniqueLabel(s.settings), render);
+        s.series = fmt::format("{}{}, {}", name, techniqueLabel(s.settings), how);
         out.push_back(s);
       }
     }
   };
-  for (const uint32_t particles : counts)
+  for (const uint32_t particles : counts) {
     for (const char* lighting : {"pixel", "atlas", "vertex"})
-      add("smoke", particles, lighting, {"lll", "forward"});
+      add("smoke", particles, lighting, {"lll", "forward"}, {"compute", "raster"}, "full");
+    for (const char* resolution : {"half", "quarter"})
+      add("smoke", particles, "atlas", {"lll"}, {"compute"}, resolution);
+  }
   if (options.particleCounts.empty())
-    for (const char* preset : {"sparks", "dust"}) add(preset, rasterMost, "atlas", {"lll"});
+    for (const char* preset : {"sparks", "dust"})
+      add(preset, rasterMost, "atlas", {"lll"}, {"compute", "raster"}, "full");
   return out;
 }
 

@@ -18,6 +18,13 @@ ParticleLighting parseParticleLighting(const std::string& name) {
   throw InputError(fmt::format("--particle-lighting {}: expected pixel, atlas or vertex", name));
 }
 
+uint32_t parseParticleResolution(const std::string& name) {
+  if (name == "full") return 1;
+  if (name == "half") return 2;
+  if (name == "quarter") return 4;
+  throw InputError(fmt::format("--particle-resolution {}: expected full, half or quarter", name));
+}
+
 ParticleRender parseParticleRender(const std::string& name) {
   if (name == "auto") return ParticleRender::Auto;
   if (name == "raster") return ParticleRender::Raster;
@@ -52,7 +59,8 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
     const std::string shader = litShader(lighting, "particles_tiles.comp");
     pipelines.compositeLayout = PipelineLayout(context_, {shader});
     SpecializationConstants compositeConstants = constants;
-    compositeConstants[0] = vertex ? 0 : atlas ? 2 : 1;  // the light's source (particles_tiles.comp)
+    compositeConstants[0] = vertex ? 0 : atlas ? 2 : 1;    // the light's source (particles_tiles.comp)
+    compositeConstants[1] = resolutionScale_ > 1 ? 1 : 0;  // into the particle layer
     pipelines.composite = Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
   }
   if (vertex || atlas) {
@@ -105,6 +113,7 @@ void ParticleSystem::draw(FrameContext& frame, const LightingInterface& lighting
   } else {
     binTiles(frame);
     composite(frame, pipelines, lighting);
+    if (resolutionScale_ > 1) upsample(frame);
   }
 }
 

@@ -25,6 +25,12 @@ std::optional<ParticleSystemOptions> particleOptions(const Scene& scene, const R
   options.preset = loadParticlePreset(settings.particles);
   options.lighting = parseParticleLighting(settings.particleLighting);
   options.render = parseParticleRender(settings.particleRender);
+  options.resolutionScale = parseParticleResolution(settings.particleResolution);
+  if (options.resolutionScale > 1 && options.render == ParticleRender::Raster)
+    throw InputError(
+        fmt::format("--particle-resolution {}: only --particle-render compute (or auto) draws "
+                    "particles below full resolution",
+                    settings.particleResolution));
   if (settings.particleCount > gpu::kMaxParticles)
     throw InputError(fmt::format("--particle-count {}: a particle system holds 1 to {} particles",
                                  settings.particleCount, gpu::kMaxParticles));

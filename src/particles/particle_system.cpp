@@ -34,9 +34,11 @@ void computeToCompute(VkCommandBuffer cmd) {
 // invocation's loops once they have run 65,535 iterations in all (see lighting/light_bins.h), and a
 // composite invocation loops over every particle of its tile and, lit per pixel, every light of
 // each: a dense plume would silently lose its far particles.
-ParticleRender resolveRender(const Context& context, ParticleRender render) {
-  if (render != ParticleRender::Auto) return render;
-  return context.isCpuDevice() ? ParticleRender::Raster : ParticleRender::Compute;
+// Below full resolution only the compute renderer draws particles.
+ParticleRender resolveRender(const Context& context, const ParticleSystemOptions& options) {
+  if (options.render != ParticleRender::Auto) return options.render;
+  return context.isCpuDevice() && options.resolutionScale == 1 ? ParticleRender::Raster
+                                                               : ParticleRender::Compute;
 }
 
 void packCurve(const std::vector<float>& keys, glm::vec4 (&out)[2]) {
@@ -49,7 +51,8 @@ ParticleSystem::ParticleSystem(Context& context, const ParticleSystemOptions& op
     : context_(context),
       preset_(options.preset),
       lighting_(options.lighting),
-      render_(resolveRender(context, options.render)),
+      render_(resolveRender(context, options)),
+      resolutionScale_(options.resolutionScale),
       capacity_(checkedCapacity(options)),
       // The emitter spawns capacity / lifetimeMax particles a second: a slot's previous particle
       // has always died when its next one is born.
@@ -246,7 +249,9 @@ std::vector<std::pair<std::string, double>> ParticleSystem::stats() const {
           {"particle_tile_entries_capacity", double(tiles_.entries ? tiles_.header.capacity : 0)},
           {"particle_tile_bytes",
            double(tiles_.entries ? tiles_.entries.size() + tiles_.cells.size() + tiles_.screen.size() : 0)},
-          {"particle_tile_longest", double(tiles_.longestTile)},
+          {"particle_tile_slabs", double(tiles_.header.cellsX)},
+          {"particle_resolution_scale", double(resolutionScale_)},
+          {"particle_tile_longest", double(tiles_.longestCell)},
           {"particle_tile_overflows", double(tiles_.overflows)}};
 }
 

@@ -54,6 +54,10 @@ enum class ParticleRender {
 // Throws InputError for anything but "auto", "raster" or "compute".
 ParticleRender parseParticleRender(const std::string& name);
 
+// --particle-resolution: frame pixels per particle pixel along each axis, 1 (full), 2 (half) or 4
+// (quarter). Throws InputError for any other name.
+uint32_t parseParticleResolution(const std::string& name);
+
 struct ParticleSystemOptions {
   ParticlePreset preset;
   glm::vec3 source{0.0f};  // the emitter's point: the scene's smoke source or --particle-emitter
@@ -61,6 +65,7 @@ struct ParticleSystemOptions {
   uint32_t seed = 1;
   ParticleLighting lighting = ParticleLighting::Pixel;
   ParticleRender render = ParticleRender::Auto;
+  uint32_t resolutionScale = 1;  // parseParticleResolution; above 1 needs the compute renderer
 };
 
 class ParticleSystem {
@@ -109,20 +114,24 @@ class ParticleSystem {
   // The compute renderer's tiles (particle_tiles.cpp), made for the frame's size on first use.
   struct Tiles {
     uint32_t width = 0, height = 0;
-    gpu::LightBinHeader header{};
+    gpu::ParticleTileHeader header{};
     uint64_t maxEntries = 0;
     uint32_t lastRequested = 0;
-    uint32_t longestTile = 0;  // the most particles one tile held in the last frame
+    uint32_t longestCell = 0;  // the most particles one tile's slab held in the last frame
     uint32_t overflows = 0;
     Buffer headerBuffer;
     Buffer cells;
     Buffer entries;
     Buffer screen;
+    Image layer;       // below full resolution: colour and transmittance per particle pixel
+    Image layerDepth;  // ... and the view depth it was blended against
     PipelineLayout binLayout;
     Pipeline count;
     Pipeline scatter;
     PipelineLayout scanLayout;
     Pipeline scan;
+    PipelineLayout upsampleLayout;
+    Pipeline upsample;
   };
   void createBuffers();
   void uploadUniforms(const glm::vec3& source, uint32_t seed);
@@ -140,11 +149,13 @@ class ParticleSystem {
   void allocateTileEntries(uint64_t entries);
   void binTiles(FrameContext& frame);
   void composite(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
+  void upsample(FrameContext& frame);
 
   Context& context_;
   ParticlePreset preset_;
   ParticleLighting lighting_;
   ParticleRender render_;
+  uint32_t resolutionScale_ = 1;
   uint32_t capacity_ = 0;
   double stepsPerLifetime_ = 0.0;  // the preset's longest lifetime, in steps
   uint64_t steps_ = 0;

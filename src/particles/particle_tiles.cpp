@@ -6,6 +6,10 @@
 //                        scatter: each particle appends its key to those tiles.
 //   particles-composite  a workgroup per tile sorts its particles nearest first and blends every
 //                        pixel front to back, stopping where it is opaque (lit/particles_tiles.comp).
+// A tile's list is cut into slabs of the draw order (one per kParticlesPerSlab slots, up to
+// kParticleMaxSlabs): a tile sorts and reads one slab at a time, front first, and stops at the
+// slab that made it opaque. With a million particles a tile may hold a hundred thousand; sorting
+// them all before blending the first cost most of the frame.
 // The entry array grows when a frame asked for more than it holds and the frame is drawn again
 // (afterFrame), as the light bins do: no particle is dropped. A tile's list longer than
 // kParticleTileSharedSort is sorted in place in the entry array instead of in shared memory:
@@ -13,6 +17,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstddef>
 #include <cstring>
 
 #include "gpu/context.h"
@@ -22,6 +28,10 @@
 namespace lll {
 
 namespace {
+// The light bins' prefix sum reads the tiles' header as its own (shared/particle_types.h).
+static_assert(offsetof(gpu::ParticleTileHeader, requested) == offsetof(gpu::LightBinHeader, requested));
+static_assert(offsetof(gpu::ParticleTileHeader, cellsX) == offsetof(gpu::LightBinHeader, cellsX));
+static_assert(offsetof(gpu::ParticleTileHeader, cellsY) == offsetof(gpu::LightBinHeader, cellsY));
 constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 // Initial entries per tile (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerTile = 64;
@@ -33,12 +43,23 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
   t.width = frame.targets.width;
   t.height = frame.targets.height;
   t.header = {};
-  t.header.cellsX = divideRoundingUp(t.width, gpu::kParticleTileSize);
-  t.header.cellsY = divideRoundingUp(t.height, gpu::kParticleTileSize);
-  t.header.cellPixels = gpu::kParticleTileSize;
-  const uint64_t cells = uint64_t(t.header.cellsX) * t.header.cellsY;
+  t.header.scale = resolutionScale_;
+  const uint32_t layerWidth = divideRoundingUp(t.width, resolutionScale_);
+  const uint32_t layerHeight = divideRoundingUp(t.height, resolutionScale_);
+  t.header.tilesX = divideRoundingUp(layerWidth, gpu::kParticleTileSize);
+  t.header.tilesY = divideRoundingUp(layerHeight, gpu::kParticleTileSize);
+  // At full resolution the composite blends into the frame: 1 x 1 stand-ins for its bindings.
+  const bool layered = resolutionScale_ > 1;
+  t.layer = Image(context_, layered ? layerWidth : 1, layered ? layerHeight : 1, kHdrFormat,
+                  VK_IMAGE_USAGE_STORAGE_BIT, "particle layer");
+  t.layerDepth = Image(context_, layered ? layerWidth : 1, layered ? layerHeight : 1, VK_FORMAT_R32_SFLOAT,
+                       VK_IMAGE_USAGE_STORAGE_BIT, "particle layer depth");
+  t.header.cellsX = std::clamp(std::bit_ceil(capacity_ / gpu::kParticlesPerSlab), 1u, gpu::kParticleMaxSlabs);
+  t.header.cellsY = t.header.tilesX * t.header.tilesY;
+  const uint64_t tiles = t.header.cellsY;
+  const uint64_t cells = tiles * t.header.cellsX;
   t.maxEntries = storageBufferCapacity(context_, 4);
-  t.headerBuffer = Buffer(context_, sizeof(gpu::LightBinHeader),
+  t.headerBuffer = Buffer(context_, sizeof(gpu::ParticleTileHeader),
                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                           MemoryUse::Readback, "particle tiles header");
   t.cells = Buffer(context_, cells * sizeof(gpu::LightBinCell),
@@ -48,7 +69,7 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
                            "particles", "use fewer particles (--particle-count)");
   t.screen = Buffer(context_, uint64_t(capacity_) * sizeof(gpu::ParticleScreen),
                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device, "particle screen data");
-  allocateTileEntries(std::min(t.maxEntries, std::max<uint64_t>(cells * kInitialEntriesPerTile, capacity_)));
+  allocateTileEntries(std::min(t.maxEntries, std::max<uint64_t>(tiles * kInitialEntriesPerTile, capacity_)));
   if (!t.count) {
     t.binLayout = PipelineLayout(context_, {"particles/bin.comp"});
     const uint32_t centreLit = lighting_ == ParticleLighting::Vertex ? 1 : 0;
@@ -63,6 +84,8 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
     t.scatter = bin(1);
     t.scanLayout = PipelineLayout(context_, {"lighting/bins/bin_scan.comp"});
     t.scan = Pipeline(context_, t.scanLayout, "lighting/bins/bin_scan.comp");
+    t.upsampleLayout = PipelineLayout(context_, {"particles/upsample.comp"});
+    t.upsample = Pipeline(context_, t.upsampleLayout, "particles/upsample.comp");
   }
 }
 
@@ -85,7 +108,7 @@ void ParticleSystem::binTiles(FrameContext& frame) {
                                   uses(t.cells, Use::TransferWrite)};
   if (radiance_) clears.push_back(uses(radiance_, Use::StorageRead, kCompute));
   frame.graph.pass("particles-bin", clears + particleReads, [&](VkCommandBuffer cmd) {
-    gpu::LightBinHeader header = t.header;
+    gpu::ParticleTileHeader header = t.header;
     header.requested = 0;
     vkCmdUpdateBuffer(cmd, t.headerBuffer.handle(), 0, sizeof(header), &header);
     vkCmdFillBuffer(cmd, t.cells.handle(), 0, VK_WHOLE_SIZE, 0);
@@ -140,6 +163,8 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
       uses(t.headerBuffer, Use::StorageReadWrite, kCompute), uses(t.cells, Use::StorageRead, kCompute),
       uses(t.entries, Use::StorageReadWrite, kCompute),      uses(t.screen, Use::StorageRead, kCompute)};
   if (atlas_) used.push_back(uses(atlas_, Use::StorageRead, kCompute));
+  used.insert(used.end(),
+              {uses(t.layer, Use::StorageWrite, kCompute), uses(t.layerDepth, Use::StorageWrite, kCompute)});
   frame.graph.pass("particles-composite", used + lighting.reads(kCompute), [&](VkCommandBuffer cmd) {
     pipelines.composite.bind(cmd);
     DescriptorWriter writer = descriptors(frame, lighting);
@@ -152,19 +177,46 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
         .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
     // Read only with atlas lighting (specialization constant 0 == 2); a stand-in otherwise.
     if (!atlas_) writer.storage(22, t.screen.handle());
+    // Written only below full resolution (constant 1).
+    writer.image(23, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layer.view(), VK_IMAGE_LAYOUT_GENERAL)
+        .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL);
     writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.compositeLayout);
-    vkCmdDispatch(cmd, t.header.cellsX, t.header.cellsY, 1);
+    vkCmdDispatch(cmd, t.header.tilesX, t.header.tilesY, 1);
   });
   frame.graph.barriers({uses(t.headerBuffer, Use::HostRead)});
+}
+
+void ParticleSystem::upsample(FrameContext& frame) {
+  Tiles& t = tiles_;
+  const FrameTargets& targets = frame.targets;
+  frame.graph.pass(
+      "particles-upsample",
+      {uses(targets.hdr, Use::StorageReadWrite, kCompute), uses(targets.depth, Use::Sampled, kCompute),
+       uses(t.layer, Use::StorageRead, kCompute), uses(t.layerDepth, Use::StorageRead, kCompute)},
+      [&](VkCommandBuffer cmd) {
+        t.upsample.bind(cmd);
+        DescriptorWriter()
+            .storage(0, frame.uniformBuffer.handle())
+            .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, targets.depth.view(),
+                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+            .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .image(23, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layer.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.upsampleLayout);
+        const glm::uvec4 push{resolutionScale_, 0, 0, 0};
+        vkCmdPushConstants(cmd, t.upsampleLayout.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push),
+                           &push);
+        dispatchPerPixel(cmd, targets);
+      });
 }
 
 bool ParticleSystem::afterFrame() {
   Tiles& t = tiles_;
   if (render_ != ParticleRender::Compute || !t.headerBuffer) return false;
-  gpu::LightBinHeader read{};
+  gpu::ParticleTileHeader read{};
   std::memcpy(&read, t.headerBuffer.mapped(), sizeof(read));
   t.lastRequested = read.requested;
-  t.longestTile = read.largeCount;
+  t.longestCell = read.longest;
   if (read.requested <= t.header.capacity) return false;
   ++t.overflows;
   allocateTileEntries(grownCapacity(read.requested, t.maxEntries));

@@ -39,6 +39,7 @@ struct RenderSettings {
   std::string particles;
   std::string particleLighting = "pixel";  // pixel | atlas | vertex
   std::string particleRender = "auto";     // auto | raster | compute
+  std::string particleResolution = "full";  // full | half | quarter
   uint32_t particleCount = 0;              // 0: the preset's own count
   std::string particleEmitter;             // "x,y,z": where the emitter sits; empty: the scene's smoke source
   uint32_t seed = 1;                       // simulation seed (the CLI's --seed)
