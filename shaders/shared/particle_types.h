@@ -82,7 +82,7 @@ LLL_CONST(uint, kParticleTileSize, 16u);
 LLL_CONST(uint, kParticleTileSharedSort, 1024u);
 // Slabs a tile's list is cut into: one per kParticlesPerSlab particle slots, a power of two, at
 // most kParticleMaxSlabs (ParticleTileHeader).
-LLL_CONST(uint, kParticlesPerSlab, 16384u);
+LLL_CONST(uint, kParticlesPerSlab, 4096u);
 LLL_CONST(uint, kParticleMaxSlabs, 64u);
 
 // --particle-lighting atlas: each visible particle's light, per unit albedo, on a grid of
