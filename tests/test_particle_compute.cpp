@@ -79,9 +79,9 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 // 40,000 puffs on 64 x 36 pixels (four by three tiles): each tile's list is cut in slabs of the
-// draw order, a slab holds more particles than the shared sort takes (sorted in place in the entry
-// array), and the first frame's entry array (64 a tile, or one a particle) is too small, so the
-// frame is drawn again with a larger one.
+// draw order and shared out to several workgroups, a slab holds more particles than the shared sort takes
+// (sorted in place in the entry array), and the first frame's entry array (64 a tile, or one a particle) is
+// too small, so the frame is drawn again with a larger one.
 TEST(ComputeParticles, CrowdedTilesAndAGrownEntryArray) {
   const ComputeCase c{"smoke", "vertex", "lll"};
   const ParticleFrame raster = renderWith(c, "raster", 64, 36, 40000);
@@ -89,6 +89,8 @@ TEST(ComputeParticles, CrowdedTilesAndAGrownEntryArray) {
   EXPECT_EQ(stat(compute.image, "particle_tile_slabs"),
             double(std::bit_ceil(40000u / gpu::kParticlesPerSlab)));
   EXPECT_GT(stat(compute.image, "particle_tile_slabs"), 1.0);
+  // The slabs are shared out to several workgroups a tile, combined by particles-resolve.
+  EXPECT_GT(stat(compute.image, "particle_tile_groups"), 1.0);
   EXPECT_GE(stat(compute.image, "particle_tile_overflows"), 1.0);
   EXPECT_GE(compute.image.frame.rerenders, 1u);
   const double used = stat(compute.image, "particle_tile_entries_used");

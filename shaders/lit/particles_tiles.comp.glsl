@@ -5,12 +5,15 @@
 // kParticleTileSize^2 at a time in shared memory, and blended front to back:
 //   colour += transmittance * radiance * alpha;  transmittance *= 1 - alpha * (1 - additive)
 // which is the raster path's premultiplied back-to-front blend reordered, so both make the same
-// image. A pixel stops once less than kOpaqueTransmittance of the light behind it gets through,
-// the tile once all its pixels have; then colour + transmittance * scene replaces the scene.
+// image. The tile's slabs are shared out to tileHeader.groups workgroups (the z of the dispatch),
+// each blending its own run into (colour, transmittance) for particles-resolve. A pixel stops once
+// less than kOpaqueTransmittance of the light behind it gets through, the group once all its
+// pixels have.
 // Specialization constant 0 says where the light comes from: 1 each pixel walks the technique's
 // lights (pixel lighting), 2 the particle's light atlas (atlas lighting), 0 the particle's own
 // radiance is complete (vertex lighting, or unlit).
 #define PARTICLE_TILES_SORT_WRITE
+#define PARTICLE_LAYERS_WRITE
 #include "particles/scatter_lights.glsl"
 
 #include "particles/tiles.glsl"
@@ -18,12 +21,8 @@
 layout(local_size_x = kParticleTileSize, local_size_y = kParticleTileSize) in;
 layout(constant_id = 0) const uint kLightSource = 1u;
 layout(set = 0, binding = 16) uniform sampler2D sceneDepth;
-layout(set = 0, binding = 21, rgba16f) uniform image2D hdr;
-// Below full resolution (constant 1 is 1): the particle layer, colour and transmittance, and the
-// view depth each of its pixels was blended against (the nearest of its block of frame pixels),
-// for particles-upsample (particles/upsample.comp).
-layout(constant_id = 1) const uint kLayer = 0u;
-layout(set = 0, binding = 23, rgba16f) uniform writeonly image2D particleLayer;
+// The view depth each particle pixel was blended against (the nearest of its block of frame pixels),
+// for particles-resolve below full resolution.
 layout(set = 0, binding = 24, r32f) uniform writeonly image2D particleLayerDepth;
 
 const uint kThreads = kParticleTileSize * kParticleTileSize;
@@ -191,18 +190,16 @@ void main() {
   float transmittance = 1.0;
   bool finished = !inside;
   uint slabs = tileHeader.cellsX;
-  for (uint slab = 0u; slab < slabs; ++slab) {
+  uint group = gl_WorkGroupID.z;
+  uint firstSlab = group * slabs / tileHeader.groups, endSlab = (group + 1u) * slabs / tileHeader.groups;
+  for (uint slab = firstSlab; slab < endSlab; ++slab) {
     blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, visible, colour, transmittance,
               finished);
     barrier();
     if (finishedPixels == kThreads) break;
   }
   if (!inside) return;
-  if (kLayer != 0u) {
-    imageStore(particleLayer, pixel, vec4(colour, transmittance));
-    imageStore(particleLayerDepth, pixel, vec4(sceneViewDepth));
-  } else if (transmittance < 1.0 || colour != vec3(0.0)) {  // additive particles leave it at 1
-    vec4 scene = imageLoad(hdr, pixel);
-    imageStore(hdr, pixel, vec4(colour + transmittance * scene.rgb, scene.a));
-  }
+  particleLayers[particleLayerIndex(group, pixel)] =
+      uvec2(packHalf2x16(colour.rg), packHalf2x16(vec2(colour.b, transmittance)));
+  if (group == 0u && scale > 1u) imageStore(particleLayerDepth, pixel, vec4(sceneViewDepth));
 }

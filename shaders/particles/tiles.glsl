@@ -34,6 +34,21 @@ layout(std430, set = 0, binding = 19) coherent PARTICLE_TILES_SORT_ACCESS buffer
 layout(std430, set = 0, binding = 20) PARTICLE_TILES_ACCESS buffer ParticleScreenBlock {
   ParticleScreen particleScreen[];
 };
+#ifdef PARTICLE_LAYERS_WRITE
+#define PARTICLE_LAYERS_ACCESS writeonly
+#else
+#define PARTICLE_LAYERS_ACCESS readonly
+#endif
+// Each tile group's blend of its slabs at each particle pixel, colour and transmittance as halves:
+// group g's pixel (x, y) at (g * layerHeight + y) * layerWidth + x (particles-composite writes
+// every one, particles-resolve reads them).
+layout(std430, set = 0, binding = 23) PARTICLE_LAYERS_ACCESS buffer ParticleLayerBlock {
+  uvec2 particleLayers[];
+};
+
+uint particleLayerIndex(uint group, ivec2 pixel) {
+  return (group * tileHeader.layerHeight + uint(pixel.y)) * tileHeader.layerWidth + uint(pixel.x);
+}
 
 // The tiles (first xy, last zw, inclusive) whose pixels' centres may fall inside the particle's
 // disc; false when none does, or when its quad lies outside the depth range (the rasterizer clips

@@ -84,6 +84,11 @@ LLL_CONST(uint, kParticleTileSharedSort, 1024u);
 // most kParticleMaxSlabs (ParticleTileHeader).
 LLL_CONST(uint, kParticlesPerSlab, 4096u);
 LLL_CONST(uint, kParticleMaxSlabs, 64u);
+// Workgroups a tile's slabs are shared out to (ParticleTileHeader.groups): one tile in the middle of
+// a plume may hold thousands of particles and one workgroup would hold up the frame blending them.
+// Over is associative: each group blends its run of slabs into (colour, transmittance) and
+// particles-resolve combines the runs front to back.
+LLL_CONST(uint, kParticleMaxGroups, 8u);
 
 // --particle-lighting atlas: each visible particle's light, per unit albedo, on a grid of
 // kParticleAtlasSide^2 texels over its quad (offsets -1..1 along the camera's right and up),
@@ -105,10 +110,14 @@ struct ParticleTileHeader {
   uint cellsY;     // tiles (tilesX x tilesY): cellsX x cellsY cells
   uint tilesX;     // tiles across and down the screen, kParticleTileSize pixels a side
   uint tilesY;
-  uint longest;  // the most particles one cell held this frame (the composite's atomicMax)
-  uint scale;    // full-resolution pixels per particle pixel along each axis (1, 2 or 4)
+  uint longest;     // the most particles one cell held this frame (the composite's atomicMax)
+  uint scale;       // full-resolution pixels per particle pixel along each axis (1, 2 or 4)
+  uint groups;      // workgroups per tile, each blending its own run of slabs (particleLayers)
+  uint layerWidth;  // particle pixels across and down
+  uint layerHeight;
+  uint pad;
 };
-LLL_CHECK_SIZE(ParticleTileHeader, 32);
+LLL_CHECK_SIZE(ParticleTileHeader, 48);
 
 // What the tiled renderer needs of one visible particle, by position in the draw order: written
 // once per frame (particles-bin), read by every pixel of every tile it covers. The quad is a disc

@@ -59,8 +59,7 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
     const std::string shader = litShader(lighting, "particles_tiles.comp");
     pipelines.compositeLayout = PipelineLayout(context_, {shader});
     SpecializationConstants compositeConstants = constants;
-    compositeConstants[0] = vertex ? 0 : atlas ? 2 : 1;    // the light's source (particles_tiles.comp)
-    compositeConstants[1] = resolutionScale_ > 1 ? 1 : 0;  // into the particle layer
+    compositeConstants[0] = vertex ? 0 : atlas ? 2 : 1;  // the light's source (particles_tiles.comp)
     pipelines.composite = Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
   }
   if (vertex || atlas) {
@@ -113,7 +112,7 @@ void ParticleSystem::draw(FrameContext& frame, const LightingInterface& lighting
   } else {
     binTiles(frame);
     composite(frame, pipelines, lighting);
-    if (resolutionScale_ > 1) upsample(frame);
+    resolve(frame);
   }
 }
 

@@ -247,9 +247,11 @@ std::vector<std::pair<std::string, double>> ParticleSystem::stats() const {
           {"particle_render_compute", render_ == ParticleRender::Compute ? 1.0 : 0.0},
           {"particle_tile_entries_used", double(tiles_.lastRequested)},
           {"particle_tile_entries_capacity", double(tiles_.entries ? tiles_.header.capacity : 0)},
-          {"particle_tile_bytes",
-           double(tiles_.entries ? tiles_.entries.size() + tiles_.cells.size() + tiles_.screen.size() : 0)},
+          {"particle_tile_bytes", double(tiles_.entries ? tiles_.entries.size() + tiles_.cells.size() +
+                                                              tiles_.screen.size() + tiles_.layers.size()
+                                                        : 0)},
           {"particle_tile_slabs", double(tiles_.header.cellsX)},
+          {"particle_tile_groups", double(tiles_.header.groups)},
           {"particle_resolution_scale", double(resolutionScale_)},
           {"particle_tile_longest", double(tiles_.longestCell)},
           {"particle_tile_overflows", double(tiles_.overflows)}};

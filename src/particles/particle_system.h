@@ -123,15 +123,15 @@ class ParticleSystem {
     Buffer cells;
     Buffer entries;
     Buffer screen;
-    Image layer;       // below full resolution: colour and transmittance per particle pixel
-    Image layerDepth;  // ... and the view depth it was blended against
+    Buffer layers;     // each tile group's colour and transmittance per particle pixel
+    Image layerDepth;  // below full resolution: the view depth each particle pixel was blended against
     PipelineLayout binLayout;
     Pipeline count;
     Pipeline scatter;
     PipelineLayout scanLayout;
     Pipeline scan;
-    PipelineLayout upsampleLayout;
-    Pipeline upsample;
+    PipelineLayout resolveLayout;
+    Pipeline resolve;
   };
   void createBuffers();
   void uploadUniforms(const glm::vec3& source, uint32_t seed);
@@ -149,7 +149,7 @@ class ParticleSystem {
   void allocateTileEntries(uint64_t entries);
   void binTiles(FrameContext& frame);
   void composite(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
-  void upsample(FrameContext& frame);
+  void resolve(FrameContext& frame);
 
   Context& context_;
   ParticlePreset preset_;

@@ -4,8 +4,11 @@
 //                        it and counts itself in the tiles its disc may cover; scan: a prefix sum
 //                        of the counts (the light bins' shader, lighting/bins/bin_scan.comp);
 //                        scatter: each particle appends its key to those tiles.
-//   particles-composite  a workgroup per tile sorts its particles nearest first and blends every
-//                        pixel front to back, stopping where it is opaque (lit/particles_tiles.comp).
+//   particles-composite  workgroups per tile (groups) each sort their run of the tile's slabs
+//                        nearest first and blend every pixel front to back into (colour,
+//                        transmittance), stopping where it is opaque (lit/particles_tiles.comp);
+//   particles-resolve    the groups combined front to back, upsampled with the depth below full
+//                        resolution, over the frame (particles/resolve.comp).
 // A tile's list is cut into slabs of the draw order (one per kParticlesPerSlab slots, up to
 // kParticleMaxSlabs): a tile sorts and reads one slab at a time, front first, and stops at the
 // slab that made it opaque. With a million particles a tile may hold a hundred thousand; sorting
@@ -48,16 +51,26 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
   const uint32_t layerHeight = divideRoundingUp(t.height, resolutionScale_);
   t.header.tilesX = divideRoundingUp(layerWidth, gpu::kParticleTileSize);
   t.header.tilesY = divideRoundingUp(layerHeight, gpu::kParticleTileSize);
-  // At full resolution the composite blends into the frame: 1 x 1 stand-ins for its bindings.
+  t.header.layerWidth = layerWidth;
+  t.header.layerHeight = layerHeight;
+  // At full resolution particles-resolve reads the frame's depth: a 1 x 1 stand-in.
   const bool layered = resolutionScale_ > 1;
-  t.layer = Image(context_, layered ? layerWidth : 1, layered ? layerHeight : 1, kHdrFormat,
-                  VK_IMAGE_USAGE_STORAGE_BIT, "particle layer");
   t.layerDepth = Image(context_, layered ? layerWidth : 1, layered ? layerHeight : 1, VK_FORMAT_R32_SFLOAT,
                        VK_IMAGE_USAGE_STORAGE_BIT, "particle layer depth");
   t.header.cellsX = std::clamp(std::bit_ceil(capacity_ / gpu::kParticlesPerSlab), 1u, gpu::kParticleMaxSlabs);
   t.header.cellsY = t.header.tilesX * t.header.tilesY;
   const uint64_t tiles = t.header.cellsY;
   const uint64_t cells = tiles * t.header.cellsX;
+  // As many groups as one storage buffer of layers holds (lavapipe's 128 MiB: 8 at 1080p).
+  const uint64_t layerBytes = uint64_t(layerWidth) * layerHeight * sizeof(glm::uvec2);
+  t.header.groups =
+      uint32_t(std::clamp<uint64_t>(std::min<uint64_t>({t.header.cellsX, gpu::kParticleMaxGroups,
+                                                        storageBufferCapacity(context_, layerBytes)}),
+                                    1, gpu::kParticleMaxGroups));
+  requireStorageBufferFits(context_, layerBytes * t.header.groups, 1, "the particle layers", "bytes",
+                           "use a lower resolution or --particle-resolution half");
+  t.layers = Buffer(context_, layerBytes * t.header.groups, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                    MemoryUse::Device, "particle layers");
   t.maxEntries = storageBufferCapacity(context_, 4);
   t.headerBuffer = Buffer(context_, sizeof(gpu::ParticleTileHeader),
                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -84,8 +97,8 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
     t.scatter = bin(1);
     t.scanLayout = PipelineLayout(context_, {"lighting/bins/bin_scan.comp"});
     t.scan = Pipeline(context_, t.scanLayout, "lighting/bins/bin_scan.comp");
-    t.upsampleLayout = PipelineLayout(context_, {"particles/upsample.comp"});
-    t.upsample = Pipeline(context_, t.upsampleLayout, "particles/upsample.comp");
+    t.resolveLayout = PipelineLayout(context_, {"particles/resolve.comp"});
+    t.resolve = Pipeline(context_, t.resolveLayout, "particles/resolve.comp");
   }
 }
 
@@ -158,13 +171,12 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
   std::vector<ResourceUse> used{
-      uses(targets.hdr, Use::StorageReadWrite, kCompute),    uses(targets.depth, Use::Sampled, kCompute),
-      uses(counters_, Use::StorageRead, kCompute),           uses(uniforms_, Use::StorageRead, kCompute),
-      uses(t.headerBuffer, Use::StorageReadWrite, kCompute), uses(t.cells, Use::StorageRead, kCompute),
-      uses(t.entries, Use::StorageReadWrite, kCompute),      uses(t.screen, Use::StorageRead, kCompute)};
+      uses(targets.depth, Use::Sampled, kCompute),    uses(counters_, Use::StorageRead, kCompute),
+      uses(uniforms_, Use::StorageRead, kCompute),    uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
+      uses(t.cells, Use::StorageRead, kCompute),      uses(t.entries, Use::StorageReadWrite, kCompute),
+      uses(t.screen, Use::StorageRead, kCompute),     uses(t.layers, Use::StorageWrite, kCompute),
+      uses(t.layerDepth, Use::StorageWrite, kCompute)};
   if (atlas_) used.push_back(uses(atlas_, Use::StorageRead, kCompute));
-  used.insert(used.end(),
-              {uses(t.layer, Use::StorageWrite, kCompute), uses(t.layerDepth, Use::StorageWrite, kCompute)});
   frame.graph.pass("particles-composite", used + lighting.reads(kCompute), [&](VkCommandBuffer cmd) {
     pipelines.composite.bind(cmd);
     DescriptorWriter writer = descriptors(frame, lighting);
@@ -172,42 +184,39 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
         .storage(18, t.cells.handle())
         .storage(19, t.entries.handle())
         .storage(20, t.screen.handle())
+        .storage(23, t.layers.handle())
         .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, targets.depth.view(),
                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-        .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
+        .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL);
     // Read only with atlas lighting (specialization constant 0 == 2); a stand-in otherwise.
     if (!atlas_) writer.storage(22, t.screen.handle());
-    // Written only below full resolution (constant 1).
-    writer.image(23, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layer.view(), VK_IMAGE_LAYOUT_GENERAL)
-        .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL);
     writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.compositeLayout);
-    vkCmdDispatch(cmd, t.header.tilesX, t.header.tilesY, 1);
+    vkCmdDispatch(cmd, t.header.tilesX, t.header.tilesY, t.header.groups);
   });
-  frame.graph.barriers({uses(t.headerBuffer, Use::HostRead)});
 }
 
-void ParticleSystem::upsample(FrameContext& frame) {
+void ParticleSystem::resolve(FrameContext& frame) {
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
   frame.graph.pass(
-      "particles-upsample",
+      "particles-resolve",
       {uses(targets.hdr, Use::StorageReadWrite, kCompute), uses(targets.depth, Use::Sampled, kCompute),
-       uses(t.layer, Use::StorageRead, kCompute), uses(t.layerDepth, Use::StorageRead, kCompute)},
+       uses(t.headerBuffer, Use::StorageRead, kCompute), uses(t.layers, Use::StorageRead, kCompute),
+       uses(t.layerDepth, Use::StorageRead, kCompute)},
       [&](VkCommandBuffer cmd) {
-        t.upsample.bind(cmd);
+        t.resolve.bind(cmd);
         DescriptorWriter()
             .storage(0, frame.uniformBuffer.handle())
+            .storage(17, t.headerBuffer.handle())
+            .storage(23, t.layers.handle())
             .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, targets.depth.view(),
                    VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
             .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-            .image(23, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layer.view(), VK_IMAGE_LAYOUT_GENERAL)
             .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
-            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.upsampleLayout);
-        const glm::uvec4 push{resolutionScale_, 0, 0, 0};
-        vkCmdPushConstants(cmd, t.upsampleLayout.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push),
-                           &push);
+            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.resolveLayout);
         dispatchPerPixel(cmd, targets);
       });
+  frame.graph.barriers({uses(t.headerBuffer, Use::HostRead)});
 }
 
 bool ParticleSystem::afterFrame() {
