@@ -26,6 +26,7 @@ std::optional<ParticleSystemOptions> particleOptions(const Scene& scene, const R
   options.lighting = parseParticleLighting(settings.particleLighting);
   options.render = parseParticleRender(settings.particleRender);
   options.resolutionScale = parseParticleResolution(settings.particleResolution);
+  options.tileGroups = settings.particleTileGroups;
   if (options.resolutionScale > 1 && options.render == ParticleRender::Raster)
     throw InputError(
         fmt::format("--particle-resolution {}: only --particle-render compute (or auto) draws "

@@ -53,6 +53,7 @@ ParticleSystem::ParticleSystem(Context& context, const ParticleSystemOptions& op
       lighting_(options.lighting),
       render_(resolveRender(context, options)),
       resolutionScale_(options.resolutionScale),
+      tileGroups_(options.tileGroups),
       capacity_(checkedCapacity(options)),
       // The emitter spawns capacity / lifetimeMax particles a second: a slot's previous particle
       // has always died when its next one is born.

@@ -66,6 +66,7 @@ struct ParticleSystemOptions {
   ParticleLighting lighting = ParticleLighting::Pixel;
   ParticleRender render = ParticleRender::Auto;
   uint32_t resolutionScale = 1;  // parseParticleResolution; above 1 needs the compute renderer
+  uint32_t tileGroups = 0;       // the compute renderer's workgroups a tile (1 to 8); 0: its choice
 };
 
 class ParticleSystem {
@@ -156,6 +157,7 @@ class ParticleSystem {
   ParticleLighting lighting_;
   ParticleRender render_;
   uint32_t resolutionScale_ = 1;
+  uint32_t tileGroups_ = 0;
   uint32_t capacity_ = 0;
   double stepsPerLifetime_ = 0.0;  // the preset's longest lifetime, in steps
   uint64_t steps_ = 0;
