@@ -70,8 +70,7 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
   return drawPipelines_.emplace(lighting.name, std::move(pipelines)).first->second;
 }
 
-DescriptorWriter ParticleSystem::descriptors(const FrameContext& frame,
-                                             const LightingInterface& lighting) const {
+DescriptorWriter ParticleSystem::systemDescriptors(const FrameContext& frame) const {
   DescriptorWriter writer;
   writer.storage(0, frame.uniformBuffer.handle())
       .storage(1, frame.scene.lightBuffer().handle())
@@ -79,9 +78,15 @@ DescriptorWriter ParticleSystem::descriptors(const FrameContext& frame,
       .storage(12, particles_.handle())
       .storage(13, drawOrder_.handle())
       .storage(14, counters_.handle());
-  lighting.bind(writer);
   if (radiance_) writer.storage(15, radiance_.handle());
   if (atlas_) writer.storage(22, atlas_.handle());
+  return writer;
+}
+
+DescriptorWriter ParticleSystem::descriptors(const FrameContext& frame,
+                                             const LightingInterface& lighting) const {
+  DescriptorWriter writer = systemDescriptors(frame);
+  lighting.bind(writer);
   return writer;
 }
 

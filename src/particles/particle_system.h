@@ -142,6 +142,9 @@ class ParticleSystem {
   void sort(FrameContext& frame);
   void buildIndirect(VkCommandBuffer cmd);
   const DrawPipelines& pipelinesFor(const FrameContext& frame, const LightingInterface& lighting);
+  // Set 0 of the particle passes: the frame, the lights and the system's buffers (11 to 15, 22)...
+  DescriptorWriter systemDescriptors(const FrameContext& frame) const;
+  // ... and the lighting interface's light data.
   DescriptorWriter descriptors(const FrameContext& frame, const LightingInterface& lighting) const;
   void lightParticles(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
   void drawRaster(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);

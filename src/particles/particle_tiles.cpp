@@ -128,16 +128,10 @@ void ParticleSystem::binTiles(FrameContext& frame) {
     header.requested = 0;
     vkCmdUpdateBuffer(cmd, t.headerBuffer.handle(), 0, sizeof(header), &header);
     vkCmdFillBuffer(cmd, t.cells.handle(), 0, VK_WHOLE_SIZE, 0);
-    DescriptorWriter writer;
-    writer.storage(0, frame.uniformBuffer.handle())
-        .storage(1, frame.scene.lightBuffer().handle())
-        .storage(11, uniforms_.handle())
-        .storage(12, particles_.handle())
-        .storage(13, drawOrder_.handle())
-        .storage(14, counters_.handle())
-        // Read only with vertex lighting (specialization constant 1); a stand-in otherwise.
-        .storage(15, radiance_ ? radiance_.handle() : t.screen.handle())
-        .storage(17, t.headerBuffer.handle())
+    DescriptorWriter writer = systemDescriptors(frame);
+    // Read only with vertex lighting (specialization constant 1); a stand-in otherwise.
+    if (!radiance_) writer.storage(15, t.screen.handle());
+    writer.storage(17, t.headerBuffer.handle())
         .storage(18, t.cells.handle())
         .storage(19, t.entries.handle())
         .storage(20, t.screen.handle());
