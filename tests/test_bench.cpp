@@ -144,8 +144,8 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
   const auto full = buildSuite("smoke", SuiteOptions{});
   // 3 counts x 3 lightings x 2 techniques in compute; in raster too 1,024 with every lighting and
   // 65,536 with atlas and vertex lighting; sparks and dust at 65,536 with lll both ways.
-  // Atlas-lit smoke with lll at half and quarter resolution: 3 counts x 2.
-  ASSERT_EQ(full.size(), 18u + 6u + 4u + 4u + 6u);
+  // Atlas- and vertex-lit smoke with lll at half and quarter resolution: 3 counts x 4.
+  ASSERT_EQ(full.size(), 18u + 6u + 4u + 4u + 12u);
   std::set<uint32_t> counts;
   std::set<std::string> labels, lightings, presets, series;
   for (const Scenario& s : full) {
@@ -170,10 +170,10 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
   EXPECT_EQ(series.count("lll/compute, raster"), 1u);
   EXPECT_EQ(series.count("sparks lll/compute, compute"), 1u);
   EXPECT_EQ(series.count("lll/compute, compute quarter"), 1u);
-  EXPECT_EQ(buildSuite("smoke", SuiteOptions{.quick = true}).size(), 12u + 6u + 4u + 4u + 4u);
+  EXPECT_EQ(buildSuite("smoke", SuiteOptions{.quick = true}).size(), 12u + 6u + 4u + 4u + 8u);
   // --particle-count picks the counts (the GPU runs take the million-slot case on its own), smoke only.
   const auto picked = buildSuite("smoke", SuiteOptions{.particleCounts = {2048}});
-  EXPECT_EQ(picked.size(), 6u + 4u + 2u);
+  EXPECT_EQ(picked.size(), 6u + 4u + 4u);
   for (const Scenario& s : picked) EXPECT_EQ(s.settings.particleCount, 2048u);
 }
 

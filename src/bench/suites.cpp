@@ -187,8 +187,8 @@ std::vector<Scenario> overdrawSuite(const SuiteOptions& options) {
 // (lll) or by every light (forward, the same frame brute force), blended per tile in compute and,
 // up to 65,536 (pixel-lit: 1,024), drawn by the rasterizer too (on the H200 a settled 65,536
 // pixel-lit took 3.2 s a frame there, a million 2.0 s vertex-lit). The sparks and dust presets at
-// 65,536 with lll, both ways, unless --particle-count picks the counts; atlas-lit smoke with lll
-// at half and quarter resolution (compute). The runner settles the
+// 65,536 with lll, both ways, unless --particle-count picks the counts; atlas- and vertex-lit
+// smoke with lll at half and quarter resolution (compute). The runner settles the
 // plume first (bench.cpp).
 std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
   const std::vector<uint32_t> counts = !options.particleCounts.empty() ? options.particleCounts
@@ -223,7 +223,8 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
     for (const char* lighting : {"pixel", "atlas", "vertex"})
       add("smoke", particles, lighting, {"lll", "forward"}, {"compute", "raster"}, "full");
     for (const char* resolution : {"half", "quarter"})
-      add("smoke", particles, "atlas", {"lll"}, {"compute"}, resolution);
+      for (const char* lighting : {"atlas", "vertex"})
+        add("smoke", particles, lighting, {"lll"}, {"compute"}, resolution);
   }
   if (options.particleCounts.empty())
     for (const char* preset : {"sparks", "dust"})
