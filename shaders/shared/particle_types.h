@@ -88,7 +88,7 @@ LLL_CONST(uint, kParticleMaxSlabs, 64u);
 // a plume may hold thousands of particles and one workgroup would hold up the frame blending them.
 // Over is associative: each group blends its run of slabs into (colour, transmittance) and
 // particles-resolve combines the runs front to back.
-LLL_CONST(uint, kParticleMaxGroups, 16u);
+LLL_CONST(uint, kParticleMaxGroups, 8u);
 
 // --particle-lighting atlas: each visible particle's light, per unit albedo, on a grid of
 // kParticleAtlasSide^2 texels over its quad (offsets -1..1 along the camera's right and up),
