@@ -16,6 +16,7 @@
 #define PARTICLE_LAYERS_WRITE
 #include "particles/scatter_lights.glsl"
 
+#include "particles/bitonic.glsl"
 #include "particles/tiles.glsl"
 
 layout(local_size_x = kParticleTileSize, local_size_y = kParticleTileSize) in;
@@ -54,43 +55,39 @@ uvec2 bitonicPair(uint i, uint k, uint j) {
     uint base = (i / j) * k, pos = i % j;
     return uvec2(base + pos, base + k - 1u - pos);
   }
-  uint a = (i / j) * 2u * j + i % j;
+  uint a = lowerIndex(i, j);
   return uvec2(a, a + j);
 }
 
-// Sorts sortedKeys[0, count) ascending.
-void sortShared(uint count) {
+// Puts the smaller of keys a < b first: in sortedKeys, or in tileEntries.
+void orderKeys(bool inShared, uint a, uint b) {
+  if (inShared) {
+    uint ka = sortedKeys[a], kb = sortedKeys[b];
+    if (ka > kb) {
+      sortedKeys[a] = kb;
+      sortedKeys[b] = ka;
+    }
+  } else {
+    uint ka = tileEntries[a], kb = tileEntries[b];
+    if (ka > kb) {
+      tileEntries[a] = kb;
+      tileEntries[b] = ka;
+    }
+  }
+}
+
+// Sorts `count` keys ascending from `first`: of sortedKeys when `inShared` (the same in every
+// invocation), else of tileEntries.
+void sortKeys(bool inShared, uint first, uint count) {
   uint n = 2u;
   while (n < count) n <<= 1u;
   for (uint k = 2u; k <= n; k <<= 1u)
     for (uint j = k / 2u; j > 0u; j >>= 1u) {
       for (uint i = gl_LocalInvocationIndex; i < n / 2u; i += kThreads) {
         uvec2 ab = bitonicPair(i, k, j);
-        if (ab.y < count && sortedKeys[ab.x] > sortedKeys[ab.y]) {
-          uint t = sortedKeys[ab.x];
-          sortedKeys[ab.x] = sortedKeys[ab.y];
-          sortedKeys[ab.y] = t;
-        }
+        if (ab.y < count) orderKeys(inShared, first + ab.x, first + ab.y);
       }
-      barrier();
-    }
-}
-
-// Sorts tileEntries[first, first + count) ascending, the same network in device memory.
-void sortInPlace(uint first, uint count) {
-  uint n = 2u;
-  while (n < count) n <<= 1u;
-  for (uint k = 2u; k <= n; k <<= 1u)
-    for (uint j = k / 2u; j > 0u; j >>= 1u) {
-      for (uint i = gl_LocalInvocationIndex; i < n / 2u; i += kThreads) {
-        uvec2 ab = bitonicPair(i, k, j) + first;
-        if (ab.y < first + count && tileEntries[ab.x] > tileEntries[ab.y]) {
-          uint t = tileEntries[ab.x];
-          tileEntries[ab.x] = tileEntries[ab.y];
-          tileEntries[ab.y] = t;
-        }
-      }
-      memoryBarrierBuffer();
+      if (!inShared) memoryBarrierBuffer();
       barrier();
     }
 }
@@ -107,9 +104,9 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, u
   if (sortedHere) {
     for (uint i = gl_LocalInvocationIndex; i < count; i += kThreads) sortedKeys[i] = tileEntries[range.x + i];
     barrier();
-    sortShared(count);
+    sortKeys(true, 0u, count);
   } else {
-    sortInPlace(range.x, count);
+    sortKeys(false, range.x, count);
   }
   vec2 pixelCentre = vec2(pixel) + 0.5;
   for (uint start = 0u; start < count; start += kThreads) {
@@ -178,8 +175,7 @@ void main() {
   uint tile = gl_WorkGroupID.y * tileHeader.tilesX + gl_WorkGroupID.x;
   ivec2 pixel = ivec2(gl_WorkGroupID.xy * kParticleTileSize + gl_LocalInvocationID.xy);
   uint scale = tileHeader.scale;
-  ivec2 size = (ivec2(frame.viewport.xy) + int(scale) - 1) / int(scale);
-  bool inside = all(lessThan(pixel, size));
+  bool inside = all(lessThan(pixel, ivec2(tileHeader.layerWidth, tileHeader.layerHeight)));
   uvec2 framePixel = min(uvec2(pixel) * scale + scale / 2u, uvec2(frame.viewport.xy) - 1u);
   float sceneViewDepth = inside ? particlePixelDepth(pixel) : 0.0;
   if (gl_LocalInvocationIndex == 0u) finishedPixels = 0u;

@@ -3,6 +3,7 @@
 // operations, the same result on every device).
 #ifndef LLL_SORT_PAIRS_GLSL
 #define LLL_SORT_PAIRS_GLSL
+#include "particles/bitonic.glsl"
 #include "shared/particle_types.h"
 
 layout(std430, set = 0, binding = 0) buffer PairBlock {
@@ -14,11 +15,6 @@ layout(push_constant) uniform SortBlock {
 
 bool pairGreater(uvec2 a, uvec2 b) {
   return a.x > b.x || (a.x == b.x && a.y > b.y);
-}
-
-// Thread t's pair in a step of compare distance j: the lower element i and its partner i + j.
-uint lowerIndex(uint t, uint j) {
-  return 2u * j * (t / j) + (t % j);
 }
 
 #endif

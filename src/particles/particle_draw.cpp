@@ -39,20 +39,20 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
   const bool vertex = lighting_ == ParticleLighting::Vertex;
   const bool atlas = lighting_ == ParticleLighting::Atlas;
   const SpecializationConstants constants = lightTypeConstants(frame.scene);
-  GraphicsPipelineDesc desc;
-  desc.vertexShader = vertex ? "particles/draw_vertex_lit.vert" : "particles/draw.vert";
-  desc.fragmentShader = vertex  ? "particles/draw_prelit.frag"
-                        : atlas ? "particles/draw_atlas.frag"
-                                : litShader(lighting, "particles_pixel.frag");
-  desc.vertexInput = VertexInput::None;
-  desc.cullMode = VK_CULL_MODE_NONE;  // a turned quad may face either way
-  desc.depthWrite = false;
-  desc.blend = BlendMode::Alpha;
-  desc.colorFormats = {kHdrFormat};
-  desc.depthFormat = kDepthFormat;
-  desc.constants = constants;
   DrawPipelines pipelines;
   if (render_ == ParticleRender::Raster) {
+    GraphicsPipelineDesc desc;
+    desc.vertexShader = vertex ? "particles/draw_vertex_lit.vert" : "particles/draw.vert";
+    desc.fragmentShader = vertex  ? "particles/draw_prelit.frag"
+                          : atlas ? "particles/draw_atlas.frag"
+                                  : litShader(lighting, "particles_pixel.frag");
+    desc.vertexInput = VertexInput::None;
+    desc.cullMode = VK_CULL_MODE_NONE;  // a turned quad may face either way
+    desc.depthWrite = false;
+    desc.blend = BlendMode::Alpha;
+    desc.colorFormats = {kHdrFormat};
+    desc.depthFormat = kDepthFormat;
+    desc.constants = constants;
     pipelines.drawLayout = PipelineLayout(context_, {desc.vertexShader, desc.fragmentShader});
     pipelines.draw = Pipeline(context_, pipelines.drawLayout, desc);
   } else {
