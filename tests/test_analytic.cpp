@@ -172,10 +172,15 @@ struct Counts {
   int dark = 0;
 };
 
+// What a pixel should hold, from its ground point and the renderer that drew it (the shadow test
+// reads the cascades it fitted); NaN in the red channel: not checked.
+using Expectation = std::function<glm::vec3(const glm::vec3&, const Renderer&)>;
+
 // Renders the plane with `light` through `path` and expects every pixel within 1% (+ 2e-4
 // absolute, fp16 storage) of the formula.
-Counts checkAgainstFormula(const Scene& scene, const std::function<glm::vec3(const glm::vec3&)>& expectedAt,
-                           const ShadingPath& path, const std::string& fill = "compute") {
+Counts checkAgainstFormula(const Scene& scene, const Expectation& expectedAt, const ShadingPath& path,
+                           const std::string& fill = "compute",
+                           const std::function<void(RenderSettings&)>& configure = {}) {
   SCOPED_TRACE(std::string(path.name) + (fill == "compute" ? "" : " fill " + fill));
   RenderSettings settings;
   settings.width = 96;
@@ -185,6 +190,7 @@ Counts checkAgainstFormula(const Scene& scene, const std::function<glm::vec3(con
   settings.lllShade = path.lllShade;
   settings.surfaces = path.surfaces;
   settings.lllFill = fill;
+  if (configure) configure(settings);
   Context& context = test::gpuContext();
   const size_t before = context.validationMessages().size();
   Renderer renderer(context, scene, settings);
@@ -195,7 +201,8 @@ Counts checkAgainstFormula(const Scene& scene, const std::function<glm::vec3(con
   for (uint32_t y = 0; y < settings.height; ++y) {
     for (uint32_t x = 0; x < settings.width; ++x) {
       const glm::vec3 p = groundPoint(renderer, x, y, settings.width, settings.height);
-      const glm::vec3 expected = expectedAt(p);
+      const glm::vec3 expected = expectedAt(p, renderer);
+      if (std::isnan(expected.r)) continue;
       const glm::vec3 got = glm::vec3(hdr.at(x, y));
       for (int c = 0; c < 3; ++c) {
         // fp16 storage and a half-pixel position error near steep falloffs bound the tolerance.
@@ -210,6 +217,12 @@ Counts checkAgainstFormula(const Scene& scene, const std::function<glm::vec3(con
   EXPECT_EQ(failures, 0) << "pixels off the formula";
   test::expectNoValidationMessagesSince(before);
   return counts;
+}
+
+Counts checkAgainstFormula(const Scene& scene, const std::function<glm::vec3(const glm::vec3&)>& expectedAt,
+                           const ShadingPath& path, const std::string& fill = "compute") {
+  return checkAgainstFormula(
+      scene, [&](const glm::vec3& p, const Renderer&) { return expectedAt(p); }, path, fill);
 }
 
 Counts checkAgainstFormula(const Scene& scene, const PlaneMaterial& pm, const Light& light,
@@ -305,6 +318,102 @@ TEST_P(Analytic, DirectionalLightLightsEveryPixel) {
       },
       GetParam());
   EXPECT_EQ(c.dark, 0);
+}
+
+// A 2 m square 3 m over the plane (double-sided, facing up), centred over the origin, turned 20
+// degrees about the vertical so that its shadow's edges cross the pixel grid at every offset.
+constexpr float kOccluderTurn = 20.0f * kPi / 180.0f;
+glm::vec2 occluderCorner(int i) {
+  const glm::vec2 c(i == 0 || i == 1 ? -1.0f : 1.0f, i == 0 || i == 3 ? -1.0f : 1.0f);
+  const float cs = std::cos(kOccluderTurn), sn = std::sin(kOccluderTurn);
+  return {cs * c.x - sn * c.y, sn * c.x + cs * c.y};
+}
+
+void addSquareOccluder(Scene& scene) {
+  const uint32_t first = uint32_t(scene.vertices.size());
+  for (int i = 0; i < 4; ++i)
+    scene.vertices.push_back({{occluderCorner(i).x, 3.0f, occluderCorner(i).y}, {0, 1, 0}, {0, 0}});
+  const uint32_t firstIndex = uint32_t(scene.indices.size());
+  for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(i);
+  Material m = scene.materials[0];
+  m.name = "occluder";
+  m.doubleSided = true;
+  scene.materials.push_back(m);
+  scene.meshes.push_back(Mesh{"occluder", {Primitive{firstIndex, 6, first, 1}}});
+  scene.instances.push_back(Instance{1, glm::mat4(1.0f)});
+}
+
+// Whether ground point `g` (x, z) lies inside the occluder's outline moved by `offset`, and its
+// distance to that outline measured after scaling x by `xScale` (the sun's texels on the ground:
+// square along z, stretched along x by 1 / cos(zenith)).
+std::pair<bool, float> outlineDistance(glm::vec2 g, glm::vec2 offset, float xScale) {
+  bool inside = true;
+  float best = 1e30f;
+  for (int i = 0; i < 4; ++i) {
+    const glm::vec2 a = occluderCorner(i) + offset, b = occluderCorner((i + 1) % 4) + offset;
+    const glm::vec2 edge = b - a;
+    // Corners run clockwise seen from above (x right, z down the image): inside is on one side.
+    if (edge.x * (g.y - a.y) - edge.y * (g.x - a.x) > 0.0f) inside = false;
+    for (int k = 0; k <= 256; ++k) {
+      const glm::vec2 d = a + edge * (float(k) / 256.0f) - g;
+      best = std::min(best, std::hypot(d.x * xScale, d.y));
+    }
+  }
+  return {inside, best};
+}
+
+// The sun's shadow of a square occluder (shadows/sun_shadows.h), the sun 45 degrees off the zenith
+// along +x: the shadow is the square moved 3 tan(45) = 3 m towards -x. With one texel and no filter,
+// every pixel more than 1.5 of the sun's texels from the shadow's edge must be exactly lit (brdf x
+// cos x E) or exactly dark (no ambient); with PCF, every pixel 3 texels from it. Pixels that see
+// the occluder itself are skipped; both sides of every edge are checked.
+TEST_P(Analytic, SunShadowOfASquareOccluder) {
+  Scene scene = planeScene();
+  addSquareOccluder(scene);
+  DirectionalLight sun;
+  const float zenith = 45.0f * kPi / 180.0f;
+  sun.direction = -glm::vec3(std::sin(zenith), std::cos(zenith), 0.0f);
+  sun.color = {1.0f, 0.9f, 0.8f};
+  sun.illuminance = 3.0f;
+  scene.directionalLights = {sun};
+  const PlaneMaterial pm;
+  const glm::vec2 shift(-3.0f * std::tan(zenith), 0.0f);
+  for (const char* filter : {"none", "pcf"}) {
+    SCOPED_TRACE(std::string("--shadow-filter ") + filter);
+    const float edgeTexels = std::string(filter) == "none" ? 1.5f : 3.0f;
+    int nearEdge = 0;
+    Counts c = checkAgainstFormula(
+        scene,
+        [&](const glm::vec3& p, const Renderer& renderer) {
+          const glm::vec3 eye = scene.cameras[0].eye;
+          // Seen through the occluder (with a margin): not the plane.
+          const glm::vec3 q = eye + (p - eye) * ((eye.y - 3.0f) / eye.y);
+          if (outlineDistance({q.x, q.z}, {0.0f, 0.0f}, 1.0f).first ||
+              outlineDistance({q.x, q.z}, {0.0f, 0.0f}, 1.0f).second < 0.05f)
+            return glm::vec3(NAN);
+          const gpu::SunShadow& cascades = renderer.shadows().cascades();
+          uint32_t k = 0;  // straight down: every ground point at view depth eye.y
+          while (k + 1 < cascades.config.x && eye.y > cascades.splits[k]) ++k;
+          const auto [inside, toEdge] = outlineDistance({p.x, p.z}, shift, std::cos(zenith));
+          if (toEdge < edgeTexels * cascades.texelWorld[k]) {
+            ++nearEdge;
+            return glm::vec3(NAN);
+          }
+          if (inside) return glm::vec3(0.0f);
+          const glm::vec3 v = glm::normalize(eye - p);
+          return sun.color * sun.illuminance * brdfCosine(pm, shadingNormal(pm), v, -sun.direction);
+        },
+        GetParam(), "compute",
+        [&](RenderSettings& s) {
+          s.shadowFilter = filter;
+          s.shadowResolution = 1024;
+        });
+    std::printf("[ analytic ] %d pixels near the shadow's edge skipped\n", nearEdge);
+    EXPECT_GT(c.dark, 80) << "the shadow is in view";
+    EXPECT_GT(c.lit, 5000);
+    EXPECT_GT(nearEdge, 5) << "the edges cross pixel centres";
+    EXPECT_LT(nearEdge, 400) << "the edge band is a few texels wide";
+  }
 }
 
 // A light low over the plane (light arriving at up to ~85 degrees): a shading normal tilted by

@@ -39,6 +39,28 @@ TEST(Sun, EveryTechniqueMatchesForward) {
   }
 }
 
+// The sun's shadow (shadows/sun_shadows.h) with the sun strong enough to dominate the courtyard:
+// every technique, with its glass, shadows it as forward does (the pre-pass through its 8-bit
+// screen-space buffer, within its own bound), and the shadows are in the picture.
+TEST(Sun, ShadowsMatchForwardInEveryTechnique) {
+  SceneRequest request{"atrium", 0, 1};
+  request.suns = {"0.4,0.6,0.25,20,1,0.9,0.75"};
+  const Scene scene = loadScene(request);
+  RenderSettings settings;
+  settings.width = 160;
+  settings.height = 90;
+  const test::Rendered reference = test::render(scene, test::reference(settings));
+  RenderSettings unshadowed = test::reference(settings);
+  unshadowed.shadows = "none";
+  EXPECT_LT(test::psnr(test::render(scene, unshadowed).ldr, reference.ldr), 30.0) << "no shadow in view";
+  for (const char* technique : {"forward", "lll", "tiled", "clustered", "deferred", "prepass"}) {
+    settings.technique = technique;
+    const test::ImageBound bound = settings.technique == "prepass" ? test::kPrepassBound : test::kSameImage;
+    test::expectWithinBound(test::render(scene, settings).ldr, reference.ldr, bound,
+                            std::string("sun-shadowed atrium ") + technique);
+  }
+}
+
 // Smoke scatters the sun as it scatters a point light (particles/scattering.glsl), per pixel and
 // once per particle.
 TEST(Sun, LightsTheSmokeAsForwardDoes) {

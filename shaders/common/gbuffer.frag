@@ -5,6 +5,10 @@
 // Layout and decoding: common/gbuffer.glsl.
 #include "common/mesh_fragment.glsl"
 
+// False for deferred, which lights the sun in a pass of its own, as Infinity did
+// (lighting/deferred_sun.comp): then the accumulation starts with ambient and emission alone.
+layout(constant_id = 40) const bool kSunInAccumulation = true;
+
 layout(location = 0) out vec4 outAccumulation;
 layout(location = 1) out vec4 outGbuffer0;
 layout(location = 2) out vec4 outGbuffer1;
@@ -13,7 +17,7 @@ void main() {
   GpuMaterial m = materials[draw.ids.x];
   Surface s = surfaceAtFragment(m);
   if (m.flags.x == kAlphaMask && s.alpha < m.alpha.x) discard;
-  outAccumulation = vec4(unlistedLight(s), 1.0);
+  outAccumulation = vec4(kSunInAccumulation ? unlistedLight(s) : ambientAndEmission(s), 1.0);
   outGbuffer0 = vec4(s.baseColor, s.metallic);
   outGbuffer1 = vec4(s.normal, s.roughness);
 }

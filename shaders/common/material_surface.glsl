@@ -7,6 +7,7 @@
 #define LLL_MATERIAL_SURFACE_GLSL
 #include "common/brdf.glsl"
 #include "common/frame.glsl"
+#include "common/sun_shadow.glsl"
 
 // Screen-space derivatives of the surface at a pixel (position and texture coordinates, per pixel
 // right and down).
@@ -83,13 +84,26 @@ Surface assembleSurface(GpuMaterial m, MaterialSamples t, vec3 position, vec3 no
   return s;
 }
 
+// What needs no light: emission and a small constant ambient.
+vec3 ambientAndEmission(Surface s) {
+  return frame.ambient.rgb * s.baseColor * s.occlusion + s.emissive;
+}
+
 // What every technique adds besides its listed lights: emission, a small constant ambient and the
-// directional lights (the sun), which reach every pixel and so never enter a light list.
-vec3 unlistedLight(Surface s) {
-  vec3 sum = frame.ambient.rgb * s.baseColor * s.occlusion + s.emissive;
+// directional lights (the sun), which reach every pixel and so never enter a light list. The first
+// casts the shadow; `sunVisible` is how much of it reaches the surface.
+vec3 unlistedLightWith(Surface s, float sunVisible) {
+  vec3 sum = ambientAndEmission(s);
   for (uint i = 0u; i < frame.display.z; ++i)
-    sum += brdfCosine(s, frame.sunDirection[i].xyz) * frame.sunIlluminance[i].rgb;
+    sum +=
+        brdfCosine(s, frame.sunDirection[i].xyz) * frame.sunIlluminance[i].rgb * (i == 0u ? sunVisible : 1.0);
   return sum;
+}
+
+// As above, the sun's shadow looked up in its cascades (common/sun_shadow.glsl).
+vec3 unlistedLight(Surface s) {
+  bool sunFacing = frame.display.z > 0u && dot(s.normal, frame.sunDirection[0].xyz) > 0.0;
+  return unlistedLightWith(s, sunFacing ? sunVisibility(s.position, s.normal) : 1.0);
 }
 
 #endif

@@ -18,6 +18,8 @@
 
 layout(set = 0, binding = 3) uniform texture2D diffuseLight;
 layout(set = 0, binding = 4) uniform texture2D specularLight;
+// How much of the sun reaches the pixel (lighting/prepass_sun_shadow.comp), 8 bits.
+layout(set = 0, binding = 5) uniform texture2D sunShadowBuffer;
 
 layout(location = 0) out vec4 outColor;
 
@@ -37,5 +39,6 @@ void main() {
   vec3 metalCorrection =
       specularMean > 0.0 ? specularSums.rgb * (specularSums.a / (kMetalTermScale * specularMean)) : vec3(0.0);
   vec3 specular = max(specularSums.rgb - (1.0 - s.baseColor) * metalCorrection, vec3(0.0));
-  outColor = vec4(unlistedLight(s) + diffuse + specular, 1.0);
+  float sunVisible = texelFetch(sunShadowBuffer, pixel, 0).r;
+  outColor = vec4(unlistedLightWith(s, sunVisible) + diffuse + specular, 1.0);
 }

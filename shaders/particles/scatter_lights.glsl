@@ -6,7 +6,7 @@
 #include "particles/scattering.glsl"
 
 vec3 scatterLights(vec3 position, vec3 normal, vec3 towardEye, uvec2 pixel, float viewDepth) {
-  vec3 sum = scatterDirectionalLights(normal, towardEye);
+  vec3 sum = scatterDirectionalLights(position, normal, towardEye);
   LightCursor cursor = lightsAt(pixel, viewDepth);
   uint light;
   while (nextLight(cursor, light)) sum += scatterLight(lights[light], position, normal, towardEye);

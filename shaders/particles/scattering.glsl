@@ -9,6 +9,7 @@
 #ifndef LLL_PARTICLE_SCATTERING_GLSL
 #define LLL_PARTICLE_SCATTERING_GLSL
 #include "common/brdf.glsl"
+#include "common/sun_shadow.glsl"
 #include "particles/particle_data.glsl"
 
 // Light one light sends towards the eye per unit albedo, from a particle at `position`.
@@ -25,16 +26,19 @@ vec3 scatterLight(GpuLight light, vec3 position, vec3 normal, vec3 towardEye) {
   return light.colorIntensity.rgb * (light.colorIntensity.w * attenuation * (diffuse + back) / kPi);
 }
 
-// Light the directional lights (the sun) send towards the eye per unit albedo: as a point light's,
-// with the illuminance in place of intensity times attenuation.
-vec3 scatterDirectionalLights(vec3 normal, vec3 towardEye) {
+// Light the directional lights (the sun) send towards the eye per unit albedo from a particle at
+// `position`: as a point light's, with the illuminance in place of intensity times attenuation; the
+// first, which casts the shadow, is shadowed at the particle's centre (no normal offset: a puff has
+// no surface).
+vec3 scatterDirectionalLights(vec3 position, vec3 normal, vec3 towardEye) {
   vec3 sum = vec3(0.0);
   float wrap = system.shading.x;
   for (uint i = 0u; i < frame.display.z; ++i) {
     vec3 l = frame.sunDirection[i].xyz;
     float diffuse = max(dot(normal, l) + wrap, 0.0) / (1.0 + wrap);
     float back = system.shading.y * pow(max(dot(-towardEye, l), 0.0), system.shading.z);
-    sum += frame.sunIlluminance[i].rgb * ((diffuse + back) / kPi);
+    float visible = i == 0u ? sunVisibility(position, vec3(0.0)) : 1.0;
+    sum += frame.sunIlluminance[i].rgb * ((diffuse + back) * visible / kPi);
   }
   return sum;
 }

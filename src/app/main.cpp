@@ -94,6 +94,15 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       "--sun", job.scene.suns,
       "a directional light, \"x,y,z,lux[,r,g,b]\": x,y,z towards the sun, its illuminance in lux and "
       "linear colour; repeatable (4 at most, with the scene's own)");
+  cmd.add_option("--shadows", s.shadows,
+                 "shadows: sun (the brightest directional light casts cascaded shadow maps) | none")
+      ->check(CLI::IsMember({"sun", "none"}));
+  cmd.add_option("--cascades", s.cascades, "sun shadow cascades (1 to 4)")->check(CLI::Range(1u, 4u));
+  cmd.add_option("--shadow-resolution", s.shadowResolution, "texels along each cascade's side (16 to 8192)")
+      ->check(CLI::Range(16u, 8192u));
+  cmd.add_option("--shadow-filter", s.shadowFilter,
+                 "sun shadow filter: pcf (3x3 bilinear comparisons) | none (one texel)")
+      ->check(CLI::IsMember({"pcf", "none"}));
   cmd.add_option(
          "--gi", job.scene.gi.mode,
          "indirect light: none | vpl (instant radiosity: photons traced from the lights leave virtual "

@@ -3,6 +3,8 @@
 //                         (render/gbuffer.h), with ambient and emission written straight into the
 //                         accumulation target
 //   deferred-lights       each visible light as a bounding volume, additively blended
+//   deferred-sun          the directional lights over the G-buffer, the first shadowed through its
+//                         cascades (shadows/sun_shadows.h): Infinity's sun pass, in compute
 //   deferred-resolve      the fp32 accumulation into the HDR target; with --aa edge
 //   (deferred-edge-aa)    blending pixels on depth or normal discontinuities on the way
 // Glass and particles are the shared passes', lit through the forward lighting interface (every
@@ -59,18 +61,21 @@ class Deferred final : public Technique {
   Deferred(Context& context, const GpuScene& scene, const RenderSettings& settings,
            const FrameTargets& targets)
       : lightLayout_(context, kLightVolumeBindings),
-        gbuffer_(context, scene, targets, kAccumulationFormat),
+        gbuffer_(context, scene, targets, kAccumulationFormat, false),
         volumes_(context, uint32_t(scene.scene().lights.size())),
         lightFragments_(context),
         pixels_(double(targets.width) * targets.height),
         edgeAa_(edgeAntiAliasing(settings)),
         litTranslucents_(forwardLitTranslucents(settings)) {
-    const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    const VkImageUsageFlags usage =
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
     accumulation_ = Image(context, targets.width, targets.height, kAccumulationFormat, usage, "accumulation");
     resolveLayout_ = PipelineLayout(context, kEdgeAaBindings);
     resolvePipeline_ = Pipeline(context, resolveLayout_, "lighting/deferred_edge_aa.comp",
                                 SpecializationConstants{{0, edgeAa_ ? 1u : 0u}});
     createLightPipelines(context);
+    sunLayout_ = PipelineLayout(context, {"lighting/deferred_sun.comp"});
+    sunPipeline_ = Pipeline(context, sunLayout_, "lighting/deferred_sun.comp");
   }
 
   OpaqueShading opaqueShading() const override { return OpaqueShading::Own; }
@@ -78,6 +83,7 @@ class Deferred final : public Technique {
   void shadeOpaque(FrameContext& frame) override {
     geometryPass(frame);
     lightPass(frame);
+    sunPass(frame);
     resolvePass(frame);
   }
 
@@ -155,7 +161,7 @@ class Deferred final : public Technique {
               .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
           volumes_.addBindings(writer, frame)
-              .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lightLayout_.handle());
+              .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lightLayout_);
           volumes_.bindGeometry(cmd);
           lightFragments_.begin(cmd);
           for (const VolumeRun& run : volumes_.runs()) {
@@ -164,6 +170,30 @@ class Deferred final : public Technique {
           }
           lightFragments_.end(cmd);
           vkCmdEndRendering(cmd);
+        });
+  }
+
+  // The directional lights, in their own pass over the G-buffer (none: no pass).
+  void sunPass(FrameContext& frame) {
+    if (frame.uniforms.display.z == 0) return;
+    const FrameTargets& t = frame.targets;
+    constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    frame.graph.pass(
+        "deferred-sun",
+        {uses(accumulation_, Use::StorageReadWrite, kCompute), uses(t.depth, Use::Sampled, kCompute),
+         uses(gbuffer_.target0(), Use::Sampled, kCompute), uses(gbuffer_.target1(), Use::Sampled, kCompute)},
+        [&](VkCommandBuffer cmd) {
+          sunPipeline_.bind(cmd);
+          meshPassDescriptors(frame)
+              .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(),
+                     VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+              .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target0().view(),
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, accumulation_.view(), VK_IMAGE_LAYOUT_GENERAL)
+              .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, sunLayout_);
+          dispatchPerPixel(cmd, t);
         });
   }
 
@@ -185,13 +215,15 @@ class Deferred final : public Technique {
               .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
               .image(8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-              .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolveLayout_.handle());
+              .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolveLayout_);
           dispatchPerPixel(cmd, t);
         });
   }
 
   PipelineLayout lightLayout_;
   PipelineLayout resolveLayout_;
+  PipelineLayout sunLayout_;
+  Pipeline sunPipeline_;
   Pipeline outsidePipeline_;
   Pipeline insidePipeline_;
   Pipeline resolvePipeline_;

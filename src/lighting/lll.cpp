@@ -345,7 +345,7 @@ void LightLinkedList::reduceTileDepth(FrameContext& frame) {
                      descriptors(frame)
                          .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frame.targets.depth.view(),
                                 VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-                         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+                         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
                      vkCmdDispatch(cmd, divideRoundingUp(tilesX_, gpu::kTileGroupSize),
                                    divideRoundingUp(tilesY_, gpu::kTileGroupSize), 1);
                    });
@@ -369,7 +369,7 @@ void LightLinkedList::fillCompute(FrameContext& frame) {
   frame.graph.pass(
       "lll-fill-compute", fillUses(VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT), [&](VkCommandBuffer cmd) {
         computeFill_.bind(cmd);
-        descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+        descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
         vkCmdDispatch(cmd, divideRoundingUp(tilesX_, 8) * fillSplits_, divideRoundingUp(tilesY_, 8), 1);
       });
 }
@@ -414,7 +414,7 @@ void LightLinkedList::drawShellBatch(FrameContext& frame, uint32_t first, uint32
     if (r.begin >= r.end) continue;
     const Pipeline& pipeline = backFaces ? shellBack_[shape] : shellFront_[shape];
     pipeline.bind(cmd);
-    descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fillLayout_.handle());
+    descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fillLayout_);
     vkCmdPushConstants(cmd, fillLayout_.handle(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(push), &push);
     const VkDeviceSize offset = 0;
     VkBuffer vertices = r.mesh.vertices.handle();
@@ -432,7 +432,7 @@ void LightLinkedList::measureLists(FrameContext& frame) {
                     uses(counters_, Use::StorageReadWrite, kCompute)},
                    [&](VkCommandBuffer cmd) {
                      statsPipeline_.bind(cmd);
-                     descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+                     descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
                      vkCmdDispatch(cmd, divideRoundingUp(tiles_, 64), 1, 1);
                    });
 }

@@ -37,13 +37,8 @@ constexpr uint32_t kSmall = 0;         // no stencil: front faces against depth,
 constexpr uint32_t kStencilZPass = 1;  // camera outside: count the faces in front of the scene
 constexpr uint32_t kStencilZFail = 2;  // camera may be inside: count the faces behind the scene
 
-const std::initializer_list<Binding> kMeshBindings = {
-    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGraphicsStages},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {4, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-};
+// The sun's screen-space shadow buffer (lighting/prepass_sun_shadow.comp): 8 bits, as Resistance 2's.
+constexpr VkFormat kSunShadowFormat = VK_FORMAT_R8_UNORM;
 
 VkFormat depthStencilFormat(Context& context) {
   for (VkFormat format : {VK_FORMAT_D32_SFLOAT_S8_UINT, VK_FORMAT_D24_UNORM_S8_UINT}) {
@@ -115,8 +110,10 @@ struct LightPassCounts {
 class Prepass final : public Technique {
  public:
   Prepass(Context& context, const GpuScene& scene, const FrameTargets& targets)
-      : meshLayout_(context, kMeshBindings, sizeof(gpu::DrawPush), kGraphicsStages,
+      : meshLayout_(context,
+                    {"common/mesh.vert", "lighting/prepass_normals.frag", "lighting/prepass_combine.frag"},
                     {scene.materialSetLayout()}),
+        sunShadowLayout_(context, {"lighting/prepass_sun_shadow.comp"}),
         lightLayout_(context, kLightVolumeBindings),
         depthStencilFormat_(depthStencilFormat(context)),
         volumes_(context, uint32_t(scene.scene().lights.size())),
@@ -125,6 +122,9 @@ class Prepass final : public Technique {
     normals_ = Image(context, targets.width, targets.height, kNormalFormat, color, "prepass-normals");
     diffuse_ = Image(context, targets.width, targets.height, kLightBufferFormat, color, "prepass-diffuse");
     specular_ = Image(context, targets.width, targets.height, kLightBufferFormat, color, "prepass-specular");
+    sunShadow_ = Image(context, targets.width, targets.height, kSunShadowFormat,
+                       VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "prepass-sun-shadow");
+    sunShadowPipeline_ = Pipeline(context, sunShadowLayout_, "lighting/prepass_sun_shadow.comp");
     depthStencil_ = Image(context, targets.width, targets.height, depthStencilFormat_,
                           VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "prepass-depth-stencil");
     createScenePipelines(context);
@@ -135,6 +135,7 @@ class Prepass final : public Technique {
 
   void shadeOpaque(FrameContext& frame) override {
     normalsPass(frame);
+    sunShadowPass(frame);
     lightPass(frame);
     combinePass(frame);
   }
@@ -150,6 +151,7 @@ class Prepass final : public Technique {
         // Totals for the bench's memory column (keys ending in _bytes).
         {"normals_bytes", kNormalBytesPerPixel * pixels_},
         {"light_buffers_bytes", kLightBufferBytesPerPixel * pixels_},
+        {"sun_shadow_buffer_bytes", pixels_},
         {"depth_stencil_bytes", depthStencilBytes * pixels_},
         {"lights-drawn", volumes_.counts().visible},
         {"lights-stencil-marked", counts_.stencilZPass + counts_.stencilZFail},
@@ -219,16 +221,35 @@ class Prepass final : public Technique {
 
   void normalsPass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
-    frame.graph.pass("prepass-normals",
-                     {uses(normals_, Use::ColorWrite), uses(depthStencil_, Use::DepthStencilWrite)},
+    frame.graph.pass(
+        "prepass-normals", {uses(normals_, Use::ColorWrite), uses(depthStencil_, Use::DepthStencilWrite)},
+        [&](VkCommandBuffer cmd) {
+          beginDepthStencilRendering(cmd, t, {{normals_.view(), true}}, depthStencil_.view(),
+                                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, true);
+          normalsPipeline_.bind(cmd);
+          meshPassDescriptors(frame).push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, meshLayout_);
+          frame.scene.draw(cmd, meshLayout_.handle(), DrawFilter::Opaque);
+          vkCmdEndRendering(cmd);
+        });
+  }
+
+  // Resistance 2's screen-space sun shadow: how much of the sun reaches each pixel, 8 bits.
+  void sunShadowPass(FrameContext& frame) {
+    constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    frame.graph.pass("prepass-sun-shadow",
+                     {uses(frame.targets.depth, Use::Sampled, kCompute),
+                      uses(normals_, Use::Sampled, kCompute), uses(sunShadow_, Use::StorageWrite, kCompute)},
                      [&](VkCommandBuffer cmd) {
-                       beginDepthStencilRendering(cmd, t, {{normals_.view(), true}}, depthStencil_.view(),
-                                                  VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, true);
-                       normalsPipeline_.bind(cmd);
-                       meshPassDescriptors(frame).push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                                       meshLayout_.handle());
-                       frame.scene.draw(cmd, meshLayout_.handle(), DrawFilter::Opaque);
-                       vkCmdEndRendering(cmd);
+                       sunShadowPipeline_.bind(cmd);
+                       meshPassDescriptors(frame)
+                           .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, frame.targets.depth.view(),
+                                  VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+                           .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, normals_.view(),
+                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+                           .image(7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, sunShadow_.view(),
+                                  VK_IMAGE_LAYOUT_GENERAL)
+                           .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, sunShadowLayout_);
+                       dispatchPerPixel(cmd, frame.targets);
                      });
   }
 
@@ -248,7 +269,7 @@ class Prepass final : public Technique {
                        writer.image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, normals_.view(),
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
                        volumes_.addBindings(writer, frame)
-                           .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lightLayout_.handle());
+                           .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lightLayout_);
                        volumes_.bindGeometry(cmd);
                        counts_ = {};
                        for (const VolumeRun& run : volumes_.runs()) drawRun(cmd, run);
@@ -276,34 +297,40 @@ class Prepass final : public Technique {
   void combinePass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
     constexpr VkPipelineStageFlags2 kFragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-    frame.graph.pass("prepass-combine",
-                     {uses(t.hdr, Use::ColorWrite), uses(t.depth, Use::DepthTest),
-                      uses(diffuse_, Use::Sampled, kFragment), uses(specular_, Use::Sampled, kFragment)},
-                     [&](VkCommandBuffer cmd) {
-                       beginRendering(cmd, t.width, t.height, {{t.hdr.view(), true}}, t.depth.view(),
-                                      VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-                       combinePipeline_.bind(cmd);
-                       meshPassDescriptors(frame)
-                           .image(3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, diffuse_.view(),
-                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-                           .image(4, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, specular_.view(),
-                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-                           .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, meshLayout_.handle());
-                       frame.scene.draw(cmd, meshLayout_.handle(), DrawFilter::Opaque);
-                       vkCmdEndRendering(cmd);
-                     });
+    frame.graph.pass(
+        "prepass-combine",
+        {uses(t.hdr, Use::ColorWrite), uses(t.depth, Use::DepthTest), uses(diffuse_, Use::Sampled, kFragment),
+         uses(specular_, Use::Sampled, kFragment), uses(sunShadow_, Use::Sampled, kFragment)},
+        [&](VkCommandBuffer cmd) {
+          beginRendering(cmd, t.width, t.height, {{t.hdr.view(), true}}, t.depth.view(),
+                         VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
+          combinePipeline_.bind(cmd);
+          meshPassDescriptors(frame)
+              .image(3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, diffuse_.view(),
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(4, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, specular_.view(),
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, sunShadow_.view(),
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, meshLayout_);
+          frame.scene.draw(cmd, meshLayout_.handle(), DrawFilter::Opaque);
+          vkCmdEndRendering(cmd);
+        });
   }
 
   PipelineLayout meshLayout_;
+  PipelineLayout sunShadowLayout_;
   PipelineLayout lightLayout_;
   VkFormat depthStencilFormat_;
   Pipeline normalsPipeline_;
+  Pipeline sunShadowPipeline_;
   Pipeline combinePipeline_;
   Pipeline smallPipeline_;
   Pipeline shadePipeline_;
   Pipeline markZPassPipeline_;
   Pipeline markZFailPipeline_;
   Image normals_;
+  Image sunShadow_;
   Image diffuse_;
   Image specular_;
   Image depthStencil_;

@@ -48,7 +48,7 @@ void BitonicSort::record(VkCommandBuffer cmd, const Buffer& pairs) const {
     pipeline.bind(cmd);
     DescriptorWriter()
         .storage(0, pairs.handle())
-        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle());
+        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
     const gpu::SortPush push{glm::uvec4(k, j, padded_, 0)};
     vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
     vkCmdDispatch(cmd, groups, 1, 1);

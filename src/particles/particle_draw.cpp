@@ -8,6 +8,7 @@
 #include "particles/particle_system.h"
 #include "render/frame.h"
 #include "scene/errors.h"
+#include "shadows/sun_shadows.h"
 
 namespace lll {
 
@@ -80,6 +81,7 @@ DescriptorWriter ParticleSystem::systemDescriptors(const FrameContext& frame) co
       .storage(14, counters_.handle());
   if (radiance_) writer.storage(15, radiance_.handle());
   if (atlas_) writer.storage(22, atlas_.handle());
+  if (frame.shadows) frame.shadows->bind(writer);
   return writer;
 }
 

@@ -6,6 +6,7 @@
 
 #include "gpu/context.h"
 #include "scene/errors.h"
+#include "shadows/sun_shadows.h"
 
 #include "gpu/pipeline.h"
 
@@ -49,6 +50,7 @@ DescriptorWriter meshPassDescriptors(const FrameContext& frame) {
   writer.storage(0, frame.uniformBuffer.handle())
       .storage(1, frame.scene.lightBuffer().handle())
       .storage(2, frame.scene.materialBuffer().handle());
+  if (frame.shadows) frame.shadows->bind(writer);
   return writer;
 }
 
@@ -63,7 +65,7 @@ void drawSceneIntoHdr(FrameContext& frame, const Pipeline& pipeline, const Pipel
   beginRendering(frame.cmd, t.width, t.height, {{t.hdr.view(), clearHdr}}, t.depth.view(),
                  VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
   pipeline.bind(frame.cmd);
-  meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout.handle());
+  meshPassDescriptors(frame).push(frame.context, frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
   frame.scene.draw(frame.cmd, layout.handle(), filter);
   vkCmdEndRendering(frame.cmd);
 }

@@ -18,6 +18,7 @@ namespace lll {
 
 class Context;
 class ParticleSystem;
+class SunShadows;
 class VisibilityBuffer;
 
 // Screen-sized targets. Their layouts are the frame graph's business (render/frame_graph.h).
@@ -48,6 +49,9 @@ struct FrameContext {
   // With --surfaces visibility: the visibility buffer drawn this frame (targets.visibility holds
   // its ids). Null with --surfaces gbuffer.
   const VisibilityBuffer* visibility = nullptr;
+  // The sun's shadow (shadows/sun_shadows.h), drawn before any lighting: meshPassDescriptors binds
+  // it for every pass that lights surfaces.
+  const SunShadows* shadows = nullptr;
 };
 
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
@@ -70,7 +74,8 @@ void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
 inline constexpr VkShaderStageFlags kGraphicsStages =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
-// Set 0 of a mesh pass: frame uniforms (0), lights (1), materials (2); meshPassDescriptors writes it.
+// Set 0 of a mesh pass: frame uniforms (0), lights (1), materials (2); meshPassDescriptors writes it,
+// and the sun's shadow (26, 27) for the passes that light (their reflected layouts have them).
 inline const std::initializer_list<Binding> kMeshPassBindings = {
     {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGraphicsStages},
     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},

@@ -19,8 +19,10 @@ class GBuffer {
 
   GBuffer() = default;
   // `accumulationFormat`: the format of the target that record() writes ambient and emission to.
+  // `sunInAccumulation`: whether the directional lights go into the accumulation with ambient and
+  // emission (false: the technique lights them in a pass of its own).
   GBuffer(Context& context, const GpuScene& scene, const FrameTargets& targets,
-          VkFormat accumulationFormat = kHdrFormat);
+          VkFormat accumulationFormat = kHdrFormat, bool sunInAccumulation = true);
 
   // Draws the opaque scene once (depth EQUAL the depth pass) into `accumulation` (cleared: ambient
   // and emission) and the two targets, as the frame-graph pass `passName`.

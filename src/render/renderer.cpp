@@ -64,6 +64,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   createTargets();
   uniformBuffer_ =
       Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+  shadows_ = std::make_unique<SunShadows>(context, *gpuScene_, sunShadowOptions(settings));
   updateUniforms();
 
   depthLayout_ = meshPassLayout(context, *gpuScene_);
@@ -198,11 +199,17 @@ void Renderer::updateUniforms() {
                          settings_.debugView == "heatmap" ? kHeatmapScale : 0u, 0u, 0u);
   const std::vector<DirectionalLight>& suns = gpuScene_->scene().directionalLights;
   u.display.z = uint32_t(std::min<size_t>(suns.size(), gpu::kMaxDirectionalLights));  // loaders refuse more
+  // The sun that casts the shadow goes first (shaders read its shadow as the first's).
+  std::vector<uint32_t> order(u.display.z);
+  for (uint32_t i = 0; i < u.display.z; ++i) order[i] = i;
+  if (u.display.z > 0) std::swap(order[0], order[uint32_t(shadowCastingSun(suns))]);
   for (uint32_t i = 0; i < u.display.z; ++i) {
-    u.sunDirection[i] = glm::vec4(-glm::normalize(suns[i].direction), 0.0f);
-    u.sunIlluminance[i] = glm::vec4(suns[i].color * suns[i].illuminance, 0.0f);
+    const DirectionalLight& sun = suns[order[i]];
+    u.sunDirection[i] = glm::vec4(-glm::normalize(sun.direction), 0.0f);
+    u.sunIlluminance[i] = glm::vec4(sun.color * sun.illuminance, 0.0f);
   }
   uniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
+  shadows_->update(uniforms_, bounds);
 }
 
 FrameResult Renderer::renderFrame(bool capture) {
@@ -235,6 +242,8 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
   auto s = technique_->stats();
   const auto lit = lit_->stats();
   s.insert(s.end(), lit.begin(), lit.end());
+  const auto shadows = shadows_->stats();
+  s.insert(s.end(), shadows.begin(), shadows.end());
   s.push_back({"instances", double(scene_.instances.size())});
   s.push_back({"visible_instances", double(gpuScene_->visibleInstances())});
   // 1 when opaque surfaces came from the visibility buffer (its ids are lighting memory too).
@@ -253,8 +262,10 @@ void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advancePartic
   if (visibility_) visibility_->prepareFrame(*gpuScene_);
   timer_.reset(cmd);
   FrameGraph graph(cmd, timer_);
-  FrameContext frame{context_,  cmd,       graph,   *gpuScene_,       targets_,         uniformBuffer_,
-                     uniforms_, settings_, capture, particles_.get(), visibility_.get()};
+  FrameContext frame{context_,  cmd,       graph,   *gpuScene_,       targets_,          uniformBuffer_,
+                     uniforms_, settings_, capture, particles_.get(), visibility_.get(), shadows_.get()};
+  // The sun's shadow first: every lighting pass after it reads it.
+  shadows_->record(frame);
   if (visibility_)
     visibility_->record(frame);
   else
@@ -278,7 +289,7 @@ void Renderer::depthPrepass(FrameContext& frame) {
     beginRendering(cmd, targets_.width, targets_.height, {}, targets_.depth.view(),
                    VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
     depthOpaque_.bind(cmd);
-    meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depthLayout_.handle());
+    meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depthLayout_);
     gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::OpaqueOnly);
     depthMask_.bind(cmd);
     gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::MaskOnly);
@@ -297,7 +308,7 @@ void Renderer::tonemap(FrameContext& frame) {
             .storage(0, uniformBuffer_.handle())
             .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
             .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
-            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapLayout_.handle());
+            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapLayout_);
         dispatchPerPixel(cmd, targets_);
       });
 }

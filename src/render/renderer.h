@@ -13,6 +13,7 @@
 #include "render/gpu_scene.h"
 #include "render/settings.h"
 #include "scene/camera.h"
+#include "shadows/sun_shadows.h"
 
 namespace lll {
 
@@ -70,6 +71,7 @@ class Renderer {
   const gpu::FrameUniforms& uniforms() const { return uniforms_; }
   Technique& technique() { return *technique_; }
   GpuScene& gpuScene() { return *gpuScene_; }
+  const SunShadows& shadows() const { return *shadows_; }
   ParticleSystem* particles() { return particles_.get(); }
   // The visibility buffer the frame is drawn with, or null (--surfaces gbuffer, or the fallback).
   const VisibilityBuffer* visibility() const { return visibility_.get(); }
@@ -103,6 +105,7 @@ class Renderer {
   Pipeline depthMask_;
   PipelineLayout tonemapLayout_;
   Pipeline tonemap_;
+  std::unique_ptr<SunShadows> shadows_;
   std::unique_ptr<ParticleSystem> particles_;
   std::unique_ptr<VisibilityBuffer> visibility_;  // null with --surfaces gbuffer
   std::string surfacesFallback_;                  // why --surfaces visibility fell back to gbuffer, if it did

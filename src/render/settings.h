@@ -45,6 +45,12 @@ struct RenderSettings {
   uint32_t particleCount = 0;   // 0: the preset's own count
   std::string particleEmitter;  // "x,y,z": where the emitter sits; empty: the scene's smoke source
   uint32_t seed = 1;            // simulation seed (the CLI's --seed)
+  // The sun's shadow (shadows/sun_shadows.h): sun | none; cascades, texels along a cascade's side,
+  // pcf | none (one texel, nearest).
+  std::string shadows = "sun";
+  uint32_t cascades = 4;
+  uint32_t shadowResolution = 2048;
+  std::string shadowFilter = "pcf";
 };
 
 }  // namespace lll

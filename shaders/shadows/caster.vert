@@ -1,0 +1,31 @@
+#version 460
+// The sun's shadow casters (src/shadows/sun_shadows.h): every opaque and alpha-masked primitive,
+// every instance, drawn into one cascade's cell of the shadow atlas. Alpha-masked ones go on to
+// common/depth_mask.frag, which reads what common/mesh.vert would pass it; only the UV matters.
+#include "common/frame.glsl"
+#include "shared/shadow_types.h"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 2) in vec2 inUv;
+layout(location = 8) in mat4 inModel;
+
+layout(std430, set = 0, binding = 26) readonly buffer SunShadowBlock {
+  SunShadow sunShadow;
+};
+layout(push_constant) uniform CasterBlock {
+  CasterPush caster;
+};
+
+layout(location = 0) out vec3 outWorldPosition;
+layout(location = 1) out vec3 outNormal;
+layout(location = 2) out vec2 outUv;
+layout(location = 3) out vec4 outTangent;
+
+void main() {
+  vec4 world = inModel * vec4(inPosition, 1.0);
+  outWorldPosition = world.xyz;
+  outNormal = vec3(0.0, 0.0, 1.0);
+  outUv = inUv;
+  outTangent = vec4(1.0, 0.0, 0.0, 1.0);
+  gl_Position = sunShadow.cascadeViewProj[caster.cascade.x] * world;
+}

@@ -1,0 +1,38 @@
+// The sun's cascaded shadow map, as the passes that light surfaces read it (common/sun_shadow.glsl)
+// and src/shadows/sun_shadows.cpp fits it. Written once here; see shared.h for the rules.
+#ifndef LLL_SHADOW_TYPES_H
+#define LLL_SHADOW_TYPES_H
+#include "shared/shared.h"
+
+LLL_NAMESPACE_BEGIN
+
+LLL_CONST(uint, kMaxCascades, 4u);
+// Cascades sit in the shadow atlas in rows of this many cells, each shadowResolution square.
+LLL_CONST(uint, kCascadeColumns, 2u);
+LLL_CONST(uint, kShadowFilterNone, 0u);  // one texel, nearest: edges where geometry puts them
+LLL_CONST(uint, kShadowFilterPcf, 1u);   // 3x3 bilinear comparisons: a 4x4-texel tent
+
+struct SunShadow {
+  // World to a cascade's light clip space: x, y in [-1, 1] across its square, z in [0, 1] from the
+  // scene's nearest point towards the sun to its farthest.
+  mat4 cascadeViewProj[kMaxCascades];
+  vec4 splits;      // view depth (along the camera axis) where each cascade ends
+  vec4 texelWorld;  // the world size of one texel of each cascade
+  vec4 bias;        // x normal offset (texels), y slope bias (texels of depth per unit tan(theta)),
+                    // z constant bias (world units), w world units per unit of shadow depth
+  vec4 atlas;       // x 1 / resolution, y resolution, z 1 / columns, w 1 / rows
+  uvec4 config;     // x cascades in use (0: the sun casts no shadow), y unused, z kShadowFilter*,
+                    // w unused. The frame's first directional light casts it (the renderer puts the
+                    // brightest first).
+};
+LLL_CHECK_SIZE(SunShadow, kMaxCascades * 64 + 5 * 16);
+
+// The shadow caster pass's push constants: the draw's (DrawPush) and the cascade being drawn.
+struct CasterPush {
+  uvec4 ids;      // x material index, yzw unused (as DrawPush)
+  uvec4 cascade;  // x the cascade, yzw unused
+};
+LLL_CHECK_SIZE(CasterPush, 32);
+
+LLL_NAMESPACE_END
+#endif

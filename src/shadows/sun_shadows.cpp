@@ -1,0 +1,264 @@
+#include "shadows/sun_shadows.h"
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include "gpu/context.h"
+#include "gpu/vk_check.h"
+#include "render/frame.h"
+#include "render/gpu_scene.h"
+#include "render/settings.h"
+#include "scene/errors.h"
+
+namespace lll {
+
+namespace {
+
+// How far the splits lean from uniform towards logarithmic (the "practical" split scheme), and
+// where the logarithmic ones start, as a share of the far plane: from the camera's near plane,
+// which reverse depth puts at 1/10,000 of the far one, three of four cascades would cover the
+// first few percent of the view.
+constexpr float kLogarithmicShare = 0.75f;
+constexpr float kLogarithmicStart = 0.01f;
+// Lookup biases (SunShadow::bias): the normal offset in texels, the slope bias in texels per unit
+// of tan(theta), a constant bias in world units per unit of the scene's depth range.
+constexpr float kNormalOffsetTexels = 1.0f;
+constexpr float kSlopeBiasTexels = 1.0f;
+constexpr float kConstantBiasShare = 1e-4f;
+
+constexpr VkShaderStageFlags kCasterStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+// The smallest sphere around the slice of a symmetric frustum between view depths d0 and d1, as a
+// depth along the view axis and a radius: its corners lie at half-diagonals d * diagonal.
+std::pair<float, float> sliceSphere(float d0, float d1, float diagonal) {
+  const float a = d0 * diagonal, b = d1 * diagonal;
+  float centre = 0.5f * ((b * b - a * a) / (d1 - d0) + d0 + d1);
+  centre = std::clamp(centre, d0, d1);
+  const float radius = std::max(std::hypot(a, centre - d0), std::hypot(b, d1 - centre));
+  return {centre, radius};
+}
+
+}  // namespace
+
+SunShadowOptions sunShadowOptions(const RenderSettings& s) {
+  SunShadowOptions o;
+  if (s.shadows != "sun" && s.shadows != "none")
+    throw InputError(fmt::format("--shadows {}: expected sun or none", s.shadows));
+  if (s.cascades < 1 || s.cascades > gpu::kMaxCascades)
+    throw InputError(fmt::format("--cascades {}: expected 1 to {}", s.cascades, gpu::kMaxCascades));
+  if (s.shadowResolution < 16 || s.shadowResolution > 8192)
+    throw InputError(fmt::format("--shadow-resolution {}: expected 16 to 8192 texels", s.shadowResolution));
+  if (s.shadowFilter != "pcf" && s.shadowFilter != "none")
+    throw InputError(fmt::format("--shadow-filter {}: expected pcf or none", s.shadowFilter));
+  o.cascades = s.shadows == "none" ? 0 : s.cascades;
+  o.resolution = s.shadowResolution;
+  o.filter = s.shadowFilter == "pcf" ? gpu::kShadowFilterPcf : gpu::kShadowFilterNone;
+  return o;
+}
+
+int shadowCastingSun(const std::vector<DirectionalLight>& suns) {
+  int best = -1;
+  float brightest = -1.0f;
+  for (size_t i = 0; i < suns.size() && i < gpu::kMaxDirectionalLights; ++i) {
+    const float power = suns[i].illuminance * (suns[i].color.r + suns[i].color.g + suns[i].color.b) / 3.0f;
+    if (power > brightest) {
+      brightest = power;
+      best = int(i);
+    }
+  }
+  return best;
+}
+
+gpu::SunShadow fitSunCascades(const gpu::FrameUniforms& frame, const glm::vec3& towardSun,
+                              const Bounds& scene, const SunShadowOptions& options) {
+  gpu::SunShadow out{};
+  const uint32_t count = std::clamp(options.cascades, 1u, gpu::kMaxCascades);
+  const float near = frame.depthParams.x, far = frame.depthParams.y;
+  const float diagonal = std::hypot(frame.depthParams.z, frame.depthParams.w);
+  const glm::mat4 cameraToWorld = glm::inverse(frame.view);
+  // The sun's frame: a rotation only (its origin the world's), so snapping is in world-fixed texels.
+  const glm::vec3 l = glm::normalize(towardSun);
+  const glm::vec3 up = std::abs(l.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+  const glm::mat4 sunView = glm::lookAtRH(glm::vec3(0.0f), -l, up);
+  // Depth range: the whole scene along the sun, with a margin so nothing sits on a plane.
+  float closest = 1e30f, farthest = -1e30f;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 corner(i & 1 ? scene.max.x : scene.min.x, i & 2 ? scene.max.y : scene.min.y,
+                           i & 4 ? scene.max.z : scene.min.z);
+    const float depth = -(sunView * glm::vec4(corner, 1.0f)).z;
+    closest = std::min(closest, depth);
+    farthest = std::max(farthest, depth);
+  }
+  const float margin = std::max(1e-3f, 0.01f * (farthest - closest));
+  closest -= margin;
+  farthest += margin;
+  const float resolution = float(options.resolution);
+  const float logStart = std::max(near, kLogarithmicStart * far);
+  float previous = near;
+  for (uint32_t c = 0; c < count; ++c) {
+    const float t = float(c + 1) / float(count);
+    const float split = c + 1 == count ? far
+                                       : kLogarithmicShare * logStart * std::pow(far / logStart, t) +
+                                             (1.0f - kLogarithmicShare) * (near + (far - near) * t);
+    const auto [centreDepth, radius] = sliceSphere(previous, split, diagonal);
+    const glm::vec3 centre = glm::vec3(cameraToWorld * glm::vec4(0.0f, 0.0f, -centreDepth, 1.0f));
+    const float texel = 2.0f * radius / resolution;
+    glm::vec2 middle = glm::vec2(sunView * glm::vec4(centre, 1.0f));
+    middle = glm::floor(middle / texel) * texel;
+    // Reverse depth, as the camera's: the point nearest the sun at 1, the farthest at 0.
+    const glm::mat4 projection = glm::orthoRH_ZO(middle.x - radius, middle.x + radius, middle.y - radius,
+                                                 middle.y + radius, farthest, closest);
+    out.cascadeViewProj[c] = projection * sunView;
+    out.splits[c] = split;
+    out.texelWorld[c] = texel;
+    previous = split;
+  }
+  out.bias = glm::vec4(kNormalOffsetTexels, kSlopeBiasTexels, kConstantBiasShare * (farthest - closest),
+                       farthest - closest);
+  const float columns = float(std::min(count, gpu::kCascadeColumns));
+  const float rows = float((count + gpu::kCascadeColumns - 1) / gpu::kCascadeColumns);
+  out.atlas = glm::vec4(1.0f / resolution, resolution, 1.0f / columns, 1.0f / rows);
+  out.config = glm::uvec4(count, 0u, options.filter, 0u);
+  return out;
+}
+
+SunShadows::SunShadows(Context& context, const GpuScene& scene, const SunShadowOptions& options)
+    : context_(context),
+      scene_(scene),
+      options_(options),
+      sun_(shadowCastingSun(scene.scene().directionalLights)) {
+  if (casting()) {
+    const uint32_t columns = std::min(options_.cascades, gpu::kCascadeColumns);
+    const uint32_t rows = (options_.cascades + gpu::kCascadeColumns - 1) / gpu::kCascadeColumns;
+    atlasWidth_ = columns * options_.resolution;
+    atlasHeight_ = rows * options_.resolution;
+    const uint32_t largest = context.properties().limits.maxImageDimension2D;
+    if (atlasWidth_ > largest || atlasHeight_ > largest)
+      throw InputError(fmt::format(
+          "--shadow-resolution {} with --cascades {}: the shadow atlas would be {}x{} texels; this device's "
+          "largest image is {} on a side",
+          options_.resolution, options_.cascades, atlasWidth_, atlasHeight_, largest));
+  }
+  atlas_ =
+      Image(context, atlasWidth_, atlasHeight_, VK_FORMAT_D32_SFLOAT,
+            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "sun-shadow-atlas");
+  uniforms_ = Buffer(context, sizeof(gpu::SunShadow), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload,
+                     "sun-shadow");
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = VK_FILTER_LINEAR;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.compareEnable = VK_TRUE;
+  info.compareOp = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse depth: lit where nearer the sun than stored
+  VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &sampler_));
+  uniforms_.upload(&data_, sizeof(data_));
+  if (!casting()) return;
+
+  layout_ =
+      PipelineLayout(context, {"shadows/caster.vert", "common/depth_mask.frag"}, {scene.materialSetLayout()});
+  GraphicsPipelineDesc desc;
+  desc.vertexShader = "shadows/caster.vert";
+  desc.depthFormat = VK_FORMAT_D32_SFLOAT;
+  desc.cullMode = VK_CULL_MODE_NONE;
+  desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
+  opaque_ = Pipeline(context, layout_, desc);
+  desc.fragmentShader = "common/depth_mask.frag";
+  masked_ = Pipeline(context, layout_, desc);
+  uploadCasters();
+}
+
+SunShadows::~SunShadows() {
+  vkDestroySampler(context_.device(), sampler_, nullptr);
+}
+
+void SunShadows::uploadCasters() {
+  const Scene& scene = scene_.scene();
+  std::vector<std::vector<uint32_t>> byMesh(scene.meshes.size());
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) byMesh[scene.instances[i].mesh].push_back(i);
+  std::vector<gpu::MeshInstance> instances;
+  instances.reserve(scene.instances.size());
+  for (const std::vector<uint32_t>& list : byMesh) {
+    meshFirst_.push_back(uint32_t(instances.size()));
+    meshCount_.push_back(uint32_t(list.size()));
+    // The casters' vertex shader reads the transform alone.
+    for (uint32_t i : list) instances.push_back({scene.instances[i].transform, {}});
+  }
+  casters_ = Buffer(context_, std::max<size_t>(1, instances.size()) * sizeof(gpu::MeshInstance),
+                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::Device, "shadow-casters");
+  if (!instances.empty()) casters_.upload(std::span<const gpu::MeshInstance>(instances));
+}
+
+void SunShadows::update(const gpu::FrameUniforms& frame, const Bounds& sceneBounds) {
+  if (!casting() || !sceneBounds.valid()) {
+    data_ = gpu::SunShadow{};
+  } else {
+    data_ = fitSunCascades(frame, glm::vec3(frame.sunDirection[0]), sceneBounds, options_);
+  }
+  uniforms_.upload(&data_, sizeof(data_));
+}
+
+void SunShadows::record(FrameContext& frame) {
+  constexpr VkPipelineStageFlags2 kReaders = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  const auto clearOrDraw = [&](VkCommandBuffer cmd) {
+    beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
+                   VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
+    if (data_.config.x > 0) drawCasters(frame, cmd);
+    vkCmdEndRendering(cmd);
+  };
+  if (data_.config.x > 0)
+    frame.graph.pass("shadow-sun", {uses(atlas_, Use::DepthWrite)}, clearOrDraw);
+  else
+    frame.graph.step({uses(atlas_, Use::DepthWrite)}, clearOrDraw);
+  // Every later pass may read it, in any shader stage: one transition here covers them all.
+  frame.graph.step({uses(atlas_, Use::Sampled, kReaders)}, [](VkCommandBuffer) {});
+}
+
+void SunShadows::drawCasters(const FrameContext& frame, VkCommandBuffer cmd) const {
+  const VkDeviceSize offsets[2] = {0, 0};
+  const VkBuffer vertexBuffers[2] = {scene_.vertexBuffer().handle(), casters_.handle()};
+  vkCmdBindVertexBuffers(cmd, 0, 2, vertexBuffers, offsets);
+  vkCmdBindIndexBuffer(cmd, scene_.indexBuffer().handle(), 0, VK_INDEX_TYPE_UINT32);
+  meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
+  const Scene& scene = scene_.scene();
+  const float size = float(options_.resolution);
+  for (uint32_t c = 0; c < data_.config.x; ++c) {
+    const float x = float(c % gpu::kCascadeColumns) * size, y = float(c / gpu::kCascadeColumns) * size;
+    const VkViewport viewport{x, y, size, size, 0.0f, 1.0f};
+    const VkRect2D scissor{{int32_t(x), int32_t(y)}, {options_.resolution, options_.resolution}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    const glm::uvec4 cascade(c, 0u, 0u, 0u);
+    vkCmdPushConstants(cmd, layout_.handle(), kCasterStages, sizeof(glm::uvec4), sizeof(cascade), &cascade);
+    for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask}) {
+      (mode == AlphaMode::Opaque ? opaque_ : masked_).bind(cmd);
+      for (const DrawItem& d : scene_.draws()) {
+        if (scene.materials[d.material].alphaMode != mode || meshCount_[d.mesh] == 0) continue;
+        if (mode == AlphaMode::Mask) scene_.bindMaterialSet(cmd, layout_.handle(), d.material);
+        const glm::uvec4 ids(d.material, 0u, 0u, 0u);
+        vkCmdPushConstants(cmd, layout_.handle(), kCasterStages, 0, sizeof(ids), &ids);
+        vkCmdDrawIndexed(cmd, d.indexCount, meshCount_[d.mesh], d.firstIndex, int32_t(d.vertexOffset),
+                         meshFirst_[d.mesh]);
+      }
+    }
+  }
+}
+
+void SunShadows::bind(DescriptorWriter& writer) const {
+  writer.storage(26, uniforms_.handle())
+      .image(27, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, atlas_.view(),
+             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, sampler_);
+}
+
+std::vector<std::pair<std::string, double>> SunShadows::stats() const {
+  if (!casting()) return {{"sun-shadow-cascades", 0.0}};
+  return {{"sun-shadow-cascades", double(options_.cascades)},
+          {"sun-shadow-resolution", double(options_.resolution)},
+          {"sun-shadow_bytes", 4.0 * atlasWidth_ * atlasHeight_}};
+}
+
+}  // namespace lll
