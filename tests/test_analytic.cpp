@@ -329,15 +329,18 @@ glm::vec2 occluderCorner(int i) {
   return {cs * c.x - sn * c.y, sn * c.x + cs * c.y};
 }
 
-void addSquareOccluder(Scene& scene) {
+// `doubleSided` false: a single-sided square whose front faces the sky (`facingUp`) or the plane.
+void addSquareOccluder(Scene& scene, bool doubleSided = true, bool facingUp = true) {
   const uint32_t first = uint32_t(scene.vertices.size());
   for (int i = 0; i < 4; ++i)
     scene.vertices.push_back({{occluderCorner(i).x, 3.0f, occluderCorner(i).y}, {0, 1, 0}, {0, 0}});
   const uint32_t firstIndex = uint32_t(scene.indices.size());
+  // Counter-clockwise seen from above: the front faces the sky.
   for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(i);
+  if (!facingUp) std::reverse(scene.indices.begin() + firstIndex, scene.indices.end());
   Material m = scene.materials[0];
   m.name = "occluder";
-  m.doubleSided = true;
+  m.doubleSided = doubleSided;
   scene.materials.push_back(m);
   scene.meshes.push_back(Mesh{"occluder", {Primitive{firstIndex, 6, first, 1}}});
   scene.instances.push_back(Instance{1, glm::mat4(1.0f)});
@@ -413,6 +416,32 @@ TEST_P(Analytic, SunShadowOfASquareOccluder) {
     EXPECT_GT(c.lit, 5000);
     EXPECT_GT(nearEdge, 5) << "the edges cross pixel centres";
     EXPECT_LT(nearEdge, 400) << "the edge band is a few texels wide";
+  }
+}
+
+// A single-sided caster casts from its front faces only (glTF draws no back faces): the square
+// facing the sky shadows the plane, the same square facing the plane lets the sun through.
+TEST(AnalyticShadow, SingleSidedCastersCastFromTheirFrontFaces) {
+  for (const bool facingUp : {true, false}) {
+    SCOPED_TRACE(facingUp ? "front towards the sun" : "back towards the sun");
+    Scene scene = planeScene();
+    addSquareOccluder(scene, false, facingUp);
+    DirectionalLight sun;
+    sun.direction = -glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));
+    sun.illuminance = 3.0f;
+    scene.directionalLights = {sun};
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 96;
+    settings.ambient = 0.0f;
+    settings.shadowFilter = "none";
+    const test::Rendered out = test::render(scene, settings);
+    // The shadow's middle, 3 m towards -x (pixel 29, 47): dark only when it casts.
+    const float middle = out.hdr.at(29, 47).r;
+    if (facingUp)
+      EXPECT_EQ(middle, 0.0f);
+    else
+      EXPECT_GT(middle, 0.3f);
   }
 }
 

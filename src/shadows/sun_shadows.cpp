@@ -25,9 +25,10 @@ namespace {
 constexpr float kLogarithmicShare = 0.75f;
 constexpr float kLogarithmicStart = 0.01f;
 // Lookup biases (SunShadow::bias): the normal offset in texels, the slope bias in texels per unit
-// of tan(theta), a constant bias in world units per unit of the scene's depth range.
+// of tan(theta) (2: the PCF taps reach the surface up to 2 texels away, whose depth differs by
+// that much), a constant bias in world units per unit of the scene's depth range.
 constexpr float kNormalOffsetTexels = 1.0f;
-constexpr float kSlopeBiasTexels = 1.0f;
+constexpr float kSlopeBiasTexels = 2.0f;
 constexpr float kConstantBiasShare = 1e-4f;
 
 constexpr VkShaderStageFlags kCasterStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
@@ -110,8 +111,10 @@ gpu::SunShadow fitSunCascades(const gpu::FrameUniforms& frame, const glm::vec3& 
     glm::vec2 middle = glm::vec2(sunView * glm::vec4(centre, 1.0f));
     middle = glm::floor(middle / texel) * texel;
     // Reverse depth, as the camera's: the point nearest the sun at 1, the farthest at 0.
-    const glm::mat4 projection = glm::orthoRH_ZO(middle.x - radius, middle.x + radius, middle.y - radius,
-                                                 middle.y + radius, farthest, closest);
+    glm::mat4 projection = glm::orthoRH_ZO(middle.x - radius, middle.x + radius, middle.y - radius,
+                                           middle.y + radius, farthest, closest);
+    projection[1][1] *= -1.0f;  // y down, as the camera's: front faces keep their winding
+    projection[3][1] *= -1.0f;
     out.cascadeViewProj[c] = projection * sunView;
     out.splits[c] = split;
     out.texelWorld[c] = texel;
@@ -167,28 +170,58 @@ SunShadows::SunShadows(Context& context, const GpuScene& scene, const SunShadowO
   opaque_ = Pipeline(context, layout_, desc);
   desc.fragmentShader = "common/depth_mask.frag";
   masked_ = Pipeline(context, layout_, desc);
-  uploadCasters();
+  instanceBounds_.reserve(scene.scene().instances.size());
+  for (const Instance& instance : scene.scene().instances)
+    instanceBounds_.push_back(transformBounds(scene.scene().meshBounds(instance.mesh), instance.transform));
+  opaqueDraws_.resize(scene.scene().meshes.size());
+  maskedDraws_.resize(scene.scene().meshes.size());
+  for (uint32_t d = 0; d < scene.draws().size(); ++d) {
+    const DrawItem& item = scene.draws()[d];
+    const AlphaMode mode = scene.scene().materials[item.material].alphaMode;
+    if (mode == AlphaMode::Opaque) opaqueDraws_[item.mesh].push_back(d);
+    if (mode == AlphaMode::Mask) maskedDraws_[item.mesh].push_back(d);
+  }
+  order_.resize(options_.cascades);
+  casters_ = Buffer(
+      context,
+      std::max<size_t>(1, size_t(options_.cascades) * instanceBounds_.size()) * sizeof(gpu::MeshInstance),
+      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::Upload, "shadow-casters");
 }
 
 SunShadows::~SunShadows() {
   vkDestroySampler(context_.device(), sampler_, nullptr);
 }
 
-void SunShadows::uploadCasters() {
+void SunShadows::orderCasters() {
   const Scene& scene = scene_.scene();
-  std::vector<std::vector<uint32_t>> byMesh(scene.meshes.size());
-  for (uint32_t i = 0; i < scene.instances.size(); ++i) byMesh[scene.instances[i].mesh].push_back(i);
-  std::vector<gpu::MeshInstance> instances;
-  instances.reserve(scene.instances.size());
-  for (const std::vector<uint32_t>& list : byMesh) {
-    meshFirst_.push_back(uint32_t(instances.size()));
-    meshCount_.push_back(uint32_t(list.size()));
-    // The casters' vertex shader reads the transform alone.
-    for (uint32_t i : list) instances.push_back({scene.instances[i].transform, {}});
+  const uint32_t instances = uint32_t(scene.instances.size());
+  std::vector<gpu::MeshInstance> out(size_t(data_.config.x) * instances);
+  std::vector<std::pair<float, uint32_t>> byDepth;
+  for (uint32_t c = 0; c < data_.config.x; ++c) {
+    byDepth.clear();
+    for (uint32_t i = 0; i < instances; ++i) {
+      const Bounds& b = instanceBounds_[i];
+      glm::vec2 lo(1e30f), hi(-1e30f);
+      float nearest = -1e30f;
+      for (int k = 0; k < 8; ++k) {
+        const glm::vec3 corner(k & 1 ? b.max.x : b.min.x, k & 2 ? b.max.y : b.min.y,
+                               k & 4 ? b.max.z : b.min.z);
+        const glm::vec4 clip = data_.cascadeViewProj[c] * glm::vec4(corner, 1.0f);
+        lo = glm::min(lo, glm::vec2(clip));
+        hi = glm::max(hi, glm::vec2(clip));
+        nearest = std::max(nearest, clip.z);  // reverse depth: 1 nearest the sun
+      }
+      if (hi.x < -1.0f || lo.x > 1.0f || hi.y < -1.0f || lo.y > 1.0f) continue;
+      byDepth.push_back({nearest, i});
+    }
+    std::sort(byDepth.begin(), byDepth.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    order_[c].clear();
+    for (const auto& [depth, i] : byDepth) {
+      out[size_t(c) * instances + order_[c].size()] = {scene.instances[i].transform, {}};
+      order_[c].push_back(i);
+    }
   }
-  casters_ = Buffer(context_, std::max<size_t>(1, instances.size()) * sizeof(gpu::MeshInstance),
-                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::Device, "shadow-casters");
-  if (!instances.empty()) casters_.upload(std::span<const gpu::MeshInstance>(instances));
+  if (!out.empty()) casters_.upload(out.data(), out.size() * sizeof(gpu::MeshInstance));
 }
 
 void SunShadows::update(const gpu::FrameUniforms& frame, const Bounds& sceneBounds) {
@@ -196,6 +229,7 @@ void SunShadows::update(const gpu::FrameUniforms& frame, const Bounds& sceneBoun
     data_ = gpu::SunShadow{};
   } else {
     data_ = fitSunCascades(frame, glm::vec3(frame.sunDirection[0]), sceneBounds, options_);
+    orderCasters();
   }
   uniforms_.upload(&data_, sizeof(data_));
 }
@@ -225,6 +259,7 @@ void SunShadows::drawCasters(const FrameContext& frame, VkCommandBuffer cmd) con
   vkCmdBindIndexBuffer(cmd, scene_.indexBuffer().handle(), 0, VK_INDEX_TYPE_UINT32);
   meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
   const Scene& scene = scene_.scene();
+  const uint32_t instances = uint32_t(scene.instances.size());
   const float size = float(options_.resolution);
   for (uint32_t c = 0; c < data_.config.x; ++c) {
     const float x = float(c % gpu::kCascadeColumns) * size, y = float(c / gpu::kCascadeColumns) * size;
@@ -234,17 +269,38 @@ void SunShadows::drawCasters(const FrameContext& frame, VkCommandBuffer cmd) con
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     const glm::uvec4 cascade(c, 0u, 0u, 0u);
     vkCmdPushConstants(cmd, layout_.handle(), kCasterStages, sizeof(glm::uvec4), sizeof(cascade), &cascade);
-    for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask}) {
-      (mode == AlphaMode::Opaque ? opaque_ : masked_).bind(cmd);
-      for (const DrawItem& d : scene_.draws()) {
-        if (scene.materials[d.material].alphaMode != mode || meshCount_[d.mesh] == 0) continue;
-        if (mode == AlphaMode::Mask) scene_.bindMaterialSet(cmd, layout_.handle(), d.material);
-        const glm::uvec4 ids(d.material, 0u, 0u, 0u);
-        vkCmdPushConstants(cmd, layout_.handle(), kCasterStages, 0, sizeof(ids), &ids);
-        vkCmdDrawIndexed(cmd, d.indexCount, meshCount_[d.mesh], d.firstIndex, int32_t(d.vertexOffset),
-                         meshFirst_[d.mesh]);
+    const uint32_t first = c * instances;
+    // A single-sided material casts from its front faces only (its back faces do not exist, as
+    // glTF culls them when drawing), a double-sided one from both.
+    VkCullModeFlags cull = ~0u;
+    const auto cullFor = [&](uint32_t material) {
+      const VkCullModeFlags wanted =
+          scene.materials[material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+      if (wanted != cull) vkCmdSetCullMode(cmd, wanted);
+      cull = wanted;
+    };
+    opaque_.bind(cmd);
+    for (uint32_t slot = 0; slot < order_[c].size(); ++slot)
+      for (uint32_t d : opaqueDraws_[scene.instances[order_[c][slot]].mesh]) {
+        const DrawItem& item = scene_.draws()[d];
+        cullFor(item.material);
+        vkCmdDrawIndexed(cmd, item.indexCount, 1, item.firstIndex, int32_t(item.vertexOffset), first + slot);
       }
-    }
+    masked_.bind(cmd);
+    cull = ~0u;
+    uint32_t bound = ~0u;
+    for (uint32_t slot = 0; slot < order_[c].size(); ++slot)
+      for (uint32_t d : maskedDraws_[scene.instances[order_[c][slot]].mesh]) {
+        const DrawItem& item = scene_.draws()[d];
+        cullFor(item.material);
+        if (item.material != bound) {
+          scene_.bindMaterialSet(cmd, layout_.handle(), item.material);
+          const glm::uvec4 ids(item.material, 0u, 0u, 0u);
+          vkCmdPushConstants(cmd, layout_.handle(), kCasterStages, 0, sizeof(ids), &ids);
+          bound = item.material;
+        }
+        vkCmdDrawIndexed(cmd, item.indexCount, 1, item.firstIndex, int32_t(item.vertexOffset), first + slot);
+      }
   }
 }
 

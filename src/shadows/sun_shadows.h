@@ -11,9 +11,12 @@
 // projection's depth range spans the whole scene along the sun, so casters outside the slice still cast into
 // it.
 //
-// The casters are every opaque and alpha-masked primitive of every instance (not only those in the
-// camera's frustum), drawn without culling (one-sided walls still block the sun) in one raster
-// pass, "shadow-sun", a viewport per cascade. Blended (glass) primitives cast no shadow.
+// The casters are the opaque and alpha-masked primitives of every instance whose bounds overlap a
+// cascade (not only those in the camera's frustum), nearest the sun first, in one raster pass,
+// "shadow-sun", a viewport per cascade. Single-sided materials cast from their front faces only
+// (glTF culls their back faces), double-sided ones from both: on the H200 culling took the pass
+// from 4.7 to 3.6 ms, the other order of faces to 2.8 ms, at 4 cascades of 2048 on the sunlit
+// atrium; the front-to-back order gained 1%. Blended (glass) primitives cast no shadow.
 // Lookups offset the point along its normal by a texel-sized step and bias the depth by the
 // surface's slope to the sun (tan theta times a texel), then filter with 3x3 bilinear comparisons
 // (`--shadow-filter pcf`) or read one texel (`none`: edges exactly where geometry puts them).
@@ -79,7 +82,10 @@ class SunShadows {
   std::vector<std::pair<std::string, double>> stats() const;
 
  private:
-  void uploadCasters();
+  // Each cascade's casters this frame: the instances whose bounds overlap its square, nearest the
+  // sun first (so the depth test rejects what lies behind them early), their transforms written
+  // into casters_.
+  void orderCasters();
   void drawCasters(const FrameContext& frame, VkCommandBuffer cmd) const;
 
   Context& context_;
@@ -95,9 +101,11 @@ class SunShadows {
   PipelineLayout layout_;
   Pipeline opaque_;
   Pipeline masked_;
-  Buffer casters_;                   // every instance, grouped by mesh (gpu::MeshInstance)
-  std::vector<uint32_t> meshFirst_;  // where each mesh's instances start in casters_
-  std::vector<uint32_t> meshCount_;
+  std::vector<Bounds> instanceBounds_;              // world-space box of each scene instance
+  std::vector<std::vector<uint32_t>> opaqueDraws_;  // per mesh: its opaque primitives (draws())
+  std::vector<std::vector<uint32_t>> maskedDraws_;  // per mesh: its alpha-masked primitives
+  Buffer casters_;                                  // per cascade, its casters' transforms in order
+  std::vector<std::vector<uint32_t>> order_;        // per cascade: the scene instances drawn
 };
 
 }  // namespace lll
