@@ -309,6 +309,15 @@ TEST_F(CliTest, RasterParticlesOnlyAtFullResolution) {
                  {"--particle-resolution", "eighth"});
 }
 
+// The sun's shadow options: named with the value when out of range.
+TEST_F(CliTest, BadShadowOptions) {
+  expectBadInput(render("plane", {"--shadows", "all"}), {"--shadows", "all"});
+  expectBadInput(render("plane", {"--cascades", "5"}), {"--cascades", "5"});
+  expectBadInput(render("plane", {"--cascades", "0"}), {"--cascades", "0"});
+  expectBadInput(render("plane", {"--shadow-resolution", "8"}), {"--shadow-resolution", "8"});
+  expectBadInput(render("plane", {"--shadow-filter", "vsm"}), {"--shadow-filter", "vsm"});
+}
+
 TEST_F(CliTest, ParticlesNeedASmokeSourceOrAnEmitter) {
   expectBadInput(render("plane", {"--particles", "smoke"}),
                  {"plane", "no smoke source", "--particle-emitter"});

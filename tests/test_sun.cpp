@@ -41,7 +41,10 @@ TEST(Sun, EveryTechniqueMatchesForward) {
 
 // The sun's shadow (shadows/sun_shadows.h) with the sun strong enough to dominate the courtyard:
 // every technique, with its glass, shadows it as forward does (the pre-pass through its 8-bit
-// screen-space buffer, within its own bound), and the shadows are in the picture.
+// screen-space buffer, within its own bound), and the shadows are in the picture. Each is compared
+// with forward on the same surfaces: at 20 lux the visibility buffer's rebuilt surfaces and the
+// raster G-buffer's differ visibly on the H200 with no shadow at all (texture LOD from analytic
+// against quad derivatives: 2 of 255 at 2 lux, 13 at 20), which is not what this test is about.
 TEST(Sun, ShadowsMatchForwardInEveryTechnique) {
   SceneRequest request{"atrium", 0, 1};
   request.suns = {"0.4,0.6,0.25,20,1,0.9,0.75"};
@@ -49,16 +52,25 @@ TEST(Sun, ShadowsMatchForwardInEveryTechnique) {
   RenderSettings settings;
   settings.width = 160;
   settings.height = 90;
-  const test::Rendered reference = test::render(scene, test::reference(settings));
+  const test::Rendered onGbuffer = test::render(scene, test::reference(settings));
+  RenderSettings visibility = test::reference(settings);
+  visibility.surfaces = "visibility";
+  const test::Rendered onVisibility = test::render(scene, visibility);
   RenderSettings unshadowed = test::reference(settings);
   unshadowed.shadows = "none";
-  EXPECT_LT(test::psnr(test::render(scene, unshadowed).ldr, reference.ldr), 30.0) << "no shadow in view";
-  for (const char* technique : {"forward", "lll", "tiled", "clustered", "deferred", "prepass"}) {
+  EXPECT_LT(test::psnr(test::render(scene, unshadowed).ldr, onGbuffer.ldr), 30.0) << "no shadow in view";
+  for (const char* technique : {"lll", "tiled", "clustered", "deferred", "prepass"}) {
     settings.technique = technique;
+    // deferred and the pre-pass shade their own raster G-buffers.
+    const bool ownGbuffer = settings.technique == "deferred" || settings.technique == "prepass";
     const test::ImageBound bound = settings.technique == "prepass" ? test::kPrepassBound : test::kSameImage;
-    test::expectWithinBound(test::render(scene, settings).ldr, reference.ldr, bound,
-                            std::string("sun-shadowed atrium ") + technique);
+    test::expectWithinBound(test::render(scene, settings).ldr, ownGbuffer ? onGbuffer.ldr : onVisibility.ldr,
+                            bound, std::string("sun-shadowed atrium ") + technique);
   }
+  settings.technique = "lll";
+  settings.surfaces = "gbuffer";
+  test::expectWithinBound(test::render(scene, settings).ldr, onGbuffer.ldr, test::kSameImage,
+                          "sun-shadowed atrium lll on the raster G-buffer");
 }
 
 // Smoke scatters the sun as it scatters a point light (particles/scattering.glsl), per pixel and
