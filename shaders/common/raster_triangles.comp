@@ -7,7 +7,6 @@
 #extension GL_EXT_shader_atomic_int64 : require
 #extension GL_EXT_control_flow_attributes : enable
 #include "common/frame.glsl"
-#include "common/raster.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -29,123 +28,11 @@ layout(std430, set = 0, binding = 19) readonly buffer IndexBlock {
 layout(std430, set = 0, binding = 21) readonly buffer TriangleStartBlock {
   uint triangleStarts[];
 };
-layout(std430, set = 0, binding = 22) buffer KeyBlock {
-  uint64_t keys[];
-};
-layout(std430, set = 0, binding = 23) buffer LargeBlock {
-  uint largeCount;
-  uint largePad0, largePad1, largePad2;
-  RasterTriangle largeTriangles[];
-};
-// Per bin: how many large triangles touch it (first, one per bin), then their list slots.
-layout(std430, set = 0, binding = 25) buffer BinBlock {
-  uint binData[];
-};
 layout(push_constant) uniform RasterBlock {
   RasterPush raster;
 };
 
-const int kMaxClipped = 9;  // a triangle clipped by six planes
-
-void cover(ivec2 v0, ivec2 v1, ivec2 v2, uint topLeft, int64_t area2, vec3 z, uint id, ivec4 box) {
-  ivec2 lo = min(min(v0, v1), v2), hi = max(max(v0, v1), v2);
-  if (all(lessThan(hi - lo, ivec2(4096)))) {
-    // Within 16 pixels: relative to its corner every edge function fits 32 bits (< 2^25), and
-    // steps from pixel to pixel by a constant.
-    ivec2 a = v0 - lo, b = v1 - lo, c = v2 - lo;
-    ivec2 p = rasterCentre(box.x, box.y) - lo;
-    int e0 = (c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x) - ((topLeft & 1u) == 0u ? 1 : 0);
-    int e1 = (a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x) - ((topLeft & 2u) == 0u ? 1 : 0);
-    int e2 = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) - ((topLeft & 4u) == 0u ? 1 : 0);
-    ivec3 stepX = -ivec3(c.y - b.y, a.y - c.y, b.y - a.y) * kSubPixel;
-    ivec3 stepY = ivec3(c.x - b.x, a.x - c.x, b.x - a.x) * kSubPixel;
-    ivec3 row = ivec3(e0, e1, e2);
-    // Depth from the unbiased edge values, as rasterCovers computes it.
-    ivec3 bias =
-        ivec3((topLeft & 1u) == 0u ? 1 : 0, (topLeft & 2u) == 0u ? 1 : 0, (topLeft & 4u) == 0u ? 1 : 0);
-    float inverse = 1.0 / float(area2);
-    for (int y = box.y; y <= box.w; ++y, row += stepY) {
-      ivec3 e = row;
-      for (int x = box.x; x <= box.z; ++x, e += stepX) {
-        if (any(lessThan(e, ivec3(0)))) continue;
-        float depth = dot(vec3(e + bias), z) * inverse;
-        atomicMax(keys[uint(y) * uint(frame.viewport.x) + uint(x)], rasterKey(depth, id));
-      }
-    }
-    return;
-  }
-  for (int y = box.y; y <= box.w; ++y) {
-    for (int x = box.x; x <= box.z; ++x) {
-      float depth;
-      if (rasterCovers(v0, v1, v2, topLeft, area2, z, rasterCentre(x, y), depth))
-        atomicMax(keys[uint(y) * uint(frame.viewport.x) + uint(x)], rasterKey(depth, id));
-    }
-  }
-}
-
-// One triangle in clip space, every vertex with w > 0 and inside the guard band.
-void rasterize(vec4 c0, vec4 c1, vec4 c2, uint id, bool cullBack) {
-  vec2 size = frame.viewport.xy;
-  vec3 n0 = c0.xyz / c0.w, n1 = c1.xyz / c1.w, n2 = c2.xyz / c2.w;
-  ivec2 v0 = ivec2(floor((n0.xy * 0.5 + 0.5) * size * float(kSubPixel) + 0.5));
-  ivec2 v1 = ivec2(floor((n1.xy * 0.5 + 0.5) * size * float(kSubPixel) + 0.5));
-  ivec2 v2 = ivec2(floor((n2.xy * 0.5 + 0.5) * size * float(kSubPixel) + 0.5));
-  vec3 z = vec3(n0.z, n1.z, n2.z);
-  int64_t area2 = rasterArea2(v0, v1, v2);
-  if (area2 == 0 || (cullBack && area2 > 0)) return;
-  if (area2 < 0) {
-    ivec2 t = v1;
-    v1 = v2;
-    v2 = t;
-    z = z.xzy;
-    area2 = -area2;
-  }
-  // Pixels whose centres lie within the snapped bounds, clamped to the image.
-  ivec2 lo = min(min(v0, v1), v2), hi = max(max(v0, v1), v2);
-  ivec4 box = ivec4(-((-(lo - kSubPixel / 2)) >> kSubPixelBits), (hi - kSubPixel / 2) >> kSubPixelBits);
-  box = ivec4(max(box.xy, ivec2(0)), min(box.zw, ivec2(size) - 1));
-  if (box.x > box.z || box.y > box.w) return;
-  uint topLeft = rasterTopLeftBits(v0, v1, v2);
-  uint pixels = uint(box.z - box.x + 1) * uint(box.w - box.y + 1);
-  if (pixels > raster.large.y) {
-    uint slot = atomicAdd(largeCount, 1u);
-    if (slot < raster.large.x) {
-      largeTriangles[slot] =
-          RasterTriangle(ivec4(v0, v1), ivec4(v2, int(id), int(topLeft)), vec4(z, 0.0), box);
-      uvec4 bins = uvec4(box) / kRasterBinSize;
-      for (uint by = bins.y; by <= bins.w; ++by) {
-        for (uint bx = bins.x; bx <= bins.z; ++bx) {
-          uint bin = by * raster.large.z + bx;
-          uint k = atomicAdd(binData[bin], 1u);
-          if (k < raster.large.w)
-            binData[rasterBinEntry(raster.large.z, raster.large.w, uint(frame.viewport.y), bin, k)] = slot;
-        }
-      }
-      return;
-    }
-    // The list is full: cover it here (slowly, but nothing is lost).
-  }
-  cover(v0, v1, v2, topLeft, area2, z, id, box);
-}
-
-// Signed distance to clip plane k (inside when >= 0): near (z <= w), far (z >= 0), then the guard
-// band, `guard` times the view in x and y, which keeps snapped coordinates within 22 bits.
-float planeDistance(vec4 c, int k, vec2 guard) {
-  switch (k) {
-    case 0:
-      return c.w - c.z;
-    case 1:
-      return c.z;
-    case 2:
-      return guard.x * c.w - c.x;
-    case 3:
-      return guard.x * c.w + c.x;
-    case 4:
-      return guard.y * c.w - c.y;
-    default:
-      return guard.y * c.w + c.y;
-  }
-}
+#include "common/raster_triangle.glsl"
 
 void main() {
   uint triangle = (gl_WorkGroupID.y * raster.counts.w + gl_WorkGroupID.x) * 64u + gl_LocalInvocationID.x;
@@ -163,7 +50,7 @@ void main() {
   uint local = triangle - triangleStarts[record];
   SurfaceRecord r = surfaceRecords[record];
   mat4 model = meshInstances[r.instance].model;
-  vec4 c[kMaxClipped];
+  vec4 c[3];
   [[unroll]] for (int k = 0; k < 3; ++k) {
     uint v = (sceneIndices[r.firstIndex + 3u * local + uint(k)] + r.vertexOffset) * 3u;
     vec4 world = model * vec4(positions[v], positions[v + 1u], positions[v + 2u], 1.0);
@@ -172,44 +59,6 @@ void main() {
   uint id = (record << kTriangleBits) | local;
   bool cullBack = record < raster.counts.z;
 
-  // Outside one plane of the view entirely: nothing to draw.
-  vec2 guard = 1.0 + 16384.0 / frame.viewport.xy;
-  uint outside = 0x3Fu, clip = 0u;
-  [[unroll]] for (int k = 0; k < 3; ++k) {
-    uint out_ = 0u;
-    if (c[k].w - c[k].z < 0.0) out_ |= 1u;
-    if (c[k].z < 0.0) out_ |= 2u;
-    if (c[k].x > c[k].w) out_ |= 4u;
-    if (c[k].x < -c[k].w) out_ |= 8u;
-    if (c[k].y > c[k].w) out_ |= 16u;
-    if (c[k].y < -c[k].w) out_ |= 32u;
-    outside &= out_;
-    for (int p = 0; p < 6; ++p)
-      if (planeDistance(c[k], p, guard) < 0.0) clip |= 1u << p;
-  }
-  if (outside != 0u) return;
-  if (clip == 0u) {
-    rasterize(c[0], c[1], c[2], id, cullBack);
-    return;
-  }
-  // Sutherland-Hodgman against the planes some vertex is outside of. An edge's crossing is
-  // computed from its inside end, so two triangles sharing the edge get the same point.
-  int count = 3;
-  for (int p = 0; p < 6; ++p) {
-    if ((clip & (1u << p)) == 0u) continue;
-    vec4 kept[kMaxClipped];
-    int n = 0;
-    for (int i = 0; i < count; ++i) {
-      vec4 a = c[i], b = c[(i + 1) % count];
-      float da = planeDistance(a, p, guard), db = planeDistance(b, p, guard);
-      if (da >= 0.0 && n < kMaxClipped) kept[n++] = a;
-      if ((da >= 0.0) != (db >= 0.0) && n < kMaxClipped) {
-        kept[n++] = da >= 0.0 ? mix(a, b, da / (da - db)) : mix(b, a, db / (db - da));
-      }
-    }
-    count = n;
-    for (int i = 0; i < n; ++i) c[i] = kept[i];
-    if (count < 3) return;
-  }
-  for (int i = 1; i + 1 < count; ++i) rasterize(c[0], c[i], c[i + 1], id, cullBack);
+  ivec2 size = ivec2(frame.viewport.xy);
+  clipAndRasterize(c[0], c[1], c[2], id, cullBack, RasterTarget(size, ivec2(0), size));
 }

@@ -1,0 +1,228 @@
+// The compute rasterizer's per-triangle work (render/compute_raster.h), shared by the visibility
+// buffer's pass (common/raster_triangles.comp) and the sun's shadow casters
+// (shadows/caster_triangles.comp): clip a triangle, cull it, snap it into a target cell, and cover
+// a small bounding box with 64-bit atomic max of (depth, id) per pixel or list it for the per-pixel
+// pass. The including shader declares the push constants `raster` (RasterPush).
+#ifndef LLL_RASTER_TRIANGLE_GLSL
+#define LLL_RASTER_TRIANGLE_GLSL
+#extension GL_EXT_shader_atomic_int64 : require
+#extension GL_EXT_control_flow_attributes : enable
+#include "common/raster.glsl"
+
+layout(std430, set = 0, binding = 22) buffer KeyBlock {
+  uint64_t keys[];
+};
+layout(std430, set = 0, binding = 23) buffer LargeBlock {
+  uint largeCount;
+  uint largePad0, largePad1, largePad2;
+  RasterTriangle largeTriangles[];
+};
+// Per bin: how many large triangles touch it (first, one per bin), then their list slots.
+layout(std430, set = 0, binding = 25) buffer BinBlock {
+  uint binData[];
+};
+
+// Where a triangle is drawn: its cell of the image (the whole image for the visibility buffer, one
+// cascade's square of the shadow atlas), in pixels.
+struct RasterTarget {
+  ivec2 imageSize;
+  ivec2 cellOrigin;
+  ivec2 cellSize;
+};
+
+const int kMaxClipped = 9;  // a triangle clipped by six planes
+
+void cover(ivec2 v0, ivec2 v1, ivec2 v2, uint topLeft, int64_t area2, vec3 z, uint id, ivec4 box,
+           uint imageWidth) {
+  ivec2 lo = min(min(v0, v1), v2), hi = max(max(v0, v1), v2);
+  if (all(lessThan(hi - lo, ivec2(4096)))) {
+    // Within 16 pixels: relative to its corner every edge function fits 32 bits (< 2^25), and
+    // steps from pixel to pixel by a constant.
+    ivec2 a = v0 - lo, b = v1 - lo, c = v2 - lo;
+    ivec2 p = rasterCentre(box.x, box.y) - lo;
+    int e0 = (c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x) - ((topLeft & 1u) == 0u ? 1 : 0);
+    int e1 = (a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x) - ((topLeft & 2u) == 0u ? 1 : 0);
+    int e2 = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) - ((topLeft & 4u) == 0u ? 1 : 0);
+    ivec3 stepX = -ivec3(c.y - b.y, a.y - c.y, b.y - a.y) * kSubPixel;
+    ivec3 stepY = ivec3(c.x - b.x, a.x - c.x, b.x - a.x) * kSubPixel;
+    ivec3 row = ivec3(e0, e1, e2);
+    // Depth from the unbiased edge values, as rasterCovers computes it.
+    ivec3 bias =
+        ivec3((topLeft & 1u) == 0u ? 1 : 0, (topLeft & 2u) == 0u ? 1 : 0, (topLeft & 4u) == 0u ? 1 : 0);
+    float inverse = 1.0 / float(area2);
+    for (int y = box.y; y <= box.w; ++y, row += stepY) {
+      ivec3 e = row;
+      for (int x = box.x; x <= box.z; ++x, e += stepX) {
+        if (any(lessThan(e, ivec3(0)))) continue;
+        float depth = dot(vec3(e + bias), z) * inverse;
+        atomicMax(keys[uint(y) * imageWidth + uint(x)], rasterKey(depth, id));
+      }
+    }
+    return;
+  }
+  for (int y = box.y; y <= box.w; ++y) {
+    for (int x = box.x; x <= box.z; ++x) {
+      float depth;
+      if (rasterCovers(v0, v1, v2, topLeft, area2, z, rasterCentre(x, y), depth))
+        atomicMax(keys[uint(y) * imageWidth + uint(x)], rasterKey(depth, id));
+    }
+  }
+}
+
+// One triangle in clip space, every vertex with w > 0 and inside the guard band, drawn into
+// `target`'s cell.
+void rasterize(vec4 c0, vec4 c1, vec4 c2, uint id, bool cullBack, RasterTarget target) {
+  vec2 size = vec2(target.cellSize);
+  vec3 n0 = c0.xyz / c0.w, n1 = c1.xyz / c1.w, n2 = c2.xyz / c2.w;
+  ivec2 origin = target.cellOrigin * kSubPixel;
+  ivec2 v0 = origin + ivec2(floor((n0.xy * 0.5 + 0.5) * size * float(kSubPixel) + 0.5));
+  ivec2 v1 = origin + ivec2(floor((n1.xy * 0.5 + 0.5) * size * float(kSubPixel) + 0.5));
+  ivec2 v2 = origin + ivec2(floor((n2.xy * 0.5 + 0.5) * size * float(kSubPixel) + 0.5));
+  vec3 z = vec3(n0.z, n1.z, n2.z);
+  int64_t area2 = rasterArea2(v0, v1, v2);
+  if (area2 == 0 || (cullBack && area2 > 0)) return;
+  if (area2 < 0) {
+    ivec2 t = v1;
+    v1 = v2;
+    v2 = t;
+    z = z.xzy;
+    area2 = -area2;
+  }
+  // Pixels whose centres lie within the snapped bounds, clamped to the cell.
+  ivec2 lo = min(min(v0, v1), v2), hi = max(max(v0, v1), v2);
+  ivec4 box = ivec4(-((-(lo - kSubPixel / 2)) >> kSubPixelBits), (hi - kSubPixel / 2) >> kSubPixelBits);
+  box = ivec4(max(box.xy, target.cellOrigin), min(box.zw, target.cellOrigin + target.cellSize - 1));
+  if (box.x > box.z || box.y > box.w) return;
+  uint topLeft = rasterTopLeftBits(v0, v1, v2);
+  uint pixels = uint(box.z - box.x + 1) * uint(box.w - box.y + 1);
+  if (pixels > raster.large.y) {
+    uint slot = atomicAdd(largeCount, 1u);
+    if (slot < raster.large.x) {
+      largeTriangles[slot] =
+          RasterTriangle(ivec4(v0, v1), ivec4(v2, int(id), int(topLeft)), vec4(z, 0.0), box);
+      uvec4 bins = uvec4(box) / kRasterBinSize;
+      for (uint by = bins.y; by <= bins.w; ++by) {
+        for (uint bx = bins.x; bx <= bins.z; ++bx) {
+          uint bin = by * raster.large.z + bx;
+          uint k = atomicAdd(binData[bin], 1u);
+          if (k < raster.large.w)
+            binData[rasterBinEntry(raster.large.z, raster.large.w, uint(target.imageSize.y), bin, k)] = slot;
+        }
+      }
+      return;
+    }
+    // The list is full: cover it here (slowly, but nothing is lost).
+  }
+  cover(v0, v1, v2, topLeft, area2, z, id, box, uint(target.imageSize.x));
+}
+
+// Signed distance to clip plane k (inside when >= 0): near (z <= w), far (z >= 0), then the guard
+// band, `guard` times the view in x and y, which keeps snapped coordinates within 22 bits.
+float planeDistance(vec4 c, int k, vec2 guard) {
+  switch (k) {
+    case 0:
+      return c.w - c.z;
+    case 1:
+      return c.z;
+    case 2:
+      return guard.x * c.w - c.x;
+    case 3:
+      return guard.x * c.w + c.x;
+    case 4:
+      return guard.y * c.w - c.y;
+    default:
+      return guard.y * c.w + c.y;
+  }
+}
+
+// Triangle c0 c1 c2 in clip space: culled when outside one plane of the view, clipped where it
+// crosses the near or far plane or leaves the guard band, then rasterized into `target`'s cell.
+void clipAndRasterize(vec4 c0, vec4 c1, vec4 c2, uint id, bool cullBack, RasterTarget target) {
+  vec4 c[kMaxClipped];
+  c[0] = c0;
+  c[1] = c1;
+  c[2] = c2;
+  // Outside one plane of the view entirely: nothing to draw.
+  vec2 guard = 1.0 + 16384.0 / vec2(target.cellSize);
+  uint outside = 0x3Fu, clip = 0u;
+  [[unroll]] for (int k = 0; k < 3; ++k) {
+    uint out_ = 0u;
+    if (c[k].w - c[k].z < 0.0) out_ |= 1u;
+    if (c[k].z < 0.0) out_ |= 2u;
+    if (c[k].x > c[k].w) out_ |= 4u;
+    if (c[k].x < -c[k].w) out_ |= 8u;
+    if (c[k].y > c[k].w) out_ |= 16u;
+    if (c[k].y < -c[k].w) out_ |= 32u;
+    outside &= out_;
+    for (int p = 0; p < 6; ++p)
+      if (planeDistance(c[k], p, guard) < 0.0) clip |= 1u << p;
+  }
+  if (outside != 0u) return;
+  if (clip == 0u) {
+    rasterize(c[0], c[1], c[2], id, cullBack, target);
+    return;
+  }
+  // Sutherland-Hodgman against the planes some vertex is outside of. An edge's crossing is
+  // computed from its inside end, so two triangles sharing the edge get the same point.
+  int count = 3;
+  for (int p = 0; p < 6; ++p) {
+    if ((clip & (1u << p)) == 0u) continue;
+    vec4 kept[kMaxClipped];
+    int n = 0;
+    for (int i = 0; i < count; ++i) {
+      vec4 a = c[i], b = c[(i + 1) % count];
+      float da = planeDistance(a, p, guard), db = planeDistance(b, p, guard);
+      if (da >= 0.0 && n < kMaxClipped) kept[n++] = a;
+      if ((da >= 0.0) != (db >= 0.0) && n < kMaxClipped) {
+        kept[n++] = da >= 0.0 ? mix(a, b, da / (da - db)) : mix(b, a, db / (db - da));
+      }
+    }
+    count = n;
+    for (int i = 0; i < n; ++i) c[i] = kept[i];
+    if (count < 3) return;
+  }
+  for (int i = 1; i + 1 < count; ++i) rasterize(c[0], c[i], c[i + 1], id, cullBack, target);
+}
+
+shared RasterTriangle rasterBatch[64];
+
+// The per-pixel pass: the nearest key at `pixel` of an image `size` pixels large, from the first
+// pass's key and the large triangles listed in its 32x32-pixel bin (all of them when the bin's list
+// overflowed), walked in batches held in shared memory by the 8x8 workgroup, skipping those whose
+// bounds miss its tile. Every invocation of the workgroup must call it.
+uint64_t rasterNearest(ivec2 pixel, ivec2 size) {
+  bool inImage = all(lessThan(pixel, size));
+  ivec2 tileLo = ivec2(gl_WorkGroupID.xy) * 8, tileHi = tileLo + 7;
+  ivec2 p = rasterCentre(pixel.x, pixel.y);
+  uint64_t best = inImage ? keys[uint(pixel.y) * uint(size.x) + uint(pixel.x)] : 0ul;
+  uvec2 binXY = gl_WorkGroupID.xy * 8u / kRasterBinSize;
+  uint bin = binXY.y * raster.large.z + binXY.x;
+  uint listed = binData[bin];
+  bool overflow = listed > raster.large.w;
+  uint count = overflow ? min(largeCount, raster.large.x) : listed;
+  for (uint first = 0u; first < count; first += 64u) {
+    uint mine = first + gl_LocalInvocationIndex;
+    if (mine < count)
+      rasterBatch[gl_LocalInvocationIndex] =
+          largeTriangles[overflow ? mine
+                                  : binData[rasterBinEntry(raster.large.z, raster.large.w, uint(size.y), bin,
+                                                           mine)]];
+    barrier();
+    uint n = min(64u, count - first);
+    for (uint i = 0u; i < n; ++i) {
+      ivec4 box = rasterBatch[i].bounds;
+      if (box.x > tileHi.x || box.z < tileLo.x || box.y > tileHi.y || box.w < tileLo.y) continue;
+      ivec2 v0 = rasterBatch[i].v01.xy, v1 = rasterBatch[i].v01.zw, v2 = rasterBatch[i].v2.xy;
+      float depth;
+      if (rasterCovers(v0, v1, v2, uint(rasterBatch[i].v2.w), rasterArea2(v0, v1, v2),
+                       rasterBatch[i].depth.xyz, p, depth)) {
+        uint64_t key = rasterKey(depth, uint(rasterBatch[i].v2.z));
+        best = max(best, key);
+      }
+    }
+    barrier();
+  }
+  return best;
+}
+
+#endif
