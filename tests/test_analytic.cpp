@@ -369,7 +369,8 @@ std::pair<bool, float> outlineDistance(glm::vec2 g, glm::vec2 offset, float xSca
 // along +x: the shadow is the square moved 3 tan(45) = 3 m towards -x. With one texel and no filter,
 // every pixel more than 1.5 of the sun's texels from the shadow's edge must be exactly lit (brdf x
 // cos x E) or exactly dark (no ambient); with PCF, every pixel 3 texels from it. Pixels that see
-// the occluder itself are skipped; both sides of every edge are checked.
+// the occluder itself are skipped; both sides of every edge are checked. On one path the casters
+// are also drawn by the compute rasterizer (shadows/shadow_raster.h).
 TEST_P(Analytic, SunShadowOfASquareOccluder) {
   Scene scene = planeScene();
   addSquareOccluder(scene);
@@ -381,8 +382,11 @@ TEST_P(Analytic, SunShadowOfASquareOccluder) {
   scene.directionalLights = {sun};
   const PlaneMaterial pm;
   const glm::vec2 shift(-3.0f * std::tan(zenith), 0.0f);
-  for (const char* filter : {"none", "pcf"}) {
-    SCOPED_TRACE(std::string("--shadow-filter ") + filter);
+  std::vector<std::pair<const char*, const char*>> runs = {{"none", "hardware"}, {"pcf", "hardware"}};
+  if (std::string(GetParam().name) == "forward-visibility")
+    runs.insert(runs.end(), {{"none", "compute"}, {"pcf", "compute"}});
+  for (const auto& [filter, raster] : runs) {
+    SCOPED_TRACE(std::string("--shadow-filter ") + filter + " --shadow-raster " + raster);
     const float edgeTexels = std::string(filter) == "none" ? 1.5f : 3.0f;
     int nearEdge = 0;
     Counts c = checkAgainstFormula(
@@ -409,6 +413,7 @@ TEST_P(Analytic, SunShadowOfASquareOccluder) {
         GetParam(), "compute",
         [&](RenderSettings& s) {
           s.shadowFilter = filter;
+          s.shadowRaster = raster;
           s.shadowResolution = 1024;
         });
     std::printf("[ analytic ] %d pixels near the shadow's edge skipped\n", nearEdge);

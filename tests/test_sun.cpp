@@ -73,6 +73,24 @@ TEST(Sun, ShadowsMatchForwardInEveryTechnique) {
                           "sun-shadowed atrium lll on the raster G-buffer");
 }
 
+// The casters drawn by the compute rasterizer (shadows/shadow_raster.h) give the hardware pass's
+// shadow: both follow Vulkan's coverage rules, so only snapping ties may differ.
+TEST(Sun, ComputeRasterizedShadowsMatchTheHardwares) {
+  SceneRequest request{"atrium", 0, 1};
+  request.suns = {"0.4,0.6,0.25,20,1,0.9,0.75"};
+  const Scene scene = loadScene(request);
+  RenderSettings settings;
+  settings.width = 160;
+  settings.height = 90;
+  settings.technique = "lll";
+  settings.shadowResolution = 512;
+  settings.shadowRaster = "hardware";
+  const test::Rendered hardware = test::render(scene, settings);
+  settings.shadowRaster = "compute";
+  test::expectWithinBound(test::render(scene, settings).ldr, hardware.ldr, test::kSameImage,
+                          "sun shadow drawn in compute");
+}
+
 // Smoke scatters the sun as it scatters a point light (particles/scattering.glsl), per pixel and
 // once per particle.
 TEST(Sun, LightsTheSmokeAsForwardDoes) {

@@ -9,6 +9,23 @@
 #extension GL_EXT_control_flow_attributes : enable
 #include "common/raster.glsl"
 
+// What the triangles are: records of (primitive, instance) pairs, each a run of triangles.
+layout(std430, set = 0, binding = 16) readonly buffer SurfaceRecordBlock {
+  SurfaceRecord surfaceRecords[];
+};
+layout(std430, set = 0, binding = 17) readonly buffer InstanceBlock {
+  MeshInstance meshInstances[];
+};
+layout(std430, set = 0, binding = 18) readonly buffer PositionBlock {
+  float positions[];  // xyz per vertex
+};
+layout(std430, set = 0, binding = 19) readonly buffer IndexBlock {
+  uint sceneIndices[];
+};
+// The first triangle of each record, and the total last.
+layout(std430, set = 0, binding = 21) readonly buffer TriangleStartBlock {
+  uint triangleStarts[];
+};
 layout(std430, set = 0, binding = 22) buffer KeyBlock {
   uint64_t keys[];
 };
@@ -29,6 +46,27 @@ struct RasterTarget {
   ivec2 cellOrigin;
   ivec2 cellSize;
 };
+
+// Triangle `triangle` of raster.counts.x: its record (the last whose first triangle is not after
+// it; raster.counts.y records), its place in the record's run, and its corners in world space.
+void rasterTriangleWorld(uint triangle, out uint record, out uint local, out vec4 world[3]) {
+  uint lo = 0u, hi = raster.counts.y;  // triangleStarts[lo] <= triangle < triangleStarts[hi]
+  while (hi - lo > 1u) {
+    uint mid = (lo + hi) / 2u;
+    if (triangleStarts[mid] <= triangle)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  record = lo;
+  local = triangle - triangleStarts[record];
+  SurfaceRecord r = surfaceRecords[record];
+  mat4 model = meshInstances[r.instance].model;
+  [[unroll]] for (int k = 0; k < 3; ++k) {
+    uint v = (sceneIndices[r.firstIndex + 3u * local + uint(k)] + r.vertexOffset) * 3u;
+    world[k] = model * vec4(positions[v], positions[v + 1u], positions[v + 2u], 1.0);
+  }
+}
 
 const int kMaxClipped = 9;  // a triangle clipped by six planes
 

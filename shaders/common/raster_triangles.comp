@@ -12,22 +12,6 @@ layout(local_size_x = 64) in;
 
 layout(constant_id = 20) const uint kTriangleBits = 16u;
 
-layout(std430, set = 0, binding = 16) readonly buffer SurfaceRecordBlock {
-  SurfaceRecord surfaceRecords[];
-};
-layout(std430, set = 0, binding = 17) readonly buffer InstanceBlock {
-  MeshInstance meshInstances[];
-};
-layout(std430, set = 0, binding = 18) readonly buffer PositionBlock {
-  float positions[];  // xyz per vertex
-};
-layout(std430, set = 0, binding = 19) readonly buffer IndexBlock {
-  uint sceneIndices[];
-};
-// The first triangle of each opaque record, and the total last.
-layout(std430, set = 0, binding = 21) readonly buffer TriangleStartBlock {
-  uint triangleStarts[];
-};
 layout(push_constant) uniform RasterBlock {
   RasterPush raster;
 };
@@ -37,25 +21,11 @@ layout(push_constant) uniform RasterBlock {
 void main() {
   uint triangle = (gl_WorkGroupID.y * raster.counts.w + gl_WorkGroupID.x) * 64u + gl_LocalInvocationID.x;
   if (triangle >= raster.counts.x) return;
-  // The record holding it: the last whose first triangle is not after it.
-  uint lo = 0u, hi = raster.counts.y;  // triangleStarts[lo] <= triangle < triangleStarts[hi]
-  while (hi - lo > 1u) {
-    uint mid = (lo + hi) / 2u;
-    if (triangleStarts[mid] <= triangle)
-      lo = mid;
-    else
-      hi = mid;
-  }
-  uint record = lo;
-  uint local = triangle - triangleStarts[record];
-  SurfaceRecord r = surfaceRecords[record];
-  mat4 model = meshInstances[r.instance].model;
+  uint record, local;
+  vec4 world[3];
+  rasterTriangleWorld(triangle, record, local, world);
   vec4 c[3];
-  [[unroll]] for (int k = 0; k < 3; ++k) {
-    uint v = (sceneIndices[r.firstIndex + 3u * local + uint(k)] + r.vertexOffset) * 3u;
-    vec4 world = model * vec4(positions[v], positions[v + 1u], positions[v + 2u], 1.0);
-    c[k] = frame.viewProj * world;
-  }
+  [[unroll]] for (int k = 0; k < 3; ++k) c[k] = frame.viewProj * world[k];
   uint id = (record << kTriangleBits) | local;
   bool cullBack = record < raster.counts.z;
 

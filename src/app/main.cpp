@@ -103,6 +103,10 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--shadow-filter", s.shadowFilter,
                  "sun shadow filter: pcf (3x3 bilinear comparisons) | none (one texel)")
       ->check(CLI::IsMember({"pcf", "none"}));
+  cmd.add_option("--shadow-raster", s.shadowRaster,
+                 "who draws the shadow casters: hardware | compute | auto (compute on a GPU, hardware on a "
+                 "CPU device)")
+      ->check(CLI::IsMember({"hardware", "compute", "auto"}));
   cmd.add_option(
          "--gi", job.scene.gi.mode,
          "indirect light: none | vpl (instant radiosity: photons traced from the lights leave virtual "

@@ -51,6 +51,9 @@ struct RenderSettings {
   uint32_t cascades = 4;
   uint32_t shadowResolution = 2048;
   std::string shadowFilter = "pcf";
+  // Who draws the shadow casters: hardware | compute (shadows/shadow_raster.h) | auto (compute on a
+  // GPU where it fits, hardware on a CPU device).
+  std::string shadowRaster = "auto";
 };
 
 }  // namespace lll

@@ -13,6 +13,7 @@
 #include "render/gpu_scene.h"
 #include "render/settings.h"
 #include "scene/errors.h"
+#include "shadows/shadow_raster.h"
 
 namespace lll {
 
@@ -55,6 +56,9 @@ SunShadowOptions sunShadowOptions(const RenderSettings& s) {
     throw InputError(fmt::format("--shadow-resolution {}: expected 16 to 8192 texels", s.shadowResolution));
   if (s.shadowFilter != "pcf" && s.shadowFilter != "none")
     throw InputError(fmt::format("--shadow-filter {}: expected pcf or none", s.shadowFilter));
+  if (s.shadowRaster != "hardware" && s.shadowRaster != "compute" && s.shadowRaster != "auto")
+    throw InputError(fmt::format("--shadow-raster {}: expected hardware, compute or auto", s.shadowRaster));
+  o.raster = s.shadowRaster;
   o.cascades = s.shadows == "none" ? 0 : s.cascades;
   o.resolution = s.shadowResolution;
   o.filter = s.shadowFilter == "pcf" ? gpu::kShadowFilterPcf : gpu::kShadowFilterNone;
@@ -146,9 +150,10 @@ SunShadows::SunShadows(Context& context, const GpuScene& scene, const SunShadowO
           "largest image is {} on a side",
           options_.resolution, options_.cascades, atlasWidth_, atlasHeight_, largest));
   }
-  atlas_ =
-      Image(context, atlasWidth_, atlasHeight_, VK_FORMAT_D32_SFLOAT,
-            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "sun-shadow-atlas");
+  atlas_ = Image(context, atlasWidth_, atlasHeight_, VK_FORMAT_D32_SFLOAT,
+                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                     VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // the compute rasterizer's copy
+                 "sun-shadow-atlas");
   uniforms_ = Buffer(context, sizeof(gpu::SunShadow), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload,
                      "sun-shadow");
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
@@ -181,7 +186,15 @@ SunShadows::SunShadows(Context& context, const GpuScene& scene, const SunShadowO
     if (mode == AlphaMode::Opaque) opaqueDraws_[item.mesh].push_back(d);
     if (mode == AlphaMode::Mask) maskedDraws_[item.mesh].push_back(d);
   }
+  for (const auto& masked : maskedDraws_) hasMasked_ = hasMasked_ || !masked.empty();
   order_.resize(options_.cascades);
+  // auto: compute where it fits, on a GPU (bench/README.md, "The sun's shadow").
+  const std::string problem = ShadowRaster::problem(context, atlasWidth_, atlasHeight_);
+  if (options_.raster == "compute" && !problem.empty())
+    throw InputError(fmt::format("--shadow-raster compute: {}", problem));
+  if (options_.raster == "compute" ||
+      (options_.raster == "auto" && problem.empty() && !context.isCpuDevice()))
+    computeRaster_ = std::make_unique<ShadowRaster>(context, scene, atlasWidth_, atlasHeight_);
   casters_ = Buffer(
       context,
       std::max<size_t>(1, size_t(options_.cascades) * instanceBounds_.size()) * sizeof(gpu::MeshInstance),
@@ -189,6 +202,7 @@ SunShadows::SunShadows(Context& context, const GpuScene& scene, const SunShadowO
 }
 
 SunShadows::~SunShadows() {
+  computeRaster_.reset();
   vkDestroySampler(context_.device(), sampler_, nullptr);
 }
 
@@ -241,22 +255,37 @@ void SunShadows::record(FrameContext& frame) {
   const auto clearOrDraw = [&](VkCommandBuffer cmd) {
     beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
                    VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
-    if (data_.config.x > 0) drawCasters(frame, cmd);
+    if (data_.config.x > 0) {
+      drawCasters(frame, cmd, AlphaMode::Opaque);
+      drawCasters(frame, cmd, AlphaMode::Mask);
+    }
     vkCmdEndRendering(cmd);
   };
-  if (data_.config.x > 0)
-    frame.graph.pass("shadow-sun", {uses(atlas_, Use::DepthWrite)}, clearOrDraw);
-  else
+  if (data_.config.x == 0) {
     frame.graph.step({uses(atlas_, Use::DepthWrite)}, clearOrDraw);
+  } else if (!computeRaster_) {
+    frame.graph.pass("shadow-sun", {uses(atlas_, Use::DepthWrite)}, clearOrDraw);
+  } else {
+    computeRaster_->record(frame, uniforms_, atlas_);
+    if (hasMasked_)
+      frame.graph.pass("shadow-sun-masked", {uses(atlas_, Use::DepthReadWrite)}, [&](VkCommandBuffer cmd) {
+        beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
+                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, false);
+        drawCasters(frame, cmd, AlphaMode::Mask);
+        vkCmdEndRendering(cmd);
+      });
+  }
   // Every later pass may read it, in any shader stage: one transition here covers them all.
   frame.graph.step({uses(atlas_, Use::Sampled, kReaders)}, [](VkCommandBuffer) {});
 }
 
-void SunShadows::drawCasters(const FrameContext& frame, VkCommandBuffer cmd) const {
+void SunShadows::drawCasters(const FrameContext& frame, VkCommandBuffer cmd, AlphaMode mode) const {
   const VkDeviceSize offsets[2] = {0, 0};
   const VkBuffer vertexBuffers[2] = {scene_.vertexBuffer().handle(), casters_.handle()};
   vkCmdBindVertexBuffers(cmd, 0, 2, vertexBuffers, offsets);
   vkCmdBindIndexBuffer(cmd, scene_.indexBuffer().handle(), 0, VK_INDEX_TYPE_UINT32);
+  const bool masked = mode == AlphaMode::Mask;
+  (masked ? masked_ : opaque_).bind(cmd);
   meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
   const Scene& scene = scene_.scene();
   const uint32_t instances = uint32_t(scene.instances.size());
@@ -269,37 +298,25 @@ void SunShadows::drawCasters(const FrameContext& frame, VkCommandBuffer cmd) con
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     const glm::uvec4 cascade(c, 0u, 0u, 0u);
     vkCmdPushConstants(cmd, layout_.handle(), kCasterStages, sizeof(glm::uvec4), sizeof(cascade), &cascade);
-    const uint32_t first = c * instances;
     // A single-sided material casts from its front faces only (its back faces do not exist, as
     // glTF culls them when drawing), a double-sided one from both.
     VkCullModeFlags cull = ~0u;
-    const auto cullFor = [&](uint32_t material) {
-      const VkCullModeFlags wanted =
-          scene.materials[material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-      if (wanted != cull) vkCmdSetCullMode(cmd, wanted);
-      cull = wanted;
-    };
-    opaque_.bind(cmd);
-    for (uint32_t slot = 0; slot < order_[c].size(); ++slot)
-      for (uint32_t d : opaqueDraws_[scene.instances[order_[c][slot]].mesh]) {
-        const DrawItem& item = scene_.draws()[d];
-        cullFor(item.material);
-        vkCmdDrawIndexed(cmd, item.indexCount, 1, item.firstIndex, int32_t(item.vertexOffset), first + slot);
-      }
-    masked_.bind(cmd);
-    cull = ~0u;
     uint32_t bound = ~0u;
     for (uint32_t slot = 0; slot < order_[c].size(); ++slot)
-      for (uint32_t d : maskedDraws_[scene.instances[order_[c][slot]].mesh]) {
+      for (uint32_t d : (masked ? maskedDraws_ : opaqueDraws_)[scene.instances[order_[c][slot]].mesh]) {
         const DrawItem& item = scene_.draws()[d];
-        cullFor(item.material);
-        if (item.material != bound) {
+        const VkCullModeFlags wanted =
+            scene.materials[item.material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+        if (wanted != cull) vkCmdSetCullMode(cmd, wanted);
+        cull = wanted;
+        if (masked && item.material != bound) {
           scene_.bindMaterialSet(cmd, layout_.handle(), item.material);
           const glm::uvec4 ids(item.material, 0u, 0u, 0u);
           vkCmdPushConstants(cmd, layout_.handle(), kCasterStages, 0, sizeof(ids), &ids);
           bound = item.material;
         }
-        vkCmdDrawIndexed(cmd, item.indexCount, 1, item.firstIndex, int32_t(item.vertexOffset), first + slot);
+        vkCmdDrawIndexed(cmd, item.indexCount, 1, item.firstIndex, int32_t(item.vertexOffset),
+                         c * instances + slot);
       }
   }
 }
@@ -313,6 +330,7 @@ void SunShadows::bind(DescriptorWriter& writer) const {
 std::vector<std::pair<std::string, double>> SunShadows::stats() const {
   if (!casting()) return {{"sun-shadow-cascades", 0.0}};
   return {{"sun-shadow-cascades", double(options_.cascades)},
+          {"sun-shadow-compute-raster", computeRaster_ ? 1.0 : 0.0},
           {"sun-shadow-resolution", double(options_.resolution)},
           {"sun-shadow_bytes", 4.0 * atlasWidth_ * atlasHeight_}};
 }

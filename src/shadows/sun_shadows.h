@@ -20,11 +20,15 @@
 // Lookups offset the point along its normal by a texel-sized step and bias the depth by the
 // surface's slope to the sun (tan theta times a texel), then filter with 3x3 bilinear comparisons
 // (`--shadow-filter pcf`) or read one texel (`none`: edges exactly where geometry puts them).
+// `--shadow-raster compute` draws the opaque casters with the compute rasterizer instead
+// (shadows/shadow_raster.h); alpha-masked ones are drawn by the hardware either way.
 #include <glm/glm.hpp>
 
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <memory>
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
@@ -36,6 +40,7 @@ namespace lll {
 
 class Context;
 class GpuScene;
+class ShadowRaster;
 struct FrameContext;
 struct RenderSettings;
 
@@ -43,6 +48,7 @@ struct SunShadowOptions {
   uint32_t cascades = 4;       // 1 to kMaxCascades; 0: the sun casts no shadow
   uint32_t resolution = 2048;  // texels along each cascade's side
   uint32_t filter = gpu::kShadowFilterPcf;
+  std::string raster = "auto";  // hardware | compute | auto
 };
 
 // The options `settings` ask for (--shadows, --cascades, --shadow-resolution, --shadow-filter),
@@ -86,7 +92,8 @@ class SunShadows {
   // sun first (so the depth test rejects what lies behind them early), their transforms written
   // into casters_.
   void orderCasters();
-  void drawCasters(const FrameContext& frame, VkCommandBuffer cmd) const;
+  // Draws each cascade's casters of `mode` (opaque or alpha-masked) with the hardware.
+  void drawCasters(const FrameContext& frame, VkCommandBuffer cmd, AlphaMode mode) const;
 
   Context& context_;
   const GpuScene& scene_;
@@ -98,6 +105,8 @@ class SunShadows {
   Buffer uniforms_;
   Image atlas_;
   VkSampler sampler_ = VK_NULL_HANDLE;
+  std::unique_ptr<ShadowRaster> computeRaster_;  // --shadow-raster compute (or auto's choice)
+  bool hasMasked_ = false;
   PipelineLayout layout_;
   Pipeline opaque_;
   Pipeline masked_;
