@@ -68,6 +68,20 @@ void rasterTriangleWorld(uint triangle, out uint record, out uint local, out vec
   }
 }
 
+// Appends large triangle `slot` (bounds `box`) to every bin it touches, the `part`-th of every
+// `parts` bins (several invocations can share one triangle's bins).
+void rasterListInBins(uint slot, ivec4 box, uint imageHeight, uint part, uint parts) {
+  uvec4 bins = uvec4(box) / kRasterBinSize;
+  uint across = bins.z - bins.x + 1u;
+  uint count = across * (bins.w - bins.y + 1u);
+  for (uint i = part; i < count; i += parts) {
+    uint bin = (bins.y + i / across) * raster.large.z + bins.x + i % across;
+    uint k = atomicAdd(binData[bin], 1u);
+    if (k < raster.large.w)
+      binData[rasterBinEntry(raster.large.z, raster.large.w, imageHeight, bin, k)] = slot;
+  }
+}
+
 const int kMaxClipped = 9;  // a triangle clipped by six planes
 
 void cover(ivec2 v0, ivec2 v1, ivec2 v2, uint topLeft, int64_t area2, vec3 z, uint id, ivec4 box,
@@ -138,15 +152,9 @@ void rasterize(vec4 c0, vec4 c1, vec4 c2, uint id, bool cullBack, RasterTarget t
     if (slot < raster.large.x) {
       largeTriangles[slot] =
           RasterTriangle(ivec4(v0, v1), ivec4(v2, int(id), int(topLeft)), vec4(z, 0.0), box);
-      uvec4 bins = uvec4(box) / kRasterBinSize;
-      for (uint by = bins.y; by <= bins.w; ++by) {
-        for (uint bx = bins.x; bx <= bins.z; ++bx) {
-          uint bin = by * raster.large.z + bx;
-          uint k = atomicAdd(binData[bin], 1u);
-          if (k < raster.large.w)
-            binData[rasterBinEntry(raster.large.z, raster.large.w, uint(target.imageSize.y), bin, k)] = slot;
-        }
-      }
+#ifndef RASTER_BINS_LATER
+      rasterListInBins(slot, box, uint(target.imageSize.y), 0u, 1u);
+#endif
       return;
     }
     // The list is full: cover it here (slowly, but nothing is lost).

@@ -15,6 +15,9 @@ layout(push_constant) uniform RasterBlock {
   RasterPush raster;
 };
 
+// A shadow cascade's large triangles can span thousands of bins: shadows/caster_bins.comp lists
+// them, a workgroup per triangle, instead of the thread that found them.
+#define RASTER_BINS_LATER
 #include "common/raster_triangle.glsl"
 
 void main() {

@@ -22,6 +22,7 @@ constexpr uint32_t kLargestOwnBox = 64;     // texels a thread covers itself
 constexpr VkDeviceSize kLargeHeader = 16;   // the count, padded to the entries' alignment
 constexpr uint32_t kBinSize = 32;           // kRasterBinSize in common/raster.glsl
 constexpr uint32_t kBinCapacity = 1024;     // listed triangles per bin; a fuller bin tests them all
+constexpr uint32_t kBinningGroups = 1024;   // caster_bins.comp's workgroups, each taking every 1024th
 
 VkDeviceSize keyBytes(uint32_t width, uint32_t height) {
   return VkDeviceSize(width) * height * sizeof(uint64_t);
@@ -85,8 +86,10 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
   depth_ = Buffer(context, VkDeviceSize(width) * height * sizeof(float),
                   kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device, "shadow-raster-depth");
 
-  layout_ = PipelineLayout(context, {"shadows/caster_triangles.comp", "shadows/caster_resolve.comp"});
+  layout_ = PipelineLayout(
+      context, {"shadows/caster_triangles.comp", "shadows/caster_bins.comp", "shadows/caster_resolve.comp"});
   trianglePipeline_ = Pipeline(context, layout_, "shadows/caster_triangles.comp");
+  binPipeline_ = Pipeline(context, layout_, "shadows/caster_bins.comp");
   resolvePipeline_ = Pipeline(context, layout_, "shadows/caster_resolve.comp");
 }
 
@@ -129,6 +132,12 @@ void ShadowRaster::record(FrameContext& frame, const Buffer& shadowUniforms, con
         bindAll(cmd, trianglePipeline_);
         vkCmdDispatch(cmd, groupsPerRow, divideRoundingUp(groups, groupsPerRow), 1);
       });
+  frame.graph.pass("shadow-sun-bins",
+                   {uses(large_, Use::StorageRead, kCompute), uses(bins_, Use::StorageReadWrite, kCompute)},
+                   [&](VkCommandBuffer cmd) {
+                     bindAll(cmd, binPipeline_);
+                     vkCmdDispatch(cmd, kBinningGroups, 1, 1);
+                   });
   frame.graph.pass("shadow-sun-resolve",
                    {uses(keys_, Use::StorageRead, kCompute), uses(large_, Use::StorageRead, kCompute),
                     uses(bins_, Use::StorageRead, kCompute), uses(depth_, Use::StorageWrite, kCompute)},

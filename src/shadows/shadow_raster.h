@@ -4,7 +4,10 @@
 // cascades. On the H200 the hardware pass is bound by its few raster units; compute runs on all.
 //   "shadow-sun"          one invocation per opaque caster triangle (every instance) draws it into
 //                         each cascade's cell: small boxes covered with 64-bit atomic max, large
-//                         triangles listed per 32x32-texel bin;
+//                         triangles listed;
+//   "shadow-sun-bins"     each large triangle appended to the 32x32-texel bins it touches, by a
+//                         workgroup (the visibility buffer's thread-per-triangle listing took 3.6 ms
+//                         of 5.3 on the H200: a near cascade's triangle spans thousands of bins);
 //   "shadow-sun-resolve"  one invocation per atlas texel keeps the nearest depth of its key and its
 //                         bin's large triangles; the depths are copied into the atlas;
 //   "shadow-sun-masked"   alpha-masked casters drawn by the hardware over that depth (they need
@@ -43,6 +46,7 @@ class ShadowRaster {
   uint32_t triangles_ = 0;
   PipelineLayout layout_;
   Pipeline trianglePipeline_;
+  Pipeline binPipeline_;
   Pipeline resolvePipeline_;
   Buffer recordBuffer_;  // SurfaceRecord per (instance, opaque primitive), single-sided first
   Buffer starts_;        // each record's first triangle, and the total

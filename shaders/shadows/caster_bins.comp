@@ -1,0 +1,24 @@
+#version 460
+// The shadow casters' compute rasterizer, between its two passes (shadows/shadow_raster.h): the
+// large triangles caster_triangles.comp listed are appended to every 32x32-texel bin they touch,
+// each by a whole workgroup (a triangle of a near cascade can cover the cascade's 4,096 bins).
+#include "common/frame.glsl"
+#include "shared/shadow_types.h"
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = 26) readonly buffer SunShadowBlock {
+  SunShadow sunShadow;
+};
+layout(push_constant) uniform RasterBlock {
+  RasterPush raster;
+};
+
+#include "common/raster_triangle.glsl"
+
+void main() {
+  uint imageHeight = uint(round(sunShadow.atlas.y / sunShadow.atlas.w));
+  uint listed = min(largeCount, raster.large.x);
+  for (uint slot = gl_WorkGroupID.x; slot < listed; slot += gl_NumWorkGroups.x)
+    rasterListInBins(slot, largeTriangles[slot].bounds, imageHeight, gl_LocalInvocationID.x, 64u);
+}
