@@ -230,15 +230,42 @@ void clipAndRasterize(vec4 c0, vec4 c1, vec4 c2, uint id, bool cullBack, RasterT
   for (int i = 1; i + 1 < count; ++i) rasterize(c[0], c[i], c[i + 1], id, cullBack, target);
 }
 
-shared RasterTriangle rasterBatch[64];
+// The per-pixel pass's batch of large triangles, sorted by the 8x8 tile: those covering all of it
+// (no edge test per pixel) and those covering part of it. Triangles missing it are dropped.
+shared RasterTriangle rasterPartial[64];
+shared RasterTriangle rasterFull[64];
+shared uint rasterPartialCount;
+shared uint rasterFullCount;
+
+// Where triangle `t` lies against the tile whose first and last pixel centres are `lo` and `hi`:
+// 0 outside (one edge has all four corners outside), 2 covering it whole (every corner inside
+// every edge, as rasterCovers decides), 1 in part.
+uint rasterTileClass(RasterTriangle t, ivec2 lo, ivec2 hi) {
+  ivec2 v[3] = ivec2[3](t.v01.xy, t.v01.zw, t.v2.xy);
+  uint topLeft = uint(t.v2.w);
+  bool whole = true;
+  for (int k = 0; k < 3; ++k) {
+    ivec2 a = v[(k + 1) % 3], b = v[(k + 2) % 3];
+    int64_t bias = int64_t((topLeft & (1u << k)) == 0u ? 1 : 0);
+    uint inside = 0u;
+    for (int c = 0; c < 4; ++c) {
+      ivec2 p = ivec2((c & 1) == 0 ? lo.x : hi.x, (c & 2) == 0 ? lo.y : hi.y);
+      if (rasterEdge(a, b, p) - bias >= 0) ++inside;
+    }
+    if (inside == 0u) return 0u;
+    whole = whole && inside == 4u;
+  }
+  return whole ? 2u : 1u;
+}
 
 // The per-pixel pass: the nearest key at `pixel` of an image `size` pixels large, from the first
 // pass's key and the large triangles listed in its 32x32-pixel bin (all of them when the bin's list
-// overflowed), walked in batches held in shared memory by the 8x8 workgroup, skipping those whose
-// bounds miss its tile. Every invocation of the workgroup must call it.
+// overflowed), walked in batches held in shared memory by the 8x8 workgroup, each triangle first
+// placed against the tile (rasterTileClass). Every invocation of the workgroup must call it.
 uint64_t rasterNearest(ivec2 pixel, ivec2 size) {
   bool inImage = all(lessThan(pixel, size));
   ivec2 tileLo = ivec2(gl_WorkGroupID.xy) * 8, tileHi = tileLo + 7;
+  ivec2 lo = rasterCentre(tileLo.x, tileLo.y), hi = rasterCentre(tileHi.x, tileHi.y);
   ivec2 p = rasterCentre(pixel.x, pixel.y);
   uint64_t best = inImage ? keys[uint(pixel.y) * uint(size.x) + uint(pixel.x)] : 0ul;
   uvec2 binXY = gl_WorkGroupID.xy * 8u / kRasterBinSize;
@@ -247,24 +274,39 @@ uint64_t rasterNearest(ivec2 pixel, ivec2 size) {
   bool overflow = listed > raster.large.w;
   uint count = overflow ? min(largeCount, raster.large.x) : listed;
   for (uint first = 0u; first < count; first += 64u) {
-    uint mine = first + gl_LocalInvocationIndex;
-    if (mine < count)
-      rasterBatch[gl_LocalInvocationIndex] =
-          largeTriangles[overflow ? mine
-                                  : binData[rasterBinEntry(raster.large.z, raster.large.w, uint(size.y), bin,
-                                                           mine)]];
+    if (gl_LocalInvocationIndex == 0u) {
+      rasterPartialCount = 0u;
+      rasterFullCount = 0u;
+    }
     barrier();
-    uint n = min(64u, count - first);
-    for (uint i = 0u; i < n; ++i) {
-      ivec4 box = rasterBatch[i].bounds;
-      if (box.x > tileHi.x || box.z < tileLo.x || box.y > tileHi.y || box.w < tileLo.y) continue;
-      ivec2 v0 = rasterBatch[i].v01.xy, v1 = rasterBatch[i].v01.zw, v2 = rasterBatch[i].v2.xy;
+    uint mine = first + gl_LocalInvocationIndex;
+    if (mine < count) {
+      RasterTriangle t = largeTriangles[overflow ? mine
+                                                 : binData[rasterBinEntry(raster.large.z, raster.large.w,
+                                                                          uint(size.y), bin, mine)]];
+      ivec4 box = t.bounds;
+      bool touches = !(box.x > tileHi.x || box.z < tileLo.x || box.y > tileHi.y || box.w < tileLo.y);
+      uint place = touches ? rasterTileClass(t, lo, hi) : 0u;
+      if (place == 2u)
+        rasterFull[atomicAdd(rasterFullCount, 1u)] = t;
+      else if (place == 1u)
+        rasterPartial[atomicAdd(rasterPartialCount, 1u)] = t;
+    }
+    barrier();
+    for (uint i = 0u; i < rasterFullCount; ++i) {
+      ivec2 v0 = rasterFull[i].v01.xy, v1 = rasterFull[i].v01.zw, v2 = rasterFull[i].v2.xy;
+      vec3 z = rasterFull[i].depth.xyz;
+      float depth = (float(rasterEdge(v1, v2, p)) * z.x + float(rasterEdge(v2, v0, p)) * z.y +
+                     float(rasterEdge(v0, v1, p)) * z.z) *
+                    (1.0 / float(rasterArea2(v0, v1, v2)));
+      best = max(best, rasterKey(depth, uint(rasterFull[i].v2.z)));
+    }
+    for (uint i = 0u; i < rasterPartialCount; ++i) {
+      ivec2 v0 = rasterPartial[i].v01.xy, v1 = rasterPartial[i].v01.zw, v2 = rasterPartial[i].v2.xy;
       float depth;
-      if (rasterCovers(v0, v1, v2, uint(rasterBatch[i].v2.w), rasterArea2(v0, v1, v2),
-                       rasterBatch[i].depth.xyz, p, depth)) {
-        uint64_t key = rasterKey(depth, uint(rasterBatch[i].v2.z));
-        best = max(best, key);
-      }
+      if (rasterCovers(v0, v1, v2, uint(rasterPartial[i].v2.w), rasterArea2(v0, v1, v2),
+                       rasterPartial[i].depth.xyz, p, depth))
+        best = max(best, rasterKey(depth, uint(rasterPartial[i].v2.z)));
     }
     barrier();
   }
