@@ -9,8 +9,9 @@
 //    64-bit atomic max of (depth << 32 | id + 1) per pixel, or appends the triangle to a list;
 //    large ones are listed once and their slot appended to each 32x32-pixel bin they touch;
 //  - "visibility-resolve" (common/raster_resolve.comp): one invocation per pixel tests its bin's
-//    large triangles against its centre (a workgroup skips those missing its tile), keeps the
-//    nearest key, and writes the id image and a depth buffer;
+//    large triangles against its centre (a workgroup first drops those missing its 8x8 tile and
+//    skips the edge tests of those covering all of it), keeps the nearest key, and writes the id
+//    image and a depth buffer;
 //  - the depth buffer is copied into the depth image that later passes test and sample.
 // Coverage follows Vulkan's rules (8 sub-pixel bits, top-left edges, counter-clockwise front
 // faces), so ids match the hardware pass pixel for pixel up to snapping ties. Alpha-masked
