@@ -3,6 +3,7 @@
 // the prepass). Ambient and emission need no light, so they go straight into the accumulation
 // target, as Infinity's forward-lit "FL" channels do; the G-buffer keeps only what lighting reads.
 // Layout and decoding: common/gbuffer.glsl.
+#include "common/gbuffer.glsl"
 #include "common/mesh_fragment.glsl"
 
 // False for deferred, which lights the sun in a pass of its own, as Infinity did
@@ -18,6 +19,6 @@ void main() {
   Surface s = surfaceAtFragment(m);
   if (m.flags.x == kAlphaMask && s.alpha < m.alpha.x) discard;
   outAccumulation = vec4(kSunInAccumulation ? unlistedLight(s) : ambientAndEmission(s), 1.0);
-  outGbuffer0 = vec4(s.baseColor, s.metallic);
-  outGbuffer1 = vec4(s.normal, s.roughness);
+  outGbuffer0 = gbuffer0Of(s);
+  outGbuffer1 = gbuffer1Of(s);
 }

@@ -1,10 +1,21 @@
-// Reading the thin G-buffer (src/render/gbuffer.h, written by common/gbuffer.frag):
-//   gbuffer0 RGBA8 sRGB: rgb base colour, a metallic
-//   gbuffer1 RGBA16F:    xyz world-space unit normal (facing the viewer), w roughness
+// Writing and reading the thin G-buffer (src/render/gbuffer.h, written by common/gbuffer.frag or,
+// from the visibility buffer, common/gbuffer_visibility.comp):
+//   gbuffer0 RGBA8:   rgb base colour, sRGB-encoded here (a storage image cannot have an sRGB
+//                     format), a metallic
+//   gbuffer1 RGBA16F: xyz world-space unit normal (facing the viewer), w roughness
 #ifndef LLL_GBUFFER_GLSL
 #define LLL_GBUFFER_GLSL
 #include "common/brdf.glsl"
 #include "common/frame.glsl"
+#include "common/srgb.glsl"
+
+// The two G-buffer texels of a surface (its ambient and emission go to the accumulation target).
+vec4 gbuffer0Of(Surface s) {
+  return vec4(srgbEncode(s.baseColor), s.metallic);
+}
+vec4 gbuffer1Of(Surface s) {
+  return vec4(s.normal, s.roughness);
+}
 
 // The surface the BRDF needs at `position` from the two G-buffer texels. Ambient and emission are
 // already in the accumulation target, so those fields are left neutral.
@@ -13,7 +24,7 @@ Surface surfaceFromGbuffer(vec4 g0, vec4 g1, vec3 position) {
   s.position = position;
   s.normal = normalize(g1.xyz);
   s.view = normalize(frame.cameraPosition.xyz - position);
-  s.baseColor = g0.rgb;
+  s.baseColor = srgbDecode(g0.rgb);
   s.alpha = 1.0;
   s.metallic = g0.a;
   s.roughness = g1.w;

@@ -2,6 +2,7 @@
 // HDR to display: exposure, a filmic curve (Narkowicz's ACES fit), sRGB encoding.
 #include "common/debug_colors.glsl"
 #include "common/finite.glsl"
+#include "common/srgb.glsl"
 #include "shared/gpu_types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -16,10 +17,6 @@ layout(set = 0, binding = 2, rgba8) uniform writeonly image2D ldrImage;
 vec3 filmic(vec3 x) {
   x = min(x, vec3(65504.0));
   return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-}
-
-vec3 srgbEncode(vec3 c) {
-  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
 }
 
 // The heatmap's legend, bottom left: one 8-pixel cell per light count from 1 to the scale (red),

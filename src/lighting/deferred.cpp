@@ -1,7 +1,8 @@
 // Technique "deferred": Infinity's deferred lighting (seeds/infinity-deferred-instant-radiosity.txt).
-//   deferred-gbuffer      the scene once (depth EQUAL the prepass) into the shared thin G-buffer
-//                         (render/gbuffer.h), with ambient and emission written straight into the
-//                         accumulation target
+//   deferred-gbuffer      the shared thin G-buffer (render/gbuffer.h), in compute from the
+//                         visibility buffer (or, with --surfaces gbuffer, the scene drawn again with
+//                         depth EQUAL the prepass), with ambient and emission written straight into
+//                         the accumulation target
 //   deferred-lights       each visible light as a bounding volume, additively blended
 //   deferred-sun          the directional lights over the G-buffer, the first shadowed through its
 //                         cascades (shadows/sun_shadows.h): Infinity's sun pass, in compute
@@ -59,9 +60,9 @@ bool edgeAntiAliasing(const RenderSettings& settings) {
 class Deferred final : public Technique {
  public:
   Deferred(Context& context, const GpuScene& scene, const RenderSettings& settings,
-           const FrameTargets& targets)
+           const FrameTargets& targets, const VisibilityBuffer* visibility)
       : lightLayout_(context, kLightVolumeBindings),
-        gbuffer_(context, scene, targets, kAccumulationFormat, false),
+        gbuffer_(context, scene, targets, kAccumulationFormat, false, visibility),
         volumes_(context, uint32_t(scene.scene().lights.size())),
         lightFragments_(context),
         pixels_(double(targets.width) * targets.height),
@@ -241,8 +242,8 @@ class Deferred final : public Technique {
 
 std::unique_ptr<Technique> createDeferred(Context& context, const GpuScene& scene,
                                           const RenderSettings& settings, const FrameTargets& targets,
-                                          const VisibilityBuffer*) {
-  return std::make_unique<Deferred>(context, scene, settings, targets);
+                                          const VisibilityBuffer* visibility) {
+  return std::make_unique<Deferred>(context, scene, settings, targets, visibility);
 }
 
 }  // namespace lll

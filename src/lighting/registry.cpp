@@ -29,8 +29,7 @@ bool lllFragmentShading(const RenderSettings& settings) {
 const std::vector<TechniqueInfo>& techniques() {
   static const std::vector<TechniqueInfo> table = {
       {"forward", "brute force: every pixel evaluates every light (the reference)", &createForward},
-      {"deferred", "Infinity's deferred lighting: G-buffer, then lights drawn as volumes", &createDeferred,
-       &always},
+      {"deferred", "Infinity's deferred lighting: G-buffer, then lights drawn as volumes", &createDeferred},
       {"prepass", "Resistance 2's light pre-pass: normals, stencil-volume lights, material", &createPrepass,
        &always},
       {"lll", "light linked list: per-tile light lists built on the GPU (--lll-fill shells|ray|compute)",

@@ -1,14 +1,32 @@
 #include "render/gbuffer.h"
 
+#include <stdexcept>
+
+#include "render/gpu_scene.h"
+#include "render/visibility.h"
+
 namespace lll {
 
 GBuffer::GBuffer(Context& context, const GpuScene& scene, const FrameTargets& targets,
-                 VkFormat accumulationFormat, bool sunInAccumulation)
-    : layout_(
-          PipelineLayout(context, {"common/mesh.vert", "common/gbuffer.frag"}, {scene.materialSetLayout()})) {
-  const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+                 VkFormat accumulationFormat, bool sunInAccumulation, const VisibilityBuffer* visibility)
+    : fromVisibility_(visibility != nullptr) {
+  const VkImageUsageFlags usage =
+      VK_IMAGE_USAGE_SAMPLED_BIT |
+      (fromVisibility_ ? VK_IMAGE_USAGE_STORAGE_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
   target0_ = Image(context, targets.width, targets.height, kFormat0, usage, "gbuffer0");
   target1_ = Image(context, targets.width, targets.height, kFormat1, usage, "gbuffer1");
+  if (fromVisibility_) {
+    // common/gbuffer_visibility.comp writes deferred's accumulation: fp32, without the sun.
+    if (accumulationFormat != VK_FORMAT_R32G32B32A32_SFLOAT || sunInAccumulation)
+      throw std::logic_error(
+          "GBuffer: from the visibility buffer only into an fp32 accumulation without the sun");
+    const SpecializationConstants constants = visibility->surfaceConstants(scene);
+    layout_ =
+        PipelineLayout(context, {"common/gbuffer_visibility.comp"}, {scene.textureTableLayout()}, constants);
+    pipeline_ = Pipeline(context, layout_, "common/gbuffer_visibility.comp", constants);
+    return;
+  }
+  layout_ = PipelineLayout(context, {"common/mesh.vert", "common/gbuffer.frag"}, {scene.materialSetLayout()});
   GraphicsPipelineDesc desc;
   desc.vertexShader = "common/mesh.vert";
   desc.fragmentShader = "common/gbuffer.frag";
@@ -22,6 +40,27 @@ GBuffer::GBuffer(Context& context, const GpuScene& scene, const FrameTargets& ta
 
 void GBuffer::record(FrameContext& frame, const char* passName, const Image& accumulation) const {
   const FrameTargets& t = frame.targets;
+  if (fromVisibility_) {
+    constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    frame.graph.pass(
+        passName,
+        {uses(accumulation, Use::StorageWrite, kCompute), uses(target0_, Use::StorageWrite, kCompute),
+         uses(target1_, Use::StorageWrite, kCompute), uses(t.visibility, Use::StorageRead, kCompute)},
+        [&](VkCommandBuffer cmd) {
+          pipeline_.bind(cmd);
+          DescriptorWriter writer = meshPassDescriptors(frame);
+          writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, accumulation.view(), VK_IMAGE_LAYOUT_GENERAL)
+              .image(14, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, target0_.view(), VK_IMAGE_LAYOUT_GENERAL)
+              .image(15, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, target1_.view(), VK_IMAGE_LAYOUT_GENERAL);
+          frame.visibility->bindSurfaceData(writer, frame);
+          writer.push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+          const VkDescriptorSet textures = frame.scene.textureTable();
+          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 1, 1, &textures, 0,
+                                  nullptr);
+          dispatchPerPixel(cmd, t);
+        });
+    return;
+  }
   frame.graph.pass(
       passName,
       {uses(accumulation, Use::ColorWrite), uses(target0_, Use::ColorWrite), uses(target1_, Use::ColorWrite),
