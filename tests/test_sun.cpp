@@ -39,6 +39,13 @@ TEST(Sun, EveryTechniqueMatchesForward) {
   }
 }
 
+// The courtyard under a sun strong enough to dominate it (20 lux against its 110 lamps).
+Scene brightlySunlitAtrium() {
+  SceneRequest request{"atrium", 0, 1};
+  request.suns = {"0.4,0.6,0.25,20,1,0.9,0.75"};
+  return loadScene(request);
+}
+
 // The sun's shadow (shadows/sun_shadows.h) with the sun strong enough to dominate the courtyard:
 // every technique, with its glass, shadows it as forward does (the pre-pass through its 8-bit
 // screen-space buffer, within its own bound), and the shadows are in the picture. Each is compared
@@ -47,9 +54,7 @@ TEST(Sun, EveryTechniqueMatchesForward) {
 // shadow lookups from their slightly different points add more where a PCF tap sits at an edge
 // (15 pixels, up to 13/255); this test is about the techniques agreeing on one surface path.
 TEST(Sun, ShadowsMatchForwardInEveryTechnique) {
-  SceneRequest request{"atrium", 0, 1};
-  request.suns = {"0.4,0.6,0.25,20,1,0.9,0.75"};
-  const Scene scene = loadScene(request);
+  const Scene scene = brightlySunlitAtrium();
   RenderSettings settings;
   settings.width = 160;
   settings.height = 90;
@@ -62,8 +67,8 @@ TEST(Sun, ShadowsMatchForwardInEveryTechnique) {
   EXPECT_LT(test::psnr(test::render(scene, unshadowed).ldr, onGbuffer.ldr), 30.0) << "no shadow in view";
   for (const char* technique : {"lll", "tiled", "clustered", "deferred", "prepass"}) {
     settings.technique = technique;
-    // deferred and the pre-pass shade their own raster G-buffers.
-    const bool ownGbuffer = settings.technique == "deferred" || settings.technique == "prepass";
+    // The pre-pass shades its own raster buffers; deferred's G-buffer comes from the visibility buffer.
+    const bool ownGbuffer = settings.technique == "prepass";
     const test::ImageBound bound = settings.technique == "prepass" ? test::kPrepassBound : test::kSameImage;
     test::expectWithinBound(test::render(scene, settings).ldr, ownGbuffer ? onGbuffer.ldr : onVisibility.ldr,
                             bound, std::string("sun-shadowed atrium ") + technique);
@@ -77,9 +82,7 @@ TEST(Sun, ShadowsMatchForwardInEveryTechnique) {
 // The casters drawn by the compute rasterizer (shadows/shadow_raster.h) give the hardware pass's
 // shadow: both follow Vulkan's coverage rules, so only snapping ties may differ.
 TEST(Sun, ComputeRasterizedShadowsMatchTheHardwares) {
-  SceneRequest request{"atrium", 0, 1};
-  request.suns = {"0.4,0.6,0.25,20,1,0.9,0.75"};
-  const Scene scene = loadScene(request);
+  const Scene scene = brightlySunlitAtrium();
   RenderSettings settings;
   settings.width = 160;
   settings.height = 90;

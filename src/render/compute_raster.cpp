@@ -13,16 +13,9 @@ namespace lll {
 namespace {
 
 constexpr uint32_t kTriangleBitsConstant = 20;  // as common/visibility.frag
-constexpr uint32_t kGroupSize = 64;             // raster_triangles.comp's workgroup
-constexpr uint32_t kTileSize = 8;               // raster_resolve.comp's workgroup is kTileSize^2
-constexpr uint32_t kLargeCapacity = 65536;      // listed large triangles; more are covered in place
-// A triangle whose bounding box has more pixels than this goes to the per-pixel pass. Chosen by
-// measurement on the H200 (bench/README.md): one thread loops over its box, so a large box keeps
-// its SIMD group waiting.
-constexpr uint32_t kLargestOwnBox = 64;
-constexpr VkDeviceSize kLargeHeader = 16;  // the count, padded to the entries' alignment
-constexpr uint32_t kBinSize = 32;          // as kRasterBinSize in common/raster.glsl
-constexpr uint32_t kBinCapacity = 1024;    // listed triangles per bin; a fuller bin tests them all
+constexpr VkDeviceSize kLargeHeader = 16;       // the count, padded to the entries' alignment
+constexpr uint32_t kBinSize = 32;               // as kRasterBinSize in common/raster.glsl
+constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 
 VkDeviceSize keyBytes(uint32_t width, uint32_t height) {
   return VkDeviceSize(width) * height * sizeof(uint64_t);
@@ -30,19 +23,83 @@ VkDeviceSize keyBytes(uint32_t width, uint32_t height) {
 
 }  // namespace
 
-std::string ComputeRaster::problem(const Context& context, uint32_t width, uint32_t height) {
+std::string RasterWorkspace::problem(const Context& context, uint32_t width, uint32_t height,
+                                     const std::string& what) {
   if (!context.computeRasterFeatures())
     return fmt::format("{} lacks shaderInt64 or shaderBufferInt64Atomics", context.info().name);
   const VkDeviceSize limit = context.properties().limits.maxStorageBufferRange;
   if (keyBytes(width, height) > limit)
-    return fmt::format("{}x{} needs {} MiB of 64-bit keys, more than {}'s storage buffer limit ({} MiB)",
-                       width, height, keyBytes(width, height) >> 20, context.info().name, limit >> 20);
+    return fmt::format("{} needs {} MiB of 64-bit keys, more than {}'s storage buffer limit ({} MiB)", what,
+                       keyBytes(width, height) >> 20, context.info().name, limit >> 20);
   return {};
+}
+
+RasterWorkspace::RasterWorkspace(Context& context, uint32_t width, uint32_t height, const std::string& name)
+    : width_(width), height_(height) {
+  constexpr VkBufferUsageFlags kCleared =
+      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  keys_ = Buffer(context, keyBytes(width, height), kCleared, MemoryUse::Device, name + "-keys");
+  large_ = Buffer(context, kLargeHeader + VkDeviceSize(kLargeCapacity) * sizeof(gpu::RasterTriangle),
+                  kCleared, MemoryUse::Device, name + "-large-triangles");
+  binsPerRow_ = divideRoundingUp(width, kBinSize);
+  binCount_ = binsPerRow_ * divideRoundingUp(height, kBinSize);
+  bins_ = Buffer(context, VkDeviceSize(binCount_) * (1 + kBinCapacity) * sizeof(uint32_t), kCleared,
+                 MemoryUse::Device, name + "-bins");
+  depth_ = Buffer(context, VkDeviceSize(width) * height * sizeof(float),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device,
+                  name + "-depth");
+}
+
+DescriptorWriter& RasterWorkspace::bind(DescriptorWriter& writer) const {
+  return writer.storage(22, keys_.handle())
+      .storage(23, large_.handle())
+      .storage(24, depth_.handle())
+      .storage(25, bins_.handle());
+}
+
+glm::uvec4 RasterWorkspace::largeParams(uint32_t largestOwnBox) const {
+  return glm::uvec4(kLargeCapacity, largestOwnBox, binsPerRow_, kBinCapacity);
+}
+
+void RasterWorkspace::clear(FrameGraph& graph) const {
+  graph.step(
+      {uses(keys_, Use::TransferWrite), uses(large_, Use::TransferWrite), uses(bins_, Use::TransferWrite)},
+      [&](VkCommandBuffer cmd) {
+        vkCmdFillBuffer(cmd, keys_.handle(), 0, VK_WHOLE_SIZE, 0);
+        vkCmdFillBuffer(cmd, large_.handle(), 0, kLargeHeader, 0);
+        vkCmdFillBuffer(cmd, bins_.handle(), 0, VkDeviceSize(binCount_) * sizeof(uint32_t), 0);
+      });
+}
+
+std::vector<ResourceUse> RasterWorkspace::triangleUses() const {
+  return {uses(keys_, Use::StorageReadWrite, kCompute), uses(large_, Use::StorageReadWrite, kCompute),
+          uses(bins_, Use::StorageReadWrite, kCompute)};
+}
+
+std::vector<ResourceUse> RasterWorkspace::resolveUses() const {
+  return {uses(keys_, Use::StorageRead, kCompute), uses(large_, Use::StorageRead, kCompute),
+          uses(bins_, Use::StorageRead, kCompute), uses(depth_, Use::StorageWrite, kCompute)};
+}
+
+void RasterWorkspace::copyDepth(FrameGraph& graph, const Image& image) const {
+  graph.step({uses(depth_, Use::TransferRead), uses(image, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+    copy.imageExtent = {width_, height_, 1};
+    vkCmdCopyBufferToImage(cmd, depth_.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &copy);
+  });
+}
+
+std::string ComputeRaster::problem(const Context& context, uint32_t width, uint32_t height) {
+  return RasterWorkspace::problem(context, width, height, fmt::format("{}x{}", width, height));
 }
 
 ComputeRaster::ComputeRaster(Context& context, uint32_t width, uint32_t height, uint32_t maxRecords,
                              uint32_t triangleBits)
-    : context_(context), largestOwnBox_(kLargestOwnBox) {
+    : context_(context),
+      work_(context, width, height, "raster"),
+      largestOwnBox_(RasterWorkspace::kLargestOwnBox) {
   // LLL_RASTER_OWN_BOX overrides the threshold, for measuring it (bench/README.md).
   if (const char* own = std::getenv("LLL_RASTER_OWN_BOX"); own && *own)
     largestOwnBox_ = uint32_t(std::clamp(std::strtoul(own, nullptr, 10), 1ul, 1ul << 20));
@@ -52,32 +109,17 @@ ComputeRaster::ComputeRaster(Context& context, uint32_t width, uint32_t height, 
   resolve_ = Pipeline(context, layout_, "common/raster_resolve.comp");
   starts_ = Buffer(context, (VkDeviceSize(maxRecords) + 1) * sizeof(uint32_t),
                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "raster-triangle-starts");
-  keys_ = Buffer(context, keyBytes(width, height),
-                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device,
-                 "raster-keys");
-  large_ = Buffer(context, kLargeHeader + VkDeviceSize(kLargeCapacity) * sizeof(gpu::RasterTriangle),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device,
-                  "raster-large-triangles");
-  binsPerRow_ = divideRoundingUp(width, kBinSize);
-  binCount_ = binsPerRow_ * divideRoundingUp(height, kBinSize);
-  bins_ = Buffer(context, VkDeviceSize(binCount_) * (1 + kBinCapacity) * sizeof(uint32_t),
-                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device,
-                 "raster-bins");
-  depth_ = Buffer(context, VkDeviceSize(width) * height * sizeof(float),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device,
-                  "raster-depth");
 }
 
 void ComputeRaster::record(FrameContext& frame, const Buffer& surfaceRecords, uint32_t records,
                            uint32_t singleSided, uint32_t triangles) const {
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   const FrameTargets& t = frame.targets;
   const GpuScene& scene = frame.scene;
-  const uint32_t groups = divideRoundingUp(triangles, kGroupSize);
+  const uint32_t groups = divideRoundingUp(triangles, RasterWorkspace::kGroupSize);
   const uint32_t groupsPerRow = std::max(1u, std::min(groups, 65535u));
   gpu::RasterPush push{};
   push.counts = glm::uvec4(triangles, records, singleSided, groupsPerRow);
-  push.large = glm::uvec4(kLargeCapacity, largestOwnBox_, binsPerRow_, kBinCapacity);
+  push.large = work_.largeParams(largestOwnBox_);
   DescriptorWriter writer;
   writer.storage(0, frame.uniformBuffer.handle())
       .storage(16, surfaceRecords.handle())
@@ -85,52 +127,31 @@ void ComputeRaster::record(FrameContext& frame, const Buffer& surfaceRecords, ui
       .storage(18, scene.positionBuffer().handle())
       .storage(19, scene.indexBuffer().handle())
       .storage(21, starts_.handle())
-      .storage(22, keys_.handle())
-      .storage(23, large_.handle())
-      .storage(24, depth_.handle())
-      .storage(25, bins_.handle())
       .image(20, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.visibility.view(), VK_IMAGE_LAYOUT_GENERAL);
+  work_.bind(writer);
   const auto pushConstants = [&](VkCommandBuffer cmd) {
     vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   };
 
-  frame.graph.step(
-      {uses(keys_, Use::TransferWrite), uses(large_, Use::TransferWrite), uses(bins_, Use::TransferWrite)},
-      [&](VkCommandBuffer cmd) {
-        vkCmdFillBuffer(cmd, keys_.handle(), 0, VK_WHOLE_SIZE, 0);
-        vkCmdFillBuffer(cmd, large_.handle(), 0, kLargeHeader, 0);
-        vkCmdFillBuffer(cmd, bins_.handle(), 0, VkDeviceSize(binCount_) * sizeof(uint32_t), 0);
-      });
+  work_.clear(frame.graph);
+  frame.graph.pass("visibility", work_.triangleUses(), [&](VkCommandBuffer cmd) {
+    if (groups == 0) return;
+    triangles_.bind(cmd);
+    writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+    pushConstants(cmd);
+    vkCmdDispatch(cmd, groupsPerRow, divideRoundingUp(groups, groupsPerRow), 1);
+  });
   frame.graph.pass(
-      "visibility",
-      {uses(keys_, Use::StorageReadWrite, kCompute), uses(large_, Use::StorageReadWrite, kCompute),
-       uses(bins_, Use::StorageReadWrite, kCompute)},
+      "visibility-resolve",
+      work_.resolveUses() + std::vector<ResourceUse>{uses(t.visibility, Use::StorageWrite, kCompute)},
       [&](VkCommandBuffer cmd) {
-        if (groups == 0) return;
-        triangles_.bind(cmd);
+        resolve_.bind(cmd);
         writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
         pushConstants(cmd);
-        vkCmdDispatch(cmd, groupsPerRow, divideRoundingUp(groups, groupsPerRow), 1);
+        vkCmdDispatch(cmd, divideRoundingUp(t.width, RasterWorkspace::kTileSize),
+                      divideRoundingUp(t.height, RasterWorkspace::kTileSize), 1);
       });
-  frame.graph.pass("visibility-resolve",
-                   {uses(keys_, Use::StorageRead, kCompute), uses(large_, Use::StorageRead, kCompute),
-                    uses(bins_, Use::StorageRead, kCompute), uses(t.visibility, Use::StorageWrite, kCompute),
-                    uses(depth_, Use::StorageWrite, kCompute)},
-                   [&](VkCommandBuffer cmd) {
-                     resolve_.bind(cmd);
-                     writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-                     pushConstants(cmd);
-                     vkCmdDispatch(cmd, divideRoundingUp(t.width, kTileSize),
-                                   divideRoundingUp(t.height, kTileSize), 1);
-                   });
-  frame.graph.step({uses(depth_, Use::TransferRead), uses(t.depth, Use::TransferWrite)},
-                   [&](VkCommandBuffer cmd) {
-                     VkBufferImageCopy copy{};
-                     copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-                     copy.imageExtent = {t.width, t.height, 1};
-                     vkCmdCopyBufferToImage(cmd, depth_.handle(), t.depth.handle(),
-                                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-                   });
+  work_.copyDepth(frame.graph, t.depth);
 }
 
 }  // namespace lll

@@ -17,12 +17,61 @@
 // faces), so ids match the hardware pass pixel for pixel up to snapping ties. Alpha-masked
 // primitives still go through the hardware pass afterwards (they need their texture).
 #include <string>
+#include <vector>
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "render/frame.h"
 
 namespace lll {
+
+// What a compute rasterization of a width x height image works in (common/raster_triangle.glsl's
+// bindings 22 to 25): the 64-bit key per pixel, the large-triangle list, the per-bin lists and the
+// resolved depth, with the steps that clear them and copy the depth into a depth image. Shared by
+// the visibility buffer's rasterizer and the sun's shadow casters' (shadows/shadow_raster.h).
+class RasterWorkspace {
+ public:
+  static constexpr uint32_t kGroupSize = 64;         // the triangle passes' workgroup
+  static constexpr uint32_t kTileSize = 8;           // the resolve passes' workgroup is kTileSize^2
+  static constexpr uint32_t kLargeCapacity = 65536;  // listed large triangles; more are covered in place
+  // A triangle whose bounding box has more pixels than this goes to the per-pixel pass. Chosen by
+  // measurement on the H200 (bench/README.md): one thread loops over its box, so a large box keeps
+  // its SIMD group waiting.
+  static constexpr uint32_t kLargestOwnBox = 64;
+  static constexpr uint32_t kBinCapacity = 1024;  // listed triangles per bin; a fuller bin tests them all
+
+  // Why `context`'s device cannot rasterize `what` (e.g. "1920x1080") of width x height this way;
+  // empty when it can.
+  static std::string problem(const Context& context, uint32_t width, uint32_t height,
+                             const std::string& what);
+
+  RasterWorkspace() = default;
+  RasterWorkspace(Context& context, uint32_t width, uint32_t height, const std::string& name);
+
+  // Bindings 22 (keys), 23 (large triangles), 24 (depth) and 25 (bins).
+  DescriptorWriter& bind(DescriptorWriter& writer) const;
+  // The push constants' `large` (capacity, largest own box, bins per row, bin capacity).
+  glm::uvec4 largeParams(uint32_t largestOwnBox = kLargestOwnBox) const;
+  // The frame-graph step that clears the keys, the list's count and the bins' counts.
+  void clear(FrameGraph& graph) const;
+  // The uses of the triangle pass, of the per-pixel pass (which writes the depth), and the step
+  // that copies the depth into `image` (a D32 image of the same size).
+  std::vector<ResourceUse> triangleUses() const;
+  std::vector<ResourceUse> resolveUses() const;
+  void copyDepth(FrameGraph& graph, const Image& image) const;
+  const Buffer& large() const { return large_; }
+  const Buffer& bins() const { return bins_; }
+
+ private:
+  uint32_t width_ = 0;
+  uint32_t height_ = 0;
+  Buffer keys_;   // uint64 per pixel
+  Buffer large_;  // count, then RasterTriangle entries
+  Buffer bins_;   // per 32x32-pixel bin: its count of large triangles, then their slots
+  Buffer depth_;  // float per pixel, copied into the depth image
+  uint32_t binsPerRow_ = 0;
+  uint32_t binCount_ = 0;
+};
 
 class ComputeRaster {
  public:
@@ -46,14 +95,9 @@ class ComputeRaster {
   PipelineLayout layout_;
   Pipeline triangles_;
   Pipeline resolve_;
-  Buffer starts_;           // uint per record + 1, rewritten every frame
-  Buffer keys_;             // uint64 per pixel
-  Buffer large_;            // count, then RasterTriangle entries
-  Buffer bins_;             // per 32x32-pixel bin: its count of large triangles, then their slots
-  Buffer depth_;            // float per pixel, copied into the depth image
+  Buffer starts_;  // uint per record + 1, rewritten every frame
+  RasterWorkspace work_;
   uint32_t largestOwnBox_;  // bounding boxes up to this many pixels are covered by their thread
-  uint32_t binsPerRow_ = 0;
-  uint32_t binCount_ = 0;
 };
 
 }  // namespace lll

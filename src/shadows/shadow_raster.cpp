@@ -14,32 +14,12 @@ namespace lll {
 
 namespace {
 
-// As the visibility buffer's rasterizer (render/compute_raster.cpp), measured there.
-constexpr uint32_t kGroupSize = 64;         // caster_triangles.comp's workgroup
-constexpr uint32_t kTileSize = 8;           // caster_resolve.comp's workgroup is kTileSize^2
-constexpr uint32_t kLargeCapacity = 65536;  // listed large triangles; more are covered in place
-constexpr uint32_t kLargestOwnBox = 64;     // texels a thread covers itself
-constexpr VkDeviceSize kLargeHeader = 16;   // the count, padded to the entries' alignment
-constexpr uint32_t kBinSize = 32;           // kRasterBinSize in common/raster.glsl
-constexpr uint32_t kBinCapacity = 1024;     // listed triangles per bin; a fuller bin tests them all
-constexpr uint32_t kBinningGroups = 1024;   // caster_bins.comp's workgroups, each taking every 1024th
-
-VkDeviceSize keyBytes(uint32_t width, uint32_t height) {
-  return VkDeviceSize(width) * height * sizeof(uint64_t);
-}
+constexpr uint32_t kBinningGroups = 1024;  // caster_bins.comp's workgroups, each taking every 1024th
 
 }  // namespace
 
 std::string ShadowRaster::problem(const Context& context, uint32_t width, uint32_t height) {
-  if (!context.computeRasterFeatures())
-    return fmt::format("{} lacks shaderInt64 or shaderBufferInt64Atomics", context.info().name);
-  const VkDeviceSize limit = context.properties().limits.maxStorageBufferRange;
-  if (keyBytes(width, height) > limit)
-    return fmt::format(
-        "a {}x{} shadow atlas needs {} MiB of 64-bit keys, more than {}'s storage buffer "
-        "limit ({} MiB)",
-        width, height, keyBytes(width, height) >> 20, context.info().name, limit >> 20);
-  return {};
+  return RasterWorkspace::problem(context, width, height, fmt::format("a {}x{} shadow atlas", width, height));
 }
 
 ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t width, uint32_t height)
@@ -75,16 +55,7 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
                       MemoryUse::Device, "shadow-caster-instances");
   if (!instances.empty()) instances_.upload(std::span<const gpu::MeshInstance>(instances));
 
-  constexpr VkBufferUsageFlags kCleared = kStorage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-  keys_ = Buffer(context, keyBytes(width, height), kCleared, MemoryUse::Device, "shadow-raster-keys");
-  large_ = Buffer(context, kLargeHeader + VkDeviceSize(kLargeCapacity) * sizeof(gpu::RasterTriangle),
-                  kCleared, MemoryUse::Device, "shadow-raster-large-triangles");
-  binsPerRow_ = divideRoundingUp(width, kBinSize);
-  binCount_ = binsPerRow_ * divideRoundingUp(height, kBinSize);
-  bins_ = Buffer(context, VkDeviceSize(binCount_) * (1 + kBinCapacity) * sizeof(uint32_t), kCleared,
-                 MemoryUse::Device, "shadow-raster-bins");
-  depth_ = Buffer(context, VkDeviceSize(width) * height * sizeof(float),
-                  kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device, "shadow-raster-depth");
+  work_ = RasterWorkspace(context, width, height, "shadow-raster");
 
   layout_ = PipelineLayout(
       context, {"shadows/caster_triangles.comp", "shadows/caster_bins.comp", "shadows/caster_resolve.comp"});
@@ -95,65 +66,43 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
 
 void ShadowRaster::record(FrameContext& frame, const Buffer& shadowUniforms, const Image& atlas) const {
   constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-  const uint32_t groups = divideRoundingUp(triangles_, kGroupSize);
+  const uint32_t groups = divideRoundingUp(triangles_, RasterWorkspace::kGroupSize);
   const uint32_t groupsPerRow = std::max(1u, std::min(groups, 65535u));
   gpu::RasterPush push{};
   push.counts = glm::uvec4(triangles_, records_, singleSided_, groupsPerRow);
-  push.large = glm::uvec4(kLargeCapacity, kLargestOwnBox, binsPerRow_, kBinCapacity);
+  push.large = work_.largeParams();
   DescriptorWriter writer;
   writer.storage(16, recordBuffer_.handle())
       .storage(17, instances_.handle())
       .storage(18, scene_.positionBuffer().handle())
       .storage(19, scene_.indexBuffer().handle())
       .storage(21, starts_.handle())
-      .storage(22, keys_.handle())
-      .storage(23, large_.handle())
-      .storage(24, depth_.handle())
-      .storage(25, bins_.handle())
       .storage(26, shadowUniforms.handle());
+  work_.bind(writer);
   const auto bindAll = [&](VkCommandBuffer cmd, const Pipeline& pipeline) {
     pipeline.bind(cmd);
     writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
     vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   };
-  frame.graph.step(
-      {uses(keys_, Use::TransferWrite), uses(large_, Use::TransferWrite), uses(bins_, Use::TransferWrite)},
-      [&](VkCommandBuffer cmd) {
-        vkCmdFillBuffer(cmd, keys_.handle(), 0, VK_WHOLE_SIZE, 0);
-        vkCmdFillBuffer(cmd, large_.handle(), 0, kLargeHeader, 0);
-        vkCmdFillBuffer(cmd, bins_.handle(), 0, VkDeviceSize(binCount_) * sizeof(uint32_t), 0);
-      });
+  work_.clear(frame.graph);
+  frame.graph.pass("shadow-sun", work_.triangleUses(), [&](VkCommandBuffer cmd) {
+    if (groups == 0) return;
+    bindAll(cmd, trianglePipeline_);
+    vkCmdDispatch(cmd, groupsPerRow, divideRoundingUp(groups, groupsPerRow), 1);
+  });
   frame.graph.pass(
-      "shadow-sun",
-      {uses(keys_, Use::StorageReadWrite, kCompute), uses(large_, Use::StorageReadWrite, kCompute),
-       uses(bins_, Use::StorageReadWrite, kCompute)},
+      "shadow-sun-bins",
+      {uses(work_.large(), Use::StorageRead, kCompute), uses(work_.bins(), Use::StorageReadWrite, kCompute)},
       [&](VkCommandBuffer cmd) {
-        if (groups == 0) return;
-        bindAll(cmd, trianglePipeline_);
-        vkCmdDispatch(cmd, groupsPerRow, divideRoundingUp(groups, groupsPerRow), 1);
+        bindAll(cmd, binPipeline_);
+        vkCmdDispatch(cmd, kBinningGroups, 1, 1);
       });
-  frame.graph.pass("shadow-sun-bins",
-                   {uses(large_, Use::StorageRead, kCompute), uses(bins_, Use::StorageReadWrite, kCompute)},
-                   [&](VkCommandBuffer cmd) {
-                     bindAll(cmd, binPipeline_);
-                     vkCmdDispatch(cmd, kBinningGroups, 1, 1);
-                   });
-  frame.graph.pass("shadow-sun-resolve",
-                   {uses(keys_, Use::StorageRead, kCompute), uses(large_, Use::StorageRead, kCompute),
-                    uses(bins_, Use::StorageRead, kCompute), uses(depth_, Use::StorageWrite, kCompute)},
-                   [&](VkCommandBuffer cmd) {
-                     bindAll(cmd, resolvePipeline_);
-                     vkCmdDispatch(cmd, divideRoundingUp(width_, kTileSize),
-                                   divideRoundingUp(height_, kTileSize), 1);
-                   });
-  frame.graph.step({uses(depth_, Use::TransferRead), uses(atlas, Use::TransferWrite)},
-                   [&](VkCommandBuffer cmd) {
-                     VkBufferImageCopy copy{};
-                     copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-                     copy.imageExtent = {width_, height_, 1};
-                     vkCmdCopyBufferToImage(cmd, depth_.handle(), atlas.handle(),
-                                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-                   });
+  frame.graph.pass("shadow-sun-resolve", work_.resolveUses(), [&](VkCommandBuffer cmd) {
+    bindAll(cmd, resolvePipeline_);
+    vkCmdDispatch(cmd, divideRoundingUp(width_, RasterWorkspace::kTileSize),
+                  divideRoundingUp(height_, RasterWorkspace::kTileSize), 1);
+  });
+  work_.copyDepth(frame.graph, atlas);
 }
 
 }  // namespace lll

@@ -17,6 +17,7 @@
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
+#include "render/compute_raster.h"
 
 namespace lll {
 
@@ -51,12 +52,7 @@ class ShadowRaster {
   Buffer recordBuffer_;  // SurfaceRecord per (instance, opaque primitive), single-sided first
   Buffer starts_;        // each record's first triangle, and the total
   Buffer instances_;
-  Buffer keys_;
-  Buffer large_;
-  Buffer bins_;
-  Buffer depth_;
-  uint32_t binsPerRow_ = 0;
-  uint32_t binCount_ = 0;
+  RasterWorkspace work_;
 };
 
 }  // namespace lll
