@@ -177,6 +177,33 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
   for (const Scenario& s : picked) EXPECT_EQ(s.settings.particleCount, 2048u);
 }
 
+// The sun's shadow: every technique without and with it (4 cascades of 2048), then lll's cascades
+// by both rasterizers at 1, 2, 4 cascades and half and double resolution; a CPU device runs the
+// hardware rows alone.
+TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) {
+  const auto full = buildSuite("shadows", SuiteOptions{});
+  const size_t techniques = lll::techniques().size();
+  ASSERT_EQ(full.size(), 2 * techniques + 2 * 5);
+  std::map<std::string, int> byRaster;
+  for (const Scenario& s : full) {
+    EXPECT_EQ(s.scene.scene, "atrium");
+    ASSERT_EQ(s.scene.suns.size(), 1u) << s.name;
+    EXPECT_EQ(s.settings.width, 1920u);
+    ++byRaster[s.settings.shadows == "none" ? "none" : s.settings.shadowRaster];
+    if (s.settings.shadowRaster != "auto") {
+      EXPECT_EQ(s.settings.technique, "lll");
+      EXPECT_NE(s.series.find(s.settings.shadowRaster + " raster"), std::string::npos) << s.series;
+    }
+  }
+  EXPECT_EQ(byRaster["none"], int(techniques));
+  EXPECT_EQ(byRaster["auto"], int(techniques));
+  EXPECT_EQ(byRaster["hardware"], 5);
+  EXPECT_EQ(byRaster["compute"], 5);
+  const auto cpu = buildSuite("shadows", SuiteOptions{.cpuDevice = true});
+  EXPECT_EQ(cpu.size(), 2 * techniques + 5);
+  for (const Scenario& s : cpu) EXPECT_NE(s.settings.shadowRaster, "compute") << s.name;
+}
+
 // Instant radiosity: the atrium's VPLs alone at four counts and two cutoffs, every technique (the
 // brute-force and light-volume ones left out past 65,536); the Cornell room against the reference.
 TEST(BenchSuites, GiSuitesVaryTheVplCountAndCutoff) {
