@@ -395,9 +395,8 @@ TEST_P(Analytic, SunShadowOfASquareOccluder) {
           const glm::vec3 eye = scene.cameras[0].eye;
           // Seen through the occluder (with a margin): not the plane.
           const glm::vec3 q = eye + (p - eye) * ((eye.y - 3.0f) / eye.y);
-          if (outlineDistance({q.x, q.z}, {0.0f, 0.0f}, 1.0f).first ||
-              outlineDistance({q.x, q.z}, {0.0f, 0.0f}, 1.0f).second < 0.05f)
-            return glm::vec3(NAN);
+          const auto [onOccluder, toOccluderEdge] = outlineDistance({q.x, q.z}, {0.0f, 0.0f}, 1.0f);
+          if (onOccluder || toOccluderEdge < 0.05f) return glm::vec3(NAN);
           const gpu::SunShadow& cascades = renderer.shadows().cascades();
           uint32_t k = 0;  // straight down: every ground point at view depth eye.y
           while (k + 1 < cascades.config.x && eye.y > cascades.splits[k]) ++k;

@@ -89,21 +89,25 @@ vec3 ambientAndEmission(Surface s) {
   return frame.ambient.rgb * s.baseColor * s.occlusion + s.emissive;
 }
 
-// What every technique adds besides its listed lights: emission, a small constant ambient and the
-// directional lights (the sun), which reach every pixel and so never enter a light list. The first
-// casts the shadow; `sunVisible` is how much of it reaches the surface.
-vec3 unlistedLightWith(Surface s, float sunVisible) {
-  vec3 sum = ambientAndEmission(s);
+// The directional lights (the sun), which reach every pixel and so never enter a light list. The
+// first casts the shadow; `sunVisible` is how much of it reaches the surface.
+vec3 directionalLight(Surface s, float sunVisible) {
+  vec3 sum = vec3(0.0);
   for (uint i = 0u; i < frame.display.z; ++i)
     sum +=
         brdfCosine(s, frame.sunDirection[i].xyz) * frame.sunIlluminance[i].rgb * (i == 0u ? sunVisible : 1.0);
   return sum;
 }
 
+// What every technique adds besides its listed lights: emission, a small constant ambient and the
+// directional lights.
+vec3 unlistedLightWith(Surface s, float sunVisible) {
+  return ambientAndEmission(s) + directionalLight(s, sunVisible);
+}
+
 // As above, the sun's shadow looked up in its cascades (common/sun_shadow.glsl).
 vec3 unlistedLight(Surface s) {
-  bool sunFacing = frame.display.z > 0u && dot(s.normal, frame.sunDirection[0].xyz) > 0.0;
-  return unlistedLightWith(s, sunFacing ? sunVisibility(s.position, s.normal) : 1.0);
+  return unlistedLightWith(s, sunVisibleAt(s.position, s.normal));
 }
 
 #endif

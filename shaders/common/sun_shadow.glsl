@@ -64,4 +64,11 @@ float sunVisibility(vec3 position, vec3 normal) {
   return sum * (1.0 / 9.0);
 }
 
+// As sunVisibility, only where the surface faces the frame's first directional light (elsewhere the
+// BRDF gives it nothing, so there is nothing to look up); 1 without one.
+float sunVisibleAt(vec3 position, vec3 normal) {
+  bool facing = frame.display.z > 0u && dot(normal, frame.sunDirection[0].xyz) > 0.0;
+  return facing ? sunVisibility(position, normal) : 1.0;
+}
+
 #endif

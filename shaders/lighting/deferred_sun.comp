@@ -5,7 +5,7 @@
 // H200 a full-screen fragment pass runs the same arithmetic many times slower.
 #extension GL_EXT_samplerless_texture_functions : require
 #include "common/gbuffer.glsl"
-#include "common/sun_shadow.glsl"
+#include "common/material_surface.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -21,11 +21,6 @@ void main() {
   if (depth <= 0.0) return;  // background
   vec3 position = reconstructPosition(vec2(pixel) + 0.5, linearizeDepth(depth));
   Surface s = surfaceFromGbuffer(texelFetch(gbuffer0, pixel, 0), texelFetch(gbuffer1, pixel, 0), position);
-  vec3 sum = vec3(0.0);
-  for (uint i = 0u; i < frame.display.z; ++i) {
-    vec3 sun = brdfCosine(s, frame.sunDirection[i].xyz) * frame.sunIlluminance[i].rgb;
-    if (i == 0u && any(greaterThan(sun, vec3(0.0)))) sun *= sunVisibility(s.position, s.normal);
-    sum += sun;
-  }
-  imageStore(accumulation, pixel, imageLoad(accumulation, pixel) + vec4(sum, 0.0));
+  vec3 sun = directionalLight(s, sunVisibleAt(s.position, s.normal));
+  imageStore(accumulation, pixel, imageLoad(accumulation, pixel) + vec4(sun, 0.0));
 }

@@ -24,8 +24,7 @@ void main() {
   if (depth > 0.0 && frame.display.z > 0u) {
     PrepassSurface stored = unpackPrepassSurface(texelFetch(surfaceBuffer, pixel, 0).xy);
     vec3 n = normalize(stored.viewNormal * mat3(frame.view));  // view to world: the rotation's transpose
-    vec3 position = reconstructPosition(vec2(pixel) + 0.5, linearizeDepth(depth));
-    if (dot(n, frame.sunDirection[0].xyz) > 0.0) visible = sunVisibility(position, n);
+    visible = sunVisibleAt(reconstructPosition(vec2(pixel) + 0.5, linearizeDepth(depth)), n);
   }
   imageStore(sunShadowBuffer, pixel, vec4(visible));
 }

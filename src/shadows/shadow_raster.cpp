@@ -26,17 +26,18 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
     : context_(context), scene_(scene), width_(width), height_(height) {
   const Scene& s = scene.scene();
   // One record per (instance, opaque primitive), single-sided first (their back faces are culled).
+  std::vector<std::vector<const DrawItem*>> meshDraws(s.meshes.size());
+  for (const DrawItem& d : scene.draws())
+    if (s.materials[d.material].alphaMode == AlphaMode::Opaque) meshDraws[d.mesh].push_back(&d);
   std::vector<gpu::SurfaceRecord> records;
   std::vector<uint32_t> starts;
   for (const bool doubleSided : {false, true})
     for (uint32_t i = 0; i < s.instances.size(); ++i)
-      for (const DrawItem& d : scene.draws()) {
-        const Material& m = s.materials[d.material];
-        if (d.mesh != s.instances[i].mesh || m.alphaMode != AlphaMode::Opaque || m.doubleSided != doubleSided)
-          continue;
-        records.push_back({d.firstIndex, d.vertexOffset, d.material, i});
+      for (const DrawItem* d : meshDraws[s.instances[i].mesh]) {
+        if (s.materials[d->material].doubleSided != doubleSided) continue;
+        records.push_back({d->firstIndex, d->vertexOffset, d->material, i});
         starts.push_back(triangles_);
-        triangles_ += d.indexCount / 3;
+        triangles_ += d->indexCount / 3;
         if (!doubleSided) ++singleSided_;
       }
   starts.push_back(triangles_);

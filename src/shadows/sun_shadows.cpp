@@ -243,7 +243,8 @@ void SunShadows::update(const gpu::FrameUniforms& frame, const Bounds& sceneBoun
     data_ = gpu::SunShadow{};
   } else {
     data_ = fitSunCascades(frame, glm::vec3(frame.sunDirection[0]), sceneBounds, options_);
-    orderCasters();
+    // The hardware draws the casters (all of them, or the alpha-masked ones after the compute pass).
+    if (!computeRaster_ || hasMasked_) orderCasters();
   }
   uniforms_.upload(&data_, sizeof(data_));
 }
