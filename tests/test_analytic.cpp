@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "scene/lights.h"
+#include "shadows/local_shadows.h"
 #include "test_support.h"
 
 namespace lll {
@@ -208,7 +209,7 @@ Counts checkAgainstFormula(const Scene& scene, const Expectation& expectedAt, co
         // fp16 storage and a half-pixel position error near steep falloffs bound the tolerance.
         if (std::abs(got[c] - expected[c]) > 0.01f * expected[c] + 2e-4f && ++failures <= 5)
           ADD_FAILURE() << "pixel " << x << "," << y << " channel " << c << ": " << got[c] << ", expected "
-                        << expected[c];
+                        << expected[c] << " at " << p.x << "," << p.z;
       }
       (expected.r > 1e-3f ? counts.lit : counts.dark) += 1;
     }
@@ -420,6 +421,62 @@ TEST_P(Analytic, SunShadowOfASquareOccluder) {
     EXPECT_GT(c.lit, 5000);
     EXPECT_GT(nearEdge, 5) << "the edges cross pixel centres";
     EXPECT_LT(nearEdge, 400) << "the edge band is a few texels wide";
+  }
+}
+
+// A local light's shadow of the square occluder (shadows/local_shadows.h), the light 6 m over the
+// origin, the occluder halfway down: the shadow is the square scaled twice about the origin. A spot
+// (one view) and a point light (a cube, the shadow in its -y face), PCF off and on, every shading
+// path: every pixel more than 1.5 (PCF: 3) of the light's texels on the ground from the shadow's edge
+// is exactly lit (the formula) or exactly dark; pixels that see the occluder itself are skipped.
+TEST_P(Analytic, LocalLightShadowOfASquareOccluder) {
+  for (const LightType type : {LightType::Spot, LightType::Point}) {
+    Scene scene = planeScene();
+    addSquareOccluder(scene);
+    Light light = pointLight({0.0f, 6.0f, 0.0f}, 60.0f, 12.0f);
+    light.type = type;
+    light.direction = {0.0f, -1.0f, 0.0f};
+    light.innerConeAngle = 40.0f * kPi / 180.0f;
+    light.outerConeAngle = 45.0f * kPi / 180.0f;
+    scene.lights = {light};
+    const PlaneMaterial pm;
+    constexpr uint32_t kResolution = 512;
+    const float tanHalf = shadowViews(light, kResolution)[0].tanHalf;
+    for (const char* filter : {"none", "pcf"}) {
+      SCOPED_TRACE(std::string(type == LightType::Spot ? "spot" : "point") + " --shadow-filter " + filter);
+      const float edgeTexels = std::string(filter) == "none" ? 1.5f : 3.0f;
+      int nearEdge = 0;
+      Counts c = checkAgainstFormula(
+          scene,
+          [&](const glm::vec3& p, const Renderer&) {
+            const glm::vec3 eye = scene.cameras[0].eye;
+            const glm::vec3 q = eye + (p - eye) * ((eye.y - 3.0f) / eye.y);
+            const auto [onOccluder, toOccluderEdge] = outlineDistance({q.x, q.z}, {0.0f, 0.0f}, 1.0f);
+            if (onOccluder || toOccluderEdge < 0.05f) return glm::vec3(NAN);
+            // The ground point seen from the light crosses the occluder's plane at half its offset.
+            const auto [inside, toEdge] = outlineDistance({0.5f * p.x, 0.5f * p.z}, {0.0f, 0.0f}, 1.0f);
+            // A texel on the ground: its size at this distance, stretched by the slant.
+            const float d = glm::length(light.position - p);
+            const float texel = d * 2.0f * tanHalf / float(kResolution) * (d / light.position.y);
+            if (2.0f * toEdge < edgeTexels * texel) {
+              ++nearEdge;
+              return glm::vec3(NAN);
+            }
+            return inside ? glm::vec3(0.0f) : expectedRadiance(scene, pm, light, p);
+          },
+          GetParam(), "compute",
+          [&](RenderSettings& s) {
+            s.shadows = "all";
+            s.shadowLights = 1;
+            s.shadowFilter = filter;
+            s.shadowLightResolution = kResolution;
+          });
+      std::printf("[ analytic ] %d pixels near the shadow's edge skipped\n", nearEdge);
+      EXPECT_GT(c.dark, 300) << "the shadow is in view";
+      EXPECT_GT(c.lit, 2000);
+      EXPECT_GT(nearEdge, 5) << "the edges cross pixel centres";
+      EXPECT_LT(nearEdge, 500) << "the edge band is a few texels wide";
+    }
   }
 }
 

@@ -311,7 +311,9 @@ TEST_F(CliTest, RasterParticlesOnlyAtFullResolution) {
 
 // The sun's shadow options: named with the value when out of range.
 TEST_F(CliTest, BadShadowOptions) {
-  expectBadInput(render("plane", {"--shadows", "all"}), {"--shadows", "all"});
+  expectBadInput(render("plane", {"--shadows", "every"}), {"--shadows", "every"});
+  expectBadInput(render("plane", {"--shadow-lights", "2000"}), {"--shadow-lights", "2000"});
+  expectBadInput(render("plane", {"--shadow-light-resolution", "8"}), {"--shadow-light-resolution", "8"});
   expectBadInput(render("plane", {"--cascades", "5"}), {"--cascades", "5"});
   expectBadInput(render("plane", {"--cascades", "0"}), {"--cascades", "0"});
   expectBadInput(render("plane", {"--shadow-resolution", "8"}), {"--shadow-resolution", "8"});

@@ -117,7 +117,7 @@ TEST(SunShadowCascades, BadOptionsAreRefusedByName) {
       EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
     }
   };
-  refused([](RenderSettings& s) { s.shadows = "all"; }, "--shadows");
+  refused([](RenderSettings& s) { s.shadows = "every"; }, "--shadows");
   refused([](RenderSettings& s) { s.cascades = 0; }, "--cascades");
   refused([](RenderSettings& s) { s.cascades = gpu::kMaxCascades + 1; }, "--cascades");
   refused([](RenderSettings& s) { s.shadowResolution = 8; }, "--shadow-resolution");

@@ -53,7 +53,7 @@ inline Rendered render(Renderer& renderer) {
   out.frame = renderer.renderFrame(true);
   out.hdr = renderer.hdrImage();
   out.ldr = renderer.ldrImage();
-  out.stats = renderer.technique().stats();
+  out.stats = renderer.stats();
   expectNoValidationMessagesSince(before);
   return out;
 }

@@ -4,6 +4,8 @@
 // out the same way) for `lights` point lights that all reach it, with no list to walk and no light
 // or surface read from memory: the surface comes from the pixel's position and each light from its
 // index in a few multiply-adds. One store per pixel keeps the work from being optimized away.
+// Shadow lookups are memory reads, not arithmetic: the probe leaves them out.
+#define LLL_NO_LOCAL_SHADOWS
 #include "common/brdf.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -3,6 +3,9 @@
 #ifndef LLL_BRDF_GLSL
 #define LLL_BRDF_GLSL
 #include "shared/gpu_types.h"
+#ifndef LLL_NO_LOCAL_SHADOWS
+#include "common/local_shadow.glsl"
+#endif
 
 const float kPi = 3.14159265358979;
 
@@ -82,7 +85,7 @@ float rangeAttenuation(float distance, float range) {
 float spotAttenuation(GpuLight light, vec3 towardsLight) {
   if (!kSceneHasSpots || uint(light.directionType.w) != kLightSpot) return 1.0;
   float cd = dot(light.directionType.xyz, -towardsLight);
-  float t = clamp(cd * light.spotParams.z + light.spotParams.w, 0.0, 1.0);
+  float t = clamp((cd - light.spotParams.x) * light.spotParams.z, 0.0, 1.0);
   return t * t;
 }
 
@@ -120,13 +123,24 @@ float lightAttenuation(GpuLight light, vec3 toLight, vec3 l, float distance) {
   return rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
 }
 
+// lightAttenuation times the light's shadow at `position` (common/local_shadow.glsl), looked up only
+// where the light reaches and the surface faces it (`normal` zero: a particle, which always does).
+float shadowedAttenuation(GpuLight light, vec3 position, vec3 normal, vec3 toLight, vec3 l, float distance) {
+  float attenuation = lightAttenuation(light, toLight, l, distance);
+#ifndef LLL_NO_LOCAL_SHADOWS
+  if (kLocalShadows && attenuation > 0.0 && dot(normal, l) >= 0.0)
+    attenuation *= localShadow(light, position, normal, l, distance);
+#endif
+  return attenuation;
+}
+
 // Radiance one light reflects from the surface towards the eye.
 vec3 evaluateLight(GpuLight light, Surface s) {
   vec3 toLight = light.positionRange.xyz - s.position;
   float distance = length(toLight);
   if (distance >= light.positionRange.w) return vec3(0.0);
   vec3 l = toLight / max(distance, 1e-6);
-  float attenuation = lightAttenuation(light, toLight, l, distance);
+  float attenuation = shadowedAttenuation(light, s.position, s.normal, toLight, l, distance);
   if (attenuation <= 0.0) return vec3(0.0);
   return brdfCosine(s, l) * light.colorIntensity.rgb * (light.colorIntensity.w * attenuation);
 }

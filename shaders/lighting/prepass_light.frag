@@ -43,7 +43,7 @@ LightTerms lightTerms(LightVolume volume, ivec2 pixel) {
   vec3 l = toLight / max(distance, 1e-6);
   float nDotL = dot(n, l);
   if (distance >= light.positionRange.w || nDotL <= 0.0) return terms;
-  float attenuation = lightAttenuation(light, toLight, l, distance);
+  float attenuation = shadowedAttenuation(light, position, n, toLight, l, distance);
   vec3 irradiance = light.colorIntensity.rgb * (light.colorIntensity.w * attenuation * nDotL);
   vec3 v = normalize(frame.cameraPosition.xyz - position);
   vec3 h = halfVector(l, v);

@@ -18,7 +18,8 @@ vec3 scatterLight(GpuLight light, vec3 position, vec3 normal, vec3 towardEye) {
   float distance = length(toLight);
   if (distance >= light.positionRange.w) return vec3(0.0);
   vec3 l = toLight / max(distance, 1e-6);
-  float attenuation = lightAttenuation(light, toLight, l, distance);
+  // The shadow at the particle itself: no surface, so no normal offset.
+  float attenuation = shadowedAttenuation(light, position, vec3(0.0), toLight, l, distance);
   if (attenuation <= 0.0) return vec3(0.0);
   float wrap = system.shading.x;
   float diffuse = max(dot(normal, l) + wrap, 0.0) / (1.0 + wrap);

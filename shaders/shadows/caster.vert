@@ -1,17 +1,14 @@
 #version 460
-// The sun's shadow casters (src/shadows/sun_shadows.h): every opaque and alpha-masked primitive,
-// every instance, drawn into one cascade's cell of the shadow atlas. Alpha-masked ones go on to
-// common/depth_mask.frag, which reads what common/mesh.vert would pass it; only the UV matters.
-#include "common/frame.glsl"
+// Shadow casters (src/shadows/shadow_casters.h): every opaque and alpha-masked primitive of the
+// instances a view sees, drawn into the view's cell of a shadow atlas (a sun cascade, a spot light's
+// cone, a face of a point light's cube). Alpha-masked ones go on to common/depth_mask.frag, which
+// reads what common/mesh.vert would pass it; only the UV matters.
 #include "shared/shadow_types.h"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;
 layout(location = 8) in mat4 inModel;
 
-layout(std430, set = 0, binding = 26) readonly buffer SunShadowBlock {
-  SunShadow sunShadow;
-};
 layout(push_constant) uniform CasterBlock {
   CasterPush caster;
 };
@@ -27,5 +24,5 @@ void main() {
   outNormal = vec3(0.0, 0.0, 1.0);
   outUv = inUv;
   outTangent = vec4(1.0, 0.0, 0.0, 1.0);
-  gl_Position = sunShadow.cascadeViewProj[caster.cascade.x] * world;
+  gl_Position = caster.viewProj * world;
 }

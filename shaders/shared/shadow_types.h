@@ -1,5 +1,6 @@
-// The sun's cascaded shadow map, as the passes that light surfaces read it (common/sun_shadow.glsl)
-// and src/shadows/sun_shadows.cpp fits it. Written once here; see shared.h for the rules.
+// Shadow maps: the sun's cascades and the local lights' views, as the passes that light surfaces
+// read them (common/sun_shadow.glsl, common/local_shadow.glsl) and src/shadows/ fits them. Written once here;
+// see shared.h for the rules.
 #ifndef LLL_SHADOW_TYPES_H
 #define LLL_SHADOW_TYPES_H
 #include "shared/shared.h"
@@ -9,6 +10,8 @@ LLL_NAMESPACE_BEGIN
 LLL_CONST(uint, kMaxCascades, 4u);
 // Cascades sit in the shadow atlas in rows of this many cells, each shadowResolution square.
 LLL_CONST(uint, kCascadeColumns, 2u);
+// The most local lights (--shadow-lights) that may cast each frame.
+LLL_CONST(uint, kMaxShadowLights, 1024u);
 LLL_CONST(uint, kShadowFilterNone, 0u);  // one texel, nearest: edges where geometry puts them
 LLL_CONST(uint, kShadowFilterPcf, 1u);   // 3x3 bilinear comparisons: a 4x4-texel tent
 
@@ -27,12 +30,23 @@ struct SunShadow {
 };
 LLL_CHECK_SIZE(SunShadow, kMaxCascades * 64 + 5 * 16);
 
-// The shadow caster pass's push constants: the draw's (DrawPush) and the cascade being drawn.
+// One view a local light's shadow is drawn from (src/shadows/local_shadows.h): a spot light's
+// cone, or one face of a point light's cube, in its cell of the local shadow atlas.
+struct LocalShadowView {
+  mat4 viewProj;  // world to the view's clip space: reverse depth (1 at the near plane), y down
+  vec4 cell;      // xy the cell's corner in atlas uv, zw its size in atlas uv
+  vec4 params;    // x the world size of a texel per unit of distance from the light, y normal offset
+                  // (texels), z slope bias (texels per unit of tan(theta)), w 1 / texels along a side
+  uvec4 config;   // x kShadowFilter*, yzw unused
+};
+LLL_CHECK_SIZE(LocalShadowView, 64 + 3 * 16);
+
+// The shadow caster pass's push constants: the draw's (DrawPush) and the view being drawn.
 struct CasterPush {
   uvec4 ids;      // x material index, yzw unused (as DrawPush)
-  uvec4 cascade;  // x the cascade, yzw unused
+  mat4 viewProj;  // world to the view's clip space, for a viewport over its cell of the atlas
 };
-LLL_CHECK_SIZE(CasterPush, 32);
+LLL_CHECK_SIZE(CasterPush, 80);
 
 LLL_NAMESPACE_END
 #endif

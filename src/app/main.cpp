@@ -95,13 +95,22 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       "a directional light, \"x,y,z,lux[,r,g,b]\": x,y,z towards the sun, its illuminance in lux and "
       "linear colour; repeatable (4 at most, with the scene's own)");
   cmd.add_option("--shadows", s.shadows,
-                 "shadows: sun (the brightest directional light casts cascaded shadow maps) | none")
-      ->check(CLI::IsMember({"sun", "none"}));
+                 "shadows: sun (the brightest directional light casts cascaded shadow maps) | all (the sun "
+                 "and the --shadow-lights most important spot and point lights) | none")
+      ->check(CLI::IsMember({"sun", "all", "none"}));
+  cmd.add_option("--shadow-lights", s.shadowLights,
+                 "--shadows all: how many local lights cast shadows each frame (0 to 1024)")
+      ->check(CLI::Range(0u, 1024u));
+  cmd.add_option(
+         "--shadow-light-resolution", s.shadowLightResolution,
+         "texels along each local light's shadow view (a spot's cone, a point light's cube face; 16 to "
+         "4096)")
+      ->check(CLI::Range(16u, 4096u));
   cmd.add_option("--cascades", s.cascades, "sun shadow cascades (1 to 4)")->check(CLI::Range(1u, 4u));
   cmd.add_option("--shadow-resolution", s.shadowResolution, "texels along each cascade's side (16 to 8192)")
       ->check(CLI::Range(16u, 8192u));
   cmd.add_option("--shadow-filter", s.shadowFilter,
-                 "sun shadow filter: pcf (3x3 bilinear comparisons) | none (one texel)")
+                 "shadow filter: pcf (3x3 bilinear comparisons) | none (one texel)")
       ->check(CLI::IsMember({"pcf", "none"}));
   cmd.add_option("--shadow-raster", s.shadowRaster,
                  "who draws the shadow casters: hardware | compute | auto (compute on a GPU, hardware on a "

@@ -10,6 +10,7 @@
 #include "lighting/light_volumes.h"
 #include "render/frame.h"
 #include "render/gpu_scene.h"
+#include "shadows/local_shadows.h"
 
 namespace lll {
 
@@ -160,11 +161,13 @@ std::vector<VolumeRun> LightVolumeDraws::runs() const {
 }
 
 DescriptorWriter& LightVolumeDraws::addBindings(DescriptorWriter& writer, const FrameContext& frame) const {
-  return writer.storage(0, frame.uniformBuffer.handle())
+  writer.storage(0, frame.uniformBuffer.handle())
       .storage(1, frame.scene.lightBuffer().handle())
       .storage(3, volumes_.handle())
       .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, frame.targets.depth.view(),
              VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL);
+  if (frame.lightShadows) frame.lightShadows->bind(writer);
+  return writer;
 }
 
 void LightVolumeDraws::bindGeometry(VkCommandBuffer cmd) const {

@@ -8,6 +8,7 @@
 #include "particles/particle_system.h"
 #include "render/frame.h"
 #include "scene/errors.h"
+#include "shadows/local_shadows.h"
 #include "shadows/sun_shadows.h"
 
 namespace lll {
@@ -82,6 +83,7 @@ DescriptorWriter ParticleSystem::systemDescriptors(const FrameContext& frame) co
   if (radiance_) writer.storage(15, radiance_.handle());
   if (atlas_) writer.storage(22, atlas_.handle());
   if (frame.shadows) frame.shadows->bind(writer);
+  if (frame.lightShadows) frame.lightShadows->bind(writer);
   return writer;
 }
 

@@ -6,6 +6,7 @@
 
 #include "gpu/context.h"
 #include "scene/errors.h"
+#include "shadows/local_shadows.h"
 #include "shadows/sun_shadows.h"
 
 #include "gpu/pipeline.h"
@@ -51,6 +52,7 @@ DescriptorWriter meshPassDescriptors(const FrameContext& frame) {
       .storage(1, frame.scene.lightBuffer().handle())
       .storage(2, frame.scene.materialBuffer().handle());
   if (frame.shadows) frame.shadows->bind(writer);
+  if (frame.lightShadows) frame.lightShadows->bind(writer);
   return writer;
 }
 
@@ -71,7 +73,9 @@ void drawSceneIntoHdr(FrameContext& frame, const Pipeline& pipeline, const Pipel
 }
 
 SpecializationConstants lightTypeConstants(const GpuScene& scene) {
-  return lightTypeConstants(scene.scene());
+  SpecializationConstants constants = lightTypeConstants(scene.scene());
+  constants[41] = scene.shadowedLights() ? 1u : 0u;
+  return constants;
 }
 
 SpecializationConstants lightTypeConstants(const Scene& scene) {

@@ -19,6 +19,7 @@ namespace lll {
 class Context;
 class ParticleSystem;
 class SunShadows;
+class LocalShadows;
 class VisibilityBuffer;
 
 // Screen-sized targets. Their layouts are the frame graph's business (render/frame_graph.h).
@@ -52,6 +53,9 @@ struct FrameContext {
   // The sun's shadow (shadows/sun_shadows.h), drawn before any lighting: meshPassDescriptors binds
   // it for every pass that lights surfaces.
   const SunShadows* shadows = nullptr;
+  // The local lights' shadows (shadows/local_shadows.h), drawn before any lighting: meshPassDescriptors
+  // and the light volumes bind them for every pass that evaluates lights.
+  const LocalShadows* lightShadows = nullptr;
 };
 
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;

@@ -50,6 +50,10 @@ class GpuScene {
   const Buffer& materialBuffer() const { return materials_; }
   const Buffer& lightBuffer() const { return lights_; }
   uint32_t lightCount() const { return lightCount_; }
+  // Whether local lights cast shadows this run (--shadows all): set by the renderer before any pass
+  // specializes its light evaluation on it (lightTypeConstants, render/frame.h).
+  bool shadowedLights() const { return shadowedLights_; }
+  void setShadowedLights(bool on) { shadowedLights_ = on; }
 
   // Geometry for passes that fetch it themselves: the visibility pass's position-only stream
   // (tightly packed vec3) and, for rebuilding surfaces in compute, every vertex (lll::Vertex) and
@@ -127,6 +131,7 @@ class GpuScene {
   Buffer materials_;
   Buffer lights_;
   uint32_t lightCount_ = 0;
+  bool shadowedLights_ = false;
   std::vector<Image> textures_;  // scene textures, then neutral white, neutral normal, black
   std::vector<DrawItem> draws_;  // grouped by material
   std::vector<std::vector<uint32_t>> meshInstances_;  // the instances of each mesh

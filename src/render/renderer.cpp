@@ -65,6 +65,8 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   uniformBuffer_ =
       Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
   shadows_ = std::make_unique<SunShadows>(context, *gpuScene_, sunShadowOptions(settings));
+  lightShadows_ = std::make_unique<LocalShadows>(context, *gpuScene_, localShadowOptions(settings));
+  gpuScene_->setShadowedLights(lightShadows_->casting());
   updateUniforms();
 
   depthLayout_ = meshPassLayout(context, *gpuScene_);
@@ -210,6 +212,7 @@ void Renderer::updateUniforms() {
   }
   uniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
   shadows_->update(uniforms_, bounds);
+  lightShadows_->update(uniforms_);
 }
 
 FrameResult Renderer::renderFrame(bool capture) {
@@ -244,6 +247,8 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
   s.insert(s.end(), lit.begin(), lit.end());
   const auto shadows = shadows_->stats();
   s.insert(s.end(), shadows.begin(), shadows.end());
+  const auto lightShadows = lightShadows_->stats();
+  s.insert(s.end(), lightShadows.begin(), lightShadows.end());
   s.push_back({"instances", double(scene_.instances.size())});
   s.push_back({"visible_instances", double(gpuScene_->visibleInstances())});
   // 1 when opaque surfaces came from the visibility buffer (its ids are lighting memory too).
@@ -262,10 +267,13 @@ void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advancePartic
   if (visibility_) visibility_->prepareFrame(*gpuScene_);
   timer_.reset(cmd);
   FrameGraph graph(cmd, timer_);
-  FrameContext frame{context_,  cmd,       graph,   *gpuScene_,       targets_,          uniformBuffer_,
-                     uniforms_, settings_, capture, particles_.get(), visibility_.get(), shadows_.get()};
-  // The sun's shadow first: every lighting pass after it reads it.
+  FrameContext frame{
+      context_,           cmd,       graph,   *gpuScene_,       targets_,          uniformBuffer_,
+      uniforms_,          settings_, capture, particles_.get(), visibility_.get(), shadows_.get(),
+      lightShadows_.get()};
+  // The shadows first: every lighting pass after them reads them.
   shadows_->record(frame);
+  lightShadows_->record(frame);
   if (visibility_)
     visibility_->record(frame);
   else

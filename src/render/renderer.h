@@ -13,6 +13,7 @@
 #include "render/gpu_scene.h"
 #include "render/settings.h"
 #include "scene/camera.h"
+#include "shadows/local_shadows.h"
 #include "shadows/sun_shadows.h"
 
 namespace lll {
@@ -72,6 +73,7 @@ class Renderer {
   Technique& technique() { return *technique_; }
   GpuScene& gpuScene() { return *gpuScene_; }
   const SunShadows& shadows() const { return *shadows_; }
+  const LocalShadows& lightShadows() const { return *lightShadows_; }
   ParticleSystem* particles() { return particles_.get(); }
   // The visibility buffer the frame is drawn with, or null (--surfaces gbuffer, or the fallback).
   const VisibilityBuffer* visibility() const { return visibility_.get(); }
@@ -106,6 +108,7 @@ class Renderer {
   PipelineLayout tonemapLayout_;
   Pipeline tonemap_;
   std::unique_ptr<SunShadows> shadows_;
+  std::unique_ptr<LocalShadows> lightShadows_;
   std::unique_ptr<ParticleSystem> particles_;
   std::unique_ptr<VisibilityBuffer> visibility_;  // null with --surfaces gbuffer
   std::string surfacesFallback_;                  // why --surfaces visibility fell back to gbuffer, if it did

@@ -45,9 +45,12 @@ struct RenderSettings {
   uint32_t particleCount = 0;   // 0: the preset's own count
   std::string particleEmitter;  // "x,y,z": where the emitter sits; empty: the scene's smoke source
   uint32_t seed = 1;            // simulation seed (the CLI's --seed)
-  // The sun's shadow (shadows/sun_shadows.h): sun | none; cascades, texels along a cascade's side,
-  // pcf | none (one texel, nearest).
+  // Shadows: sun (shadows/sun_shadows.h) | all (the sun and the --shadow-lights most important
+  // local lights, shadows/local_shadows.h) | none; cascades, texels along a cascade's side, pcf | none
+  // (one texel, nearest) for both.
   std::string shadows = "sun";
+  uint32_t shadowLights = 16;            // K with --shadows all
+  uint32_t shadowLightResolution = 512;  // texels along a local light's view's side
   uint32_t cascades = 4;
   uint32_t shadowResolution = 2048;
   std::string shadowFilter = "pcf";

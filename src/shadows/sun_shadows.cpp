@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <span>
 
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
@@ -32,8 +31,6 @@ constexpr float kNormalOffsetTexels = 1.0f;
 constexpr float kSlopeBiasTexels = 2.0f;
 constexpr float kConstantBiasShare = 1e-4f;
 
-constexpr VkShaderStageFlags kCasterStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-
 // The smallest sphere around the slice of a symmetric frustum between view depths d0 and d1, as a
 // depth along the view axis and a radius: its corners lie at half-diagonals d * diagonal.
 std::pair<float, float> sliceSphere(float d0, float d1, float diagonal) {
@@ -48,8 +45,8 @@ std::pair<float, float> sliceSphere(float d0, float d1, float diagonal) {
 
 SunShadowOptions sunShadowOptions(const RenderSettings& s) {
   SunShadowOptions o;
-  if (s.shadows != "sun" && s.shadows != "none")
-    throw InputError(fmt::format("--shadows {}: expected sun or none", s.shadows));
+  if (s.shadows != "sun" && s.shadows != "all" && s.shadows != "none")
+    throw InputError(fmt::format("--shadows {}: expected sun, all or none", s.shadows));
   if (s.cascades < 1 || s.cascades > gpu::kMaxCascades)
     throw InputError(fmt::format("--cascades {}: expected 1 to {}", s.cascades, gpu::kMaxCascades));
   if (s.shadowResolution < 16 || s.shadowResolution > 8192)
@@ -165,29 +162,7 @@ SunShadows::SunShadows(Context& context, const GpuScene& scene, const SunShadowO
   uniforms_.upload(&data_, sizeof(data_));
   if (!casting()) return;
 
-  layout_ =
-      PipelineLayout(context, {"shadows/caster.vert", "common/depth_mask.frag"}, {scene.materialSetLayout()});
-  GraphicsPipelineDesc desc;
-  desc.vertexShader = "shadows/caster.vert";
-  desc.depthFormat = VK_FORMAT_D32_SFLOAT;
-  desc.cullMode = VK_CULL_MODE_NONE;
-  desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
-  opaque_ = Pipeline(context, layout_, desc);
-  desc.fragmentShader = "common/depth_mask.frag";
-  masked_ = Pipeline(context, layout_, desc);
-  instanceBounds_.reserve(scene.scene().instances.size());
-  for (const Instance& instance : scene.scene().instances)
-    instanceBounds_.push_back(transformBounds(scene.scene().meshBounds(instance.mesh), instance.transform));
-  opaqueDraws_.resize(scene.scene().meshes.size());
-  maskedDraws_.resize(scene.scene().meshes.size());
-  for (uint32_t d = 0; d < scene.draws().size(); ++d) {
-    const DrawItem& item = scene.draws()[d];
-    const AlphaMode mode = scene.scene().materials[item.material].alphaMode;
-    if (mode == AlphaMode::Opaque) opaqueDraws_[item.mesh].push_back(d);
-    if (mode == AlphaMode::Mask) maskedDraws_[item.mesh].push_back(d);
-  }
-  for (const auto& masked : maskedDraws_) hasMasked_ = hasMasked_ || !masked.empty();
-  order_.resize(options_.cascades);
+  casters_ = std::make_unique<ShadowCasters>(context, scene);
   // auto: compute where it fits, on a GPU (bench/README.md, "The sun's shadow").
   const std::string problem = ShadowRaster::problem(context, atlasWidth_, atlasHeight_);
   if (options_.raster == "compute" && !problem.empty())
@@ -195,10 +170,6 @@ SunShadows::SunShadows(Context& context, const GpuScene& scene, const SunShadowO
   if (options_.raster == "compute" ||
       (options_.raster == "auto" && problem.empty() && !context.isCpuDevice()))
     computeRaster_ = std::make_unique<ShadowRaster>(context, scene, atlasWidth_, atlasHeight_);
-  casters_ = Buffer(
-      context,
-      std::max<size_t>(1, size_t(options_.cascades) * instanceBounds_.size()) * sizeof(gpu::MeshInstance),
-      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::Upload, "shadow-casters");
 }
 
 SunShadows::~SunShadows() {
@@ -206,36 +177,13 @@ SunShadows::~SunShadows() {
   vkDestroySampler(context_.device(), sampler_, nullptr);
 }
 
-void SunShadows::orderCasters() {
-  const Scene& scene = scene_.scene();
-  const uint32_t instances = uint32_t(scene.instances.size());
-  std::vector<gpu::MeshInstance> out(size_t(data_.config.x) * instances);
-  std::vector<std::pair<float, uint32_t>> byDepth;
-  for (uint32_t c = 0; c < data_.config.x; ++c) {
-    byDepth.clear();
-    for (uint32_t i = 0; i < instances; ++i) {
-      const Bounds& b = instanceBounds_[i];
-      glm::vec2 lo(1e30f), hi(-1e30f);
-      float nearest = -1e30f;
-      for (int k = 0; k < 8; ++k) {
-        const glm::vec3 corner(k & 1 ? b.max.x : b.min.x, k & 2 ? b.max.y : b.min.y,
-                               k & 4 ? b.max.z : b.min.z);
-        const glm::vec4 clip = data_.cascadeViewProj[c] * glm::vec4(corner, 1.0f);
-        lo = glm::min(lo, glm::vec2(clip));
-        hi = glm::max(hi, glm::vec2(clip));
-        nearest = std::max(nearest, clip.z);  // reverse depth: 1 nearest the sun
-      }
-      if (hi.x < -1.0f || lo.x > 1.0f || hi.y < -1.0f || lo.y > 1.0f) continue;
-      byDepth.push_back({nearest, i});
-    }
-    std::sort(byDepth.begin(), byDepth.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    order_[c].clear();
-    for (const auto& [depth, i] : byDepth) {
-      out[size_t(c) * instances + order_[c].size()] = {scene.instances[i].transform, {}};
-      order_[c].push_back(i);
-    }
-  }
-  if (!out.empty()) casters_.upload(out.data(), out.size() * sizeof(gpu::MeshInstance));
+std::vector<ShadowView> SunShadows::views() const {
+  std::vector<ShadowView> out;
+  const uint32_t size = options_.resolution;
+  for (uint32_t c = 0; c < data_.config.x; ++c)
+    out.push_back(
+        {data_.cascadeViewProj[c], c % gpu::kCascadeColumns * size, c / gpu::kCascadeColumns * size, size});
+  return out;
 }
 
 void SunShadows::update(const gpu::FrameUniforms& frame, const Bounds& sceneBounds) {
@@ -244,7 +192,7 @@ void SunShadows::update(const gpu::FrameUniforms& frame, const Bounds& sceneBoun
   } else {
     data_ = fitSunCascades(frame, glm::vec3(frame.sunDirection[0]), sceneBounds, options_);
     // The hardware draws the casters (all of them, or the alpha-masked ones after the compute pass).
-    if (!computeRaster_ || hasMasked_) orderCasters();
+    if (!computeRaster_ || casters_->hasMasked()) casters_->cull(views());
   }
   uniforms_.upload(&data_, sizeof(data_));
 }
@@ -257,8 +205,8 @@ void SunShadows::record(FrameContext& frame) {
     beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
                    VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
     if (data_.config.x > 0) {
-      drawCasters(frame, cmd, AlphaMode::Opaque);
-      drawCasters(frame, cmd, AlphaMode::Mask);
+      casters_->draw(frame, cmd, AlphaMode::Opaque);
+      casters_->draw(frame, cmd, AlphaMode::Mask);
     }
     vkCmdEndRendering(cmd);
   };
@@ -268,58 +216,16 @@ void SunShadows::record(FrameContext& frame) {
     frame.graph.pass("shadow-sun", {uses(atlas_, Use::DepthWrite)}, clearOrDraw);
   } else {
     computeRaster_->record(frame, uniforms_, atlas_);
-    if (hasMasked_)
+    if (casters_->hasMasked())
       frame.graph.pass("shadow-sun-masked", {uses(atlas_, Use::DepthReadWrite)}, [&](VkCommandBuffer cmd) {
         beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
                        VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, false);
-        drawCasters(frame, cmd, AlphaMode::Mask);
+        casters_->draw(frame, cmd, AlphaMode::Mask);
         vkCmdEndRendering(cmd);
       });
   }
   // Every later pass may read it, in any shader stage: one transition here covers them all.
   frame.graph.step({uses(atlas_, Use::Sampled, kReaders)}, [](VkCommandBuffer) {});
-}
-
-void SunShadows::drawCasters(const FrameContext& frame, VkCommandBuffer cmd, AlphaMode mode) const {
-  const VkDeviceSize offsets[2] = {0, 0};
-  const VkBuffer vertexBuffers[2] = {scene_.vertexBuffer().handle(), casters_.handle()};
-  vkCmdBindVertexBuffers(cmd, 0, 2, vertexBuffers, offsets);
-  vkCmdBindIndexBuffer(cmd, scene_.indexBuffer().handle(), 0, VK_INDEX_TYPE_UINT32);
-  const bool masked = mode == AlphaMode::Mask;
-  (masked ? masked_ : opaque_).bind(cmd);
-  meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-  const Scene& scene = scene_.scene();
-  const uint32_t instances = uint32_t(scene.instances.size());
-  const float size = float(options_.resolution);
-  for (uint32_t c = 0; c < data_.config.x; ++c) {
-    const float x = float(c % gpu::kCascadeColumns) * size, y = float(c / gpu::kCascadeColumns) * size;
-    const VkViewport viewport{x, y, size, size, 0.0f, 1.0f};
-    const VkRect2D scissor{{int32_t(x), int32_t(y)}, {options_.resolution, options_.resolution}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
-    const glm::uvec4 cascade(c, 0u, 0u, 0u);
-    vkCmdPushConstants(cmd, layout_.handle(), kCasterStages, sizeof(glm::uvec4), sizeof(cascade), &cascade);
-    // A single-sided material casts from its front faces only (its back faces do not exist, as
-    // glTF culls them when drawing), a double-sided one from both.
-    VkCullModeFlags cull = ~0u;
-    uint32_t bound = ~0u;
-    for (uint32_t slot = 0; slot < order_[c].size(); ++slot)
-      for (uint32_t d : (masked ? maskedDraws_ : opaqueDraws_)[scene.instances[order_[c][slot]].mesh]) {
-        const DrawItem& item = scene_.draws()[d];
-        const VkCullModeFlags wanted =
-            scene.materials[item.material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-        if (wanted != cull) vkCmdSetCullMode(cmd, wanted);
-        cull = wanted;
-        if (masked && item.material != bound) {
-          scene_.bindMaterialSet(cmd, layout_.handle(), item.material);
-          const glm::uvec4 ids(item.material, 0u, 0u, 0u);
-          vkCmdPushConstants(cmd, layout_.handle(), kCasterStages, 0, sizeof(ids), &ids);
-          bound = item.material;
-        }
-        vkCmdDrawIndexed(cmd, item.indexCount, 1, item.firstIndex, int32_t(item.vertexOffset),
-                         c * instances + slot);
-      }
-  }
 }
 
 void SunShadows::bind(DescriptorWriter& writer) const {

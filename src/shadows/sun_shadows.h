@@ -11,12 +11,10 @@
 // projection's depth range spans the whole scene along the sun, so casters outside the slice still cast into
 // it.
 //
-// The casters are the opaque and alpha-masked primitives of every instance whose bounds overlap a
-// cascade (not only those in the camera's frustum), nearest the sun first, in one raster pass,
-// "shadow-sun", a viewport per cascade. Single-sided materials cast from their front faces only
-// (glTF culls their back faces), double-sided ones from both: on the H200 culling took the pass
-// from 4.7 to 3.6 ms, the other order of faces to 2.8 ms, at 4 cascades of 2048 on the sunlit
-// atrium; the front-to-back order gained 1%. Blended (glass) primitives cast no shadow.
+// The casters (shadows/shadow_casters.h) are drawn in one raster pass, "shadow-sun", a viewport per
+// cascade. On the H200 culling single-sided materials' back faces took the pass from 4.7 to 3.6 ms,
+// the other order of faces to 2.8 ms, at 4 cascades of 2048 on the sunlit atrium; the front-to-back
+// order gained 1%.
 // Lookups offset the point along its normal by a texel-sized step and bias the depth by the
 // surface's slope to the sun (tan theta times a texel), then filter with 3x3 bilinear comparisons
 // (`--shadow-filter pcf`) or read one texel (`none`: edges exactly where geometry puts them).
@@ -33,6 +31,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "scene/scene.h"
+#include "shadows/shadow_casters.h"
 #include "shared/gpu_types.h"
 #include "shared/shadow_types.h"
 
@@ -88,12 +87,8 @@ class SunShadows {
   std::vector<std::pair<std::string, double>> stats() const;
 
  private:
-  // Each cascade's casters this frame: the instances whose bounds overlap its square, nearest the
-  // sun first (so the depth test rejects what lies behind them early), their transforms written
-  // into casters_.
-  void orderCasters();
-  // Draws each cascade's casters of `mode` (opaque or alpha-masked) with the hardware.
-  void drawCasters(const FrameContext& frame, VkCommandBuffer cmd, AlphaMode mode) const;
+  // The views the casters are drawn from: each cascade's projection and cell.
+  std::vector<ShadowView> views() const;
 
   Context& context_;
   const GpuScene& scene_;
@@ -106,15 +101,7 @@ class SunShadows {
   Image atlas_;
   VkSampler sampler_ = VK_NULL_HANDLE;
   std::unique_ptr<ShadowRaster> computeRaster_;  // --shadow-raster compute (or auto's choice)
-  bool hasMasked_ = false;
-  PipelineLayout layout_;
-  Pipeline opaque_;
-  Pipeline masked_;
-  std::vector<Bounds> instanceBounds_;              // world-space box of each scene instance
-  std::vector<std::vector<uint32_t>> opaqueDraws_;  // per mesh: its opaque primitives (draws())
-  std::vector<std::vector<uint32_t>> maskedDraws_;  // per mesh: its alpha-masked primitives
-  Buffer casters_;                                  // per cascade, its casters' transforms in order
-  std::vector<std::vector<uint32_t>> order_;        // per cascade: the scene instances drawn
+  std::unique_ptr<ShadowCasters> casters_;       // the hardware's: all casters, or the alpha-masked ones
 };
 
 }  // namespace lll
