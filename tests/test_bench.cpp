@@ -177,18 +177,26 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
   for (const Scenario& s : picked) EXPECT_EQ(s.settings.particleCount, 2048u);
 }
 
-// The sun's shadow: every technique without and with it (4 cascades of 2048), then lll's cascades
-// by both rasterizers at 1, 2, 4 cascades and half and double resolution; a CPU device runs the
-// hardware rows alone.
+// Shadows: every technique without and with the sun's (4 cascades of 2048), then lll's cascades by
+// both rasterizers at 1, 2, 4 cascades and half and double resolution (a CPU device runs the
+// hardware rows alone); the sun and K local lights' shadows, every technique at K = 16 and 64, lll
+// at 1 and 256.
 TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) {
   const auto full = buildSuite("shadows", SuiteOptions{});
   const size_t techniques = lll::techniques().size();
-  ASSERT_EQ(full.size(), 2 * techniques + 2 * 5);
+  ASSERT_EQ(full.size(), 4 * techniques + 2 * 5 + 2);
   std::map<std::string, int> byRaster;
+  std::map<uint32_t, int> byLights;
   for (const Scenario& s : full) {
     EXPECT_EQ(s.scene.scene, "atrium");
     ASSERT_EQ(s.scene.suns.size(), 1u) << s.name;
     EXPECT_EQ(s.settings.width, 1920u);
+    if (s.settings.shadows == "all") {
+      ++byLights[s.settings.shadowLights];
+      EXPECT_NE(s.series.find(fmt::format("sun + {} shadowed light", s.settings.shadowLights)),
+                std::string::npos);
+      continue;
+    }
     ++byRaster[s.settings.shadows == "none" ? "none" : s.settings.shadowRaster];
     if (s.settings.shadowRaster != "auto") {
       EXPECT_EQ(s.settings.technique, "lll");
@@ -199,8 +207,10 @@ TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) 
   EXPECT_EQ(byRaster["auto"], int(techniques));
   EXPECT_EQ(byRaster["hardware"], 5);
   EXPECT_EQ(byRaster["compute"], 5);
+  EXPECT_EQ(byLights,
+            (std::map<uint32_t, int>{{1, 1}, {16, int(techniques)}, {64, int(techniques)}, {256, 1}}));
   const auto cpu = buildSuite("shadows", SuiteOptions{.cpuDevice = true});
-  EXPECT_EQ(cpu.size(), 2 * techniques + 5);
+  EXPECT_EQ(cpu.size(), 4 * techniques + 5 + 2);
   for (const Scenario& s : cpu) EXPECT_NE(s.settings.shadowRaster, "compute") << s.name;
 }
 

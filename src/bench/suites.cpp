@@ -235,10 +235,11 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
   return out;
 }
 
-// The sun's shadow (issue 14): the default atrium (110 lights) under a sun low over the courtyard,
-// every technique without the sun's shadow and with it (4 cascades of 2048 texels, the issue's
-// measure), and lll with fewer cascades and other resolutions, each drawn by the hardware and by
-// the compute rasterizer (--shadow-raster).
+// Shadows (issue 14): the default atrium (110 lights) under a sun low over the courtyard, every
+// technique without the sun's shadow and with it (4 cascades of 2048 texels, the issue's measure),
+// and lll with fewer cascades and other resolutions, each drawn by the hardware and by the compute
+// rasterizer (--shadow-raster); then the sun and K shadowed local lights (--shadows all, 512-texel
+// views): every technique at K = 16 and 64, lll at 1 and 256 (all of the atrium's lights).
 std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   const uint32_t resolution = options.quick ? 256 : 2048;
@@ -263,6 +264,21 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   };
   add(registeredTechniques(), "none", 4, resolution);
   add(registeredTechniques(), "sun", 4, resolution);
+  const auto addLights = [&](const std::vector<std::string>& techniques, uint32_t lights) {
+    const std::string how = fmt::format("sun + {} shadowed light{}", lights, lights == 1 ? "" : "s");
+    Scenario base = makeScenario("shadows", how, scene, size);
+    base.settings.shadows = "all";
+    base.settings.cascades = 4;
+    base.settings.shadowResolution = resolution;
+    base.settings.shadowLights = lights;
+    base.settings.shadowLightResolution = options.quick ? 64 : 512;
+    for (Scenario s : perTechnique(base, techniques, false)) {
+      s.series = fmt::format("{}, {}", techniqueLabel(s.settings), how);
+      out.push_back(s);
+    }
+  };
+  for (uint32_t lights : {16u, 64u}) addLights(registeredTechniques(), lights);
+  for (uint32_t lights : {1u, 256u}) addLights({"lll"}, lights);
   // On a CPU device the compute rows are left out: its storage buffers cannot hold the keys of the
   // larger atlases, and auto draws with the hardware there anyway.
   const std::vector<std::string> rasters = options.cpuDevice
