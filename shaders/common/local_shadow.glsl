@@ -21,6 +21,13 @@ layout(set = 0, binding = 29) uniform sampler2DShadow localShadowAtlas;
 // out of a pass specialized for the scene (render/frame.h, lightTypeConstants).
 layout(constant_id = 41) const bool kLocalShadows = true;
 
+// One comparison at atlas uv `at`. At level 0 explicitly: lookups sit in control flow that differs
+// from pixel to pixel (lights that reach, surfaces that face them), where a fragment shader's
+// implicit derivatives are undefined.
+float localShadowTap(vec2 at, float depth) {
+  return textureLod(localShadowAtlas, vec3(at, depth), 0.0);
+}
+
 // The fraction of `light` that reaches `position` (`l` the unit direction towards the light,
 // `distance` to it), 1 lit to 0 shadowed. `normal` (unit, or zero for particles) offsets the lookup
 // by a texel-sized step; the depth bias grows with the slope tan(theta) of the surface to the light.
@@ -57,12 +64,12 @@ float localShadow(GpuLight light, vec3 position, vec3 normal, vec3 l, float dist
   if (v.config.x == kShadowFilterNone) {
     // The texel's centre: the linear filter then reads that texel alone.
     at = v.cell.xy + (floor(uv / v.params.w) + 0.5) * atlasTexel;
-    return texture(localShadowAtlas, vec3(clamp(at, lo, hi), ndc.z));
+    return localShadowTap(clamp(at, lo, hi), ndc.z);
   }
   float sum = 0.0;
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x)
-      sum += texture(localShadowAtlas, vec3(clamp(at + vec2(x, y) * atlasTexel, lo, hi), ndc.z));
+      sum += localShadowTap(clamp(at + vec2(x, y) * atlasTexel, lo, hi), ndc.z);
   return sum * (1.0 / 9.0);
 }
 

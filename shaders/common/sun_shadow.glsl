@@ -28,7 +28,8 @@ float sunShadowTap(uint cascade, vec2 cell, float depth) {
   float inset = 0.5 * sunShadow.atlas.x;
   cell = clamp(cell, vec2(inset), vec2(1.0 - inset));
   vec2 origin = vec2(float(cascade % kCascadeColumns), float(cascade / kCascadeColumns));
-  return texture(sunShadowAtlas, vec3((origin + cell) * sunShadow.atlas.zw, depth));
+  // Level 0 explicitly: no implicit derivatives in control flow that differs between pixels.
+  return textureLod(sunShadowAtlas, vec3((origin + cell) * sunShadow.atlas.zw, depth), 0.0);
 }
 
 // The fraction of the shadow-casting sun (the frame's first directional light) that reaches `position`, 1 lit
