@@ -428,7 +428,8 @@ TEST_P(Analytic, SunShadowOfASquareOccluder) {
 // origin, the occluder halfway down: the shadow is the square scaled twice about the origin. A spot
 // (one view) and a point light (a cube, the shadow in its -y face), PCF off and on, every shading
 // path: every pixel more than 1.5 (PCF: 3) of the light's texels on the ground from the shadow's edge
-// is exactly lit (the formula) or exactly dark; pixels that see the occluder itself are skipped.
+// is exactly lit (the formula) or exactly dark; pixels that see the occluder itself are skipped. On
+// one path the casters are drawn by the compute rasterizer too.
 TEST_P(Analytic, LocalLightShadowOfASquareOccluder) {
   for (const LightType type : {LightType::Spot, LightType::Point}) {
     Scene scene = planeScene();
@@ -442,8 +443,12 @@ TEST_P(Analytic, LocalLightShadowOfASquareOccluder) {
     const PlaneMaterial pm;
     constexpr uint32_t kResolution = 512;
     const float tanHalf = shadowViews(light, kResolution)[0].tanHalf;
-    for (const char* filter : {"none", "pcf"}) {
-      SCOPED_TRACE(std::string(type == LightType::Spot ? "spot" : "point") + " --shadow-filter " + filter);
+    std::vector<std::pair<const char*, const char*>> runs = {{"none", "hardware"}, {"pcf", "hardware"}};
+    if (std::string(GetParam().name) == "forward-visibility")
+      runs.insert(runs.end(), {{"none", "compute"}, {"pcf", "compute"}});
+    for (const auto& [filter, raster] : runs) {
+      SCOPED_TRACE(std::string(type == LightType::Spot ? "spot" : "point") + " --shadow-filter " + filter +
+                   " --shadow-raster " + raster);
       const float edgeTexels = std::string(filter) == "none" ? 1.5f : 3.0f;
       int nearEdge = 0;
       Counts c = checkAgainstFormula(
@@ -469,6 +474,7 @@ TEST_P(Analytic, LocalLightShadowOfASquareOccluder) {
             s.shadows = "all";
             s.shadowLights = 1;
             s.shadowFilter = filter;
+            s.shadowRaster = raster;
             s.shadowLightResolution = kResolution;
           });
       std::printf("[ analytic ] %d pixels near the shadow's edge skipped\n", nearEdge);

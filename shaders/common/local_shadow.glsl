@@ -68,8 +68,7 @@ float localShadow(GpuLight light, vec3 position, vec3 normal, vec3 l, float dist
   }
   float sum = 0.0;
   for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x)
-      sum += localShadowTap(clamp(at + vec2(x, y) * atlasTexel, lo, hi), ndc.z);
+    for (int x = -1; x <= 1; ++x) sum += localShadowTap(clamp(at + vec2(x, y) * atlasTexel, lo, hi), ndc.z);
   return sum * (1.0 / 9.0);
 }
 

@@ -7,8 +7,10 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 26) readonly buffer SunShadowBlock {
-  SunShadow sunShadow;
+// The views to draw (shared/shadow_types.h, ShadowRasterView): a header, then the views.
+layout(std430, set = 0, binding = 26) readonly buffer ShadowViewsBlock {
+  uvec4 shadowViewHeader;  // x views, y atlas width, z atlas height
+  ShadowRasterView shadowViews[];
 };
 layout(push_constant) uniform RasterBlock {
   RasterPush raster;
@@ -17,7 +19,7 @@ layout(push_constant) uniform RasterBlock {
 #include "common/raster_triangle.glsl"
 
 void main() {
-  uint imageHeight = uint(round(sunShadow.atlas.y / sunShadow.atlas.w));
+  uint imageHeight = shadowViewHeader.z;
   uint listed = min(largeCount, raster.large.x);
   for (uint slot = gl_WorkGroupID.x; slot < listed; slot += gl_NumWorkGroups.x)
     rasterListInBins(slot, largeTriangles[slot].bounds, imageHeight, gl_LocalInvocationID.x, 64u);

@@ -9,8 +9,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430, set = 0, binding = 24) writeonly buffer DepthBlock {
   float depthOut[];
 };
-layout(std430, set = 0, binding = 26) readonly buffer SunShadowBlock {
-  SunShadow sunShadow;
+// The views to draw (shared/shadow_types.h, ShadowRasterView): a header, then the views.
+layout(std430, set = 0, binding = 26) readonly buffer ShadowViewsBlock {
+  uvec4 shadowViewHeader;  // x views, y atlas width, z atlas height
+  ShadowRasterView shadowViews[];
 };
 layout(push_constant) uniform RasterBlock {
   RasterPush raster;
@@ -19,7 +21,7 @@ layout(push_constant) uniform RasterBlock {
 #include "common/raster_triangle.glsl"
 
 void main() {
-  ivec2 size = ivec2(round(sunShadow.atlas.y / sunShadow.atlas.zw));
+  ivec2 size = ivec2(shadowViewHeader.yz);
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   uint64_t best = rasterNearest(texel, size);
   if (any(greaterThanEqual(texel, size))) return;

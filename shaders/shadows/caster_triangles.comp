@@ -1,15 +1,18 @@
 #version 460
-// The sun's shadow casters rasterized in compute (shadows/shadow_raster.h): one invocation per
-// opaque caster triangle, drawn into every cascade's cell of the shadow atlas with the visibility
-// buffer's rasterizer (common/raster_triangle.glsl): depth only (the key's id is 0).
+// Shadow casters rasterized in compute (shadows/shadow_raster.h): one invocation per opaque caster
+// triangle, drawn into every view's cell of the shadow atlas (the sun's cascades, or the local
+// lights' views that it is within reach of) with the visibility buffer's rasterizer
+// (common/raster_triangle.glsl): depth only (the key's id is 0).
 #extension GL_EXT_control_flow_attributes : enable
 #include "common/frame.glsl"
 #include "shared/shadow_types.h"
 
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 26) readonly buffer SunShadowBlock {
-  SunShadow sunShadow;
+// The views to draw (shared/shadow_types.h, ShadowRasterView): a header, then the views.
+layout(std430, set = 0, binding = 26) readonly buffer ShadowViewsBlock {
+  uvec4 shadowViewHeader;  // x views, y atlas width, z atlas height
+  ShadowRasterView shadowViews[];
 };
 layout(push_constant) uniform RasterBlock {
   RasterPush raster;
@@ -27,12 +30,18 @@ void main() {
   vec4 world[3];
   rasterTriangleWorld(triangle, record, local, world);
   bool cullBack = record < raster.counts.z;
-  int resolution = int(sunShadow.atlas.y);
-  ivec2 atlasSize = ivec2(round(sunShadow.atlas.y / sunShadow.atlas.zw));
-  for (uint c = 0u; c < sunShadow.config.x; ++c) {
-    mat4 toCell = sunShadow.cascadeViewProj[c];
-    ivec2 origin = ivec2(int(c % kCascadeColumns), int(c / kCascadeColumns)) * resolution;
+  ivec2 atlasSize = ivec2(shadowViewHeader.yz);
+  // The triangle's bounding sphere, for the lights' reach.
+  vec3 centre = (world[0].xyz + world[1].xyz + world[2].xyz) * (1.0 / 3.0);
+  float radius = sqrt(max(max(dot(world[0].xyz - centre, world[0].xyz - centre),
+                              dot(world[1].xyz - centre, world[1].xyz - centre)),
+                          dot(world[2].xyz - centre, world[2].xyz - centre)));
+  for (uint v = 0u; v < shadowViewHeader.x; ++v) {
+    vec4 reach = shadowViews[v].reach;
+    if (reach.w > 0.0 && distance(centre, reach.xyz) > reach.w + radius) continue;
+    mat4 toCell = shadowViews[v].viewProj;
+    uvec4 cell = shadowViews[v].cell;
     clipAndRasterize(toCell * world[0], toCell * world[1], toCell * world[2], 0u, cullBack,
-                     RasterTarget(atlasSize, origin, ivec2(resolution)));
+                     RasterTarget(atlasSize, ivec2(cell.xy), ivec2(cell.zz)));
   }
 }

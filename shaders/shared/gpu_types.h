@@ -12,7 +12,8 @@ struct GpuLight {
   vec4 colorIntensity;  // rgb linear colour, w intensity (candela)
   vec4 directionType;   // xyz spot: direction it points to (unit); box: its x axis over its half
                         // extent; w kLightPoint, kLightSpot or kLightBox
-  vec4 spotParams;      // spot: x cos(outer cone), y cos(inner cone), z angle scale, w angle offset
+  vec4 spotParams;      // spot: x cos(outer cone), y cos(inner cone), z 1 / (y - x); spot and point: w
+                        // the light's shadow views this frame (common/local_shadow.glsl; 0: none)
                         // VPL: x its near distance (the 1/d^2 clamp); directionType.xyz its normal
                         // box: xyz its y axis over its half extent, w hx * hy / hz (so that
                         // cross(x, y) * w is its z axis over its half extent)

@@ -41,6 +41,16 @@ struct LocalShadowView {
 };
 LLL_CHECK_SIZE(LocalShadowView, 64 + 3 * 16);
 
+// One view the shadow casters' compute rasterizer draws (src/shadows/shadow_raster.h): a sun
+// cascade or a local light's view, and its cell of the atlas. The views buffer holds a uvec4 header
+// (x views, y atlas width, z atlas height) and then the views.
+struct ShadowRasterView {
+  mat4 viewProj;  // world to the view's clip space
+  vec4 reach;     // xyz the light's position, w its range: triangles beyond it are skipped; w 0: none
+  uvec4 cell;     // xy the cell's first texel, z its side in texels
+};
+LLL_CHECK_SIZE(ShadowRasterView, 96);
+
 // The shadow caster pass's push constants: the draw's (DrawPush) and the view being drawn.
 struct CasterPush {
   uvec4 ids;      // x material index, yzw unused (as DrawPush)

@@ -75,11 +75,12 @@ gpu::GpuLight toGpuLight(const Light& light) {
   }
   const uint32_t type = light.type == LightType::Spot ? gpu::kLightSpot : gpu::kLightPoint;
   g.directionType = glm::vec4(glm::normalize(light.direction), float(type));
-  // KHR_lights_punctual's spot falloff, precomputed: smooth = saturate(cd * scale + offset)^2.
+  // KHR_lights_punctual's spot falloff, precomputed: smooth = saturate((cd - cos outer) * scale)^2.
+  // w is the light's shadow views (shadows/local_shadows.h): 0, none, until a frame gives it some.
   const float cosOuter = std::cos(light.outerConeAngle);
   const float cosInner = std::cos(light.innerConeAngle);
   const float scale = 1.0f / std::max(1e-4f, cosInner - cosOuter);
-  g.spotParams = glm::vec4(cosOuter, cosInner, scale, -cosOuter * scale);
+  g.spotParams = glm::vec4(cosOuter, cosInner, scale, 0.0f);
   return g;
 }
 

@@ -12,6 +12,7 @@
 #include "render/gpu_scene.h"
 #include "render/settings.h"
 #include "scene/errors.h"
+#include "shadows/shadow_raster.h"
 
 namespace lll {
 
@@ -57,6 +58,7 @@ LocalShadowOptions localShadowOptions(const RenderSettings& s) {
   o.lights = s.shadows == "all" ? s.shadowLights : 0;
   o.resolution = s.shadowLightResolution;
   o.filter = s.shadowFilter == "none" ? gpu::kShadowFilterNone : gpu::kShadowFilterPcf;
+  o.raster = s.shadowRaster;
   return o;
 }
 
@@ -152,9 +154,10 @@ LocalShadows::LocalShadows(Context& context, const GpuScene& scene, const LocalS
           kMostAtlasBytes / 1048576.0, uint32_t(fitViews) / perLight));
     }
   }
-  atlas_ =
-      Image(context, atlasWidth_, atlasHeight_, VK_FORMAT_D32_SFLOAT,
-            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "light-shadow-atlas");
+  atlas_ = Image(context, atlasWidth_, atlasHeight_, VK_FORMAT_D32_SFLOAT,
+                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                     VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // the compute rasterizer's copy
+                 "light-shadow-atlas");
   views_.assign(std::max(1u, views), gpu::LocalShadowView{});
   viewBuffer_ = Buffer(context, views_.size() * sizeof(gpu::LocalShadowView),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "light-shadow-views");
@@ -165,10 +168,20 @@ LocalShadows::LocalShadows(Context& context, const GpuScene& scene, const LocalS
   info.compareEnable = VK_TRUE;
   info.compareOp = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse depth: lit where nearer the light than stored
   VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &sampler_));
-  if (casting()) casters_ = std::make_unique<ShadowCasters>(context, scene);
+  if (!casting()) return;
+  casters_ = std::make_unique<ShadowCasters>(context, scene);
+  // auto: compute where it fits, on a GPU, as the sun's (bench/README.md, "Shadows").
+  const std::string problem = ShadowRaster::problem(context, atlasWidth_, atlasHeight_);
+  if (options_.raster == "compute" && !problem.empty())
+    throw InputError(fmt::format("--shadow-raster compute with --shadows all: {}", problem));
+  if (options_.raster == "compute" ||
+      (options_.raster == "auto" && problem.empty() && !context.isCpuDevice()))
+    computeRaster_ =
+        std::make_unique<ShadowRaster>(context, scene, atlasWidth_, atlasHeight_, views, "shadow-lights");
 }
 
 LocalShadows::~LocalShadows() {
+  computeRaster_.reset();
   vkDestroySampler(context_.device(), sampler_, nullptr);
 }
 
@@ -224,12 +237,15 @@ void LocalShadows::update(const gpu::FrameUniforms& frame) {
       out.params = glm::vec4(2.0f * lightViews[f].tanHalf / float(size), kNormalOffsetTexels,
                              kSlopeBiasTexels, 1.0f / float(size));
       out.config = glm::uvec4(options_.filter, 0u, 0u, 0u);
-      drawn.push_back({lightViews[f].viewProj, x, y, size});
+      drawn.push_back(
+          {lightViews[f].viewProj, x, y, size, glm::vec4(lights[light].position, lights[light].range)});
     }
   }
   viewBuffer_.upload(views_.data(), views_.size() * sizeof(gpu::LocalShadowView));
   viewsDrawn_ = uint32_t(drawn.size());
-  casters_->cull(drawn);
+  if (computeRaster_) computeRaster_->setViews(drawn);
+  // The hardware draws the casters (all of them, or the alpha-masked ones after the compute pass).
+  if (!computeRaster_ || casters_->hasMasked()) casters_->cull(drawn);
 }
 
 void LocalShadows::record(FrameContext& frame) {
@@ -274,10 +290,20 @@ void LocalShadows::record(FrameContext& frame) {
     }
     vkCmdEndRendering(cmd);
   };
-  if (viewsDrawn_ > 0)
-    frame.graph.pass("shadow-lights", {uses(atlas_, Use::DepthWrite)}, clearOrDraw);
-  else
+  if (viewsDrawn_ == 0) {
     frame.graph.step({uses(atlas_, Use::DepthWrite)}, clearOrDraw);
+  } else if (!computeRaster_) {
+    frame.graph.pass("shadow-lights", {uses(atlas_, Use::DepthWrite)}, clearOrDraw);
+  } else {
+    computeRaster_->record(frame, atlas_);
+    if (casters_->hasMasked())
+      frame.graph.pass("shadow-lights-masked", {uses(atlas_, Use::DepthReadWrite)}, [&](VkCommandBuffer cmd) {
+        beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
+                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, false);
+        casters_->draw(frame, cmd, AlphaMode::Mask);
+        vkCmdEndRendering(cmd);
+      });
+  }
   frame.graph.step({uses(atlas_, Use::Sampled, kReaders)}, [](VkCommandBuffer) {});
 }
 
@@ -296,6 +322,7 @@ std::vector<uint32_t> LocalShadows::shadowed() const {
 std::vector<std::pair<std::string, double>> LocalShadows::stats() const {
   if (!casting()) return {{"light-shadows", 0.0}};
   return {{"light-shadows", double(slots_.size())},
+          {"light-shadow-compute-raster", computeRaster_ ? 1.0 : 0.0},
           {"light-shadow-views", double(viewsDrawn_)},
           {"light-shadow-casters", double(casters_->castersDrawn())},
           {"light-shadow-resolution", double(options_.resolution)},

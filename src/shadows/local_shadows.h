@@ -16,10 +16,12 @@
 // to its range. The light record's spotParams.w names its views (shared/gpu_types.h), written into
 // the light array on the GPU each frame only for the lights whose shadow changed.
 //
-// The casters (shadows/shadow_casters.h) are drawn by the hardware in one pass, "shadow-lights",
-// each view seeing only the instances inside its frustum. Lookups bias as the sun's do (a texel of
-// normal offset, 2 texels of slope bias per unit tan(theta), the texel's size growing with the
-// distance from the light) and filter with --shadow-filter's 3x3 PCF or one texel.
+// The casters are drawn in one pass, "shadow-lights": by the hardware (shadows/shadow_casters.h),
+// each view seeing only the instances inside its frustum, or by the compute rasterizer
+// (shadows/shadow_raster.h, --shadow-raster compute; auto's choice on a GPU), each triangle into
+// the views of the lights whose range it is within, the alpha-masked casters then by the hardware. Lookups
+// bias as the sun's do (a texel of normal offset, 2 texels of slope bias per unit tan(theta), the texel's
+// size growing with the distance from the light) and filter with --shadow-filter's 3x3 PCF or one texel.
 #include <glm/glm.hpp>
 
 #include <memory>
@@ -39,6 +41,7 @@
 namespace lll {
 
 class Context;
+class ShadowRaster;
 class GpuScene;
 struct FrameContext;
 struct RenderSettings;
@@ -52,6 +55,7 @@ struct LocalShadowOptions {
   uint32_t lights = 0;        // K, the most lights that cast each frame; 0: none
   uint32_t resolution = 512;  // texels along each view's side
   uint32_t filter = gpu::kShadowFilterPcf;
+  std::string raster = "auto";  // hardware | compute | auto, as the sun's (--shadow-raster)
 };
 
 // The options `settings` ask for (--shadows all, --shadow-lights, --shadow-light-resolution,
@@ -124,6 +128,7 @@ class LocalShadows {
   Image atlas_;
   VkSampler sampler_ = VK_NULL_HANDLE;
   std::unique_ptr<ShadowCasters> casters_;
+  std::unique_ptr<ShadowRaster> computeRaster_;
   uint32_t viewsDrawn_ = 0;
 };
 

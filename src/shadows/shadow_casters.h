@@ -31,6 +31,9 @@ struct ShadowView {
   uint32_t x = 0;
   uint32_t y = 0;
   uint32_t size = 0;
+  // A local light's position and range (the compute rasterizer skips triangles beyond it); w 0 for
+  // the sun's cascades, which reach everywhere.
+  glm::vec4 reach{0.0f};
 };
 
 // Whether a world-space box may overlap the clip volume of `viewProj` (reverse depth: 0 <= z <= w):

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "gpu/context.h"
@@ -22,8 +23,14 @@ std::string ShadowRaster::problem(const Context& context, uint32_t width, uint32
   return RasterWorkspace::problem(context, width, height, fmt::format("a {}x{} shadow atlas", width, height));
 }
 
-ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t width, uint32_t height)
-    : context_(context), scene_(scene), width_(width), height_(height) {
+ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t width, uint32_t height,
+                           uint32_t maxViews, std::string name)
+    : context_(context),
+      scene_(scene),
+      width_(width),
+      height_(height),
+      maxViews_(maxViews),
+      name_(std::move(name)) {
   const Scene& s = scene.scene();
   // One record per (instance, opaque primitive), single-sided first (their back faces are culled).
   std::vector<std::vector<const DrawItem*>> meshDraws(s.meshes.size());
@@ -57,6 +64,9 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
   if (!instances.empty()) instances_.upload(std::span<const gpu::MeshInstance>(instances));
 
   work_ = RasterWorkspace(context, width, height, "shadow-raster");
+  views_ = Buffer(context, sizeof(glm::uvec4) + std::max(1u, maxViews) * sizeof(gpu::ShadowRasterView),
+                  kStorage, MemoryUse::Upload, name_ + "-views");
+  setViews({});
 
   layout_ = PipelineLayout(
       context, {"shadows/caster_triangles.comp", "shadows/caster_bins.comp", "shadows/caster_resolve.comp"});
@@ -65,7 +75,17 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
   resolvePipeline_ = Pipeline(context, layout_, "shadows/caster_resolve.comp");
 }
 
-void ShadowRaster::record(FrameContext& frame, const Buffer& shadowUniforms, const Image& atlas) const {
+void ShadowRaster::setViews(std::span<const ShadowView> views) {
+  const uint32_t count = uint32_t(std::min<size_t>(views.size(), maxViews_));
+  std::vector<gpu::ShadowRasterView> packed(count);
+  for (uint32_t v = 0; v < count; ++v)
+    packed[v] = {views[v].viewProj, views[v].reach, glm::uvec4(views[v].x, views[v].y, views[v].size, 0u)};
+  const glm::uvec4 header(count, width_, height_, 0u);
+  views_.upload(&header, sizeof(header));
+  if (count > 0) views_.upload(packed.data(), count * sizeof(gpu::ShadowRasterView), sizeof(header));
+}
+
+void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
   constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   const uint32_t groups = divideRoundingUp(triangles_, RasterWorkspace::kGroupSize);
   const uint32_t groupsPerRow = std::max(1u, std::min(groups, 65535u));
@@ -78,7 +98,7 @@ void ShadowRaster::record(FrameContext& frame, const Buffer& shadowUniforms, con
       .storage(18, scene_.positionBuffer().handle())
       .storage(19, scene_.indexBuffer().handle())
       .storage(21, starts_.handle())
-      .storage(26, shadowUniforms.handle());
+      .storage(26, views_.handle());
   work_.bind(writer);
   const auto bindAll = [&](VkCommandBuffer cmd, const Pipeline& pipeline) {
     pipeline.bind(cmd);
@@ -86,19 +106,19 @@ void ShadowRaster::record(FrameContext& frame, const Buffer& shadowUniforms, con
     vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   };
   work_.clear(frame.graph);
-  frame.graph.pass("shadow-sun", work_.triangleUses(), [&](VkCommandBuffer cmd) {
+  frame.graph.pass(name_, work_.triangleUses(), [&](VkCommandBuffer cmd) {
     if (groups == 0) return;
     bindAll(cmd, trianglePipeline_);
     vkCmdDispatch(cmd, groupsPerRow, divideRoundingUp(groups, groupsPerRow), 1);
   });
   frame.graph.pass(
-      "shadow-sun-bins",
+      name_ + "-bins",
       {uses(work_.large(), Use::StorageRead, kCompute), uses(work_.bins(), Use::StorageReadWrite, kCompute)},
       [&](VkCommandBuffer cmd) {
         bindAll(cmd, binPipeline_);
         vkCmdDispatch(cmd, kBinningGroups, 1, 1);
       });
-  frame.graph.pass("shadow-sun-resolve", work_.resolveUses(), [&](VkCommandBuffer cmd) {
+  frame.graph.pass(name_ + "-resolve", work_.resolveUses(), [&](VkCommandBuffer cmd) {
     bindAll(cmd, resolvePipeline_);
     vkCmdDispatch(cmd, divideRoundingUp(width_, RasterWorkspace::kTileSize),
                   divideRoundingUp(height_, RasterWorkspace::kTileSize), 1);

@@ -1,9 +1,12 @@
 #pragma once
-// The sun's shadow casters rasterized in compute (--shadow-raster compute): the visibility buffer's
-// rasterizer (render/compute_raster.h, common/raster_triangle.glsl) pointed at the shadow atlas's
-// cascades. On the H200 the hardware pass is bound by its few raster units; compute runs on all.
+// Shadow casters rasterized in compute (--shadow-raster compute): the visibility buffer's
+// rasterizer (render/compute_raster.h, common/raster_triangle.glsl) pointed at a shadow atlas's
+// views: the sun's cascades, or the local lights' cones and cube faces. On the H200 the hardware
+// pass is bound by its few raster units; compute runs on all. The passes, named after the atlas
+// ("shadow-sun", "shadow-lights"):
 //   "shadow-sun"          one invocation per opaque caster triangle (every instance) draws it into
-//                         each cascade's cell: small boxes covered with 64-bit atomic max, large
+//                         each view's cell (a local light's views only when the triangle is within
+//                         the light's range): small boxes covered with 64-bit atomic max, large
 //                         triangles listed;
 //   "shadow-sun-bins"     each large triangle appended to the 32x32-texel bins it touches, by a
 //                         workgroup (the visibility buffer's thread-per-triangle listing took 3.6 ms
@@ -13,11 +16,14 @@
 //   "shadow-sun-masked"   alpha-masked casters drawn by the hardware over that depth (they need
 //                         their texture), only where the scene has them.
 // Single-sided primitives are culled by their back faces, as the hardware pass culls them.
+#include <span>
 #include <string>
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "render/compute_raster.h"
+#include "shadows/shadow_casters.h"
+#include "shared/shadow_types.h"
 
 namespace lll {
 
@@ -31,17 +37,22 @@ class ShadowRaster {
   // when it can.
   static std::string problem(const Context& context, uint32_t width, uint32_t height);
 
-  ShadowRaster(Context& context, const GpuScene& scene, uint32_t width, uint32_t height);
+  // For an atlas of width x height texels holding at most `maxViews` views; `name` names its passes.
+  ShadowRaster(Context& context, const GpuScene& scene, uint32_t width, uint32_t height, uint32_t maxViews,
+               std::string name);
 
-  // Rasterizes every opaque caster into the cascades `shadowUniforms` (gpu::SunShadow) describes,
-  // then copies the depths into `atlas`.
-  void record(FrameContext& frame, const Buffer& shadowUniforms, const Image& atlas) const;
+  // This frame's views (at most maxViews); before recording the frame.
+  void setViews(std::span<const ShadowView> views);
+  // Rasterizes every opaque caster into the views, then copies the depths into `atlas`.
+  void record(FrameContext& frame, const Image& atlas) const;
 
  private:
   Context& context_;
   const GpuScene& scene_;
   uint32_t width_;
   uint32_t height_;
+  uint32_t maxViews_;
+  std::string name_;
   uint32_t records_ = 0;
   uint32_t singleSided_ = 0;
   uint32_t triangles_ = 0;
@@ -52,6 +63,7 @@ class ShadowRaster {
   Buffer recordBuffer_;  // SurfaceRecord per (instance, opaque primitive), single-sided first
   Buffer starts_;        // each record's first triangle, and the total
   Buffer instances_;
+  Buffer views_;  // a uvec4 header (views, atlas width, height), then the views
   RasterWorkspace work_;
 };
 

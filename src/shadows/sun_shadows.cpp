@@ -169,7 +169,8 @@ SunShadows::SunShadows(Context& context, const GpuScene& scene, const SunShadowO
     throw InputError(fmt::format("--shadow-raster compute: {}", problem));
   if (options_.raster == "compute" ||
       (options_.raster == "auto" && problem.empty() && !context.isCpuDevice()))
-    computeRaster_ = std::make_unique<ShadowRaster>(context, scene, atlasWidth_, atlasHeight_);
+    computeRaster_ = std::make_unique<ShadowRaster>(context, scene, atlasWidth_, atlasHeight_,
+                                                    options_.cascades, "shadow-sun");
 }
 
 SunShadows::~SunShadows() {
@@ -192,7 +193,9 @@ void SunShadows::update(const gpu::FrameUniforms& frame, const Bounds& sceneBoun
   } else {
     data_ = fitSunCascades(frame, glm::vec3(frame.sunDirection[0]), sceneBounds, options_);
     // The hardware draws the casters (all of them, or the alpha-masked ones after the compute pass).
-    if (!computeRaster_ || casters_->hasMasked()) casters_->cull(views());
+    const std::vector<ShadowView> cascades = views();
+    if (computeRaster_) computeRaster_->setViews(cascades);
+    if (!computeRaster_ || casters_->hasMasked()) casters_->cull(cascades);
   }
   uniforms_.upload(&data_, sizeof(data_));
 }
@@ -215,7 +218,7 @@ void SunShadows::record(FrameContext& frame) {
   } else if (!computeRaster_) {
     frame.graph.pass("shadow-sun", {uses(atlas_, Use::DepthWrite)}, clearOrDraw);
   } else {
-    computeRaster_->record(frame, uniforms_, atlas_);
+    computeRaster_->record(frame, atlas_);
     if (casters_->hasMasked())
       frame.graph.pass("shadow-sun-masked", {uses(atlas_, Use::DepthReadWrite)}, [&](VkCommandBuffer cmd) {
         beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
