@@ -239,7 +239,8 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
 // technique without the sun's shadow and with it (4 cascades of 2048 texels, the measure),
 // and lll with fewer cascades and other resolutions, each drawn by the hardware and by the compute
 // rasterizer (--shadow-raster); then the sun and K shadowed local lights (--shadows all, 512-texel
-// views): every technique at K = 16 and 64, lll at 1 and 256 (all of the atrium's lights).
+// views): every technique at K = 16 and 64, lll at 1 and 256 (all of the atrium's lights), and on a
+// GPU lll at 16 and 64 with the hardware drawing the local casters.
 std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   const uint32_t resolution = options.quick ? 256 : 2048;
@@ -264,14 +265,17 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   };
   add(registeredTechniques(), "none", 4, resolution);
   add(registeredTechniques(), "sun", 4, resolution);
-  const auto addLights = [&](const std::vector<std::string>& techniques, uint32_t lights) {
-    const std::string how = fmt::format("sun + {} shadowed light{}", lights, lights == 1 ? "" : "s");
+  const auto addLights = [&](const std::vector<std::string>& techniques, uint32_t lights,
+                             const std::string& raster = "auto") {
+    std::string how = fmt::format("sun + {} shadowed light{}", lights, lights == 1 ? "" : "s");
+    if (raster != "auto") how += ", " + raster + " raster";
     Scenario base = makeScenario("shadows", how, scene, size);
     base.settings.shadows = "all";
     base.settings.cascades = 4;
     base.settings.shadowResolution = resolution;
     base.settings.shadowLights = lights;
     base.settings.shadowLightResolution = options.quick ? 64 : 512;
+    base.settings.shadowRaster = raster;
     for (Scenario s : perTechnique(base, techniques, false)) {
       s.series = fmt::format("{}, {}", techniqueLabel(s.settings), how);
       out.push_back(s);
@@ -279,6 +283,9 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   };
   for (uint32_t lights : {16u, 64u}) addLights(registeredTechniques(), lights);
   for (uint32_t lights : {1u, 256u}) addLights({"lll"}, lights);
+  // Who draws the local lights' casters, where auto picks compute.
+  if (!options.cpuDevice)
+    for (uint32_t lights : {16u, 64u}) addLights({"lll"}, lights, "hardware");
   // On a CPU device the compute rows are left out: its storage buffers cannot hold the keys of the
   // larger atlases, and auto draws with the hardware there anyway.
   const std::vector<std::string> rasters = options.cpuDevice
