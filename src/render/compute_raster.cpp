@@ -34,12 +34,13 @@ std::string RasterWorkspace::problem(const Context& context, uint32_t width, uin
   return {};
 }
 
-RasterWorkspace::RasterWorkspace(Context& context, uint32_t width, uint32_t height, const std::string& name)
-    : width_(width), height_(height) {
+RasterWorkspace::RasterWorkspace(Context& context, uint32_t width, uint32_t height, const std::string& name,
+                                 uint32_t largeCapacity)
+    : width_(width), height_(height), largeCapacity_(largeCapacity) {
   constexpr VkBufferUsageFlags kCleared =
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   keys_ = Buffer(context, keyBytes(width, height), kCleared, MemoryUse::Device, name + "-keys");
-  large_ = Buffer(context, kLargeHeader + VkDeviceSize(kLargeCapacity) * sizeof(gpu::RasterTriangle),
+  large_ = Buffer(context, kLargeHeader + VkDeviceSize(largeCapacity_) * sizeof(gpu::RasterTriangle),
                   kCleared, MemoryUse::Device, name + "-large-triangles");
   binsPerRow_ = divideRoundingUp(width, kBinSize);
   binCount_ = binsPerRow_ * divideRoundingUp(height, kBinSize);
@@ -58,7 +59,7 @@ DescriptorWriter& RasterWorkspace::bind(DescriptorWriter& writer) const {
 }
 
 glm::uvec4 RasterWorkspace::largeParams(uint32_t largestOwnBox) const {
-  return glm::uvec4(kLargeCapacity, largestOwnBox, binsPerRow_, kBinCapacity);
+  return glm::uvec4(largeCapacity_, largestOwnBox, binsPerRow_, kBinCapacity);
 }
 
 void RasterWorkspace::clear(FrameGraph& graph) const {

@@ -31,9 +31,10 @@ namespace lll {
 // the visibility buffer's rasterizer and the sun's shadow casters' (shadows/shadow_raster.h).
 class RasterWorkspace {
  public:
-  static constexpr uint32_t kGroupSize = 64;         // the triangle passes' workgroup
-  static constexpr uint32_t kTileSize = 8;           // the resolve passes' workgroup is kTileSize^2
-  static constexpr uint32_t kLargeCapacity = 65536;  // listed large triangles; more are covered in place
+  static constexpr uint32_t kGroupSize = 64;  // the triangle passes' workgroup
+  static constexpr uint32_t kTileSize = 8;    // the resolve passes' workgroup is kTileSize^2
+  // Listed large triangles, by default; more are covered in place (by one thread each: slowly).
+  static constexpr uint32_t kLargeCapacity = 65536;
   // A triangle whose bounding box has more pixels than this goes to the per-pixel pass. Chosen by
   // measurement on the H200 (bench/README.md): one thread loops over its box, so a large box keeps
   // its SIMD group waiting.
@@ -46,7 +47,9 @@ class RasterWorkspace {
                              const std::string& what);
 
   RasterWorkspace() = default;
-  RasterWorkspace(Context& context, uint32_t width, uint32_t height, const std::string& name);
+  // `largeCapacity`: how many large triangles the list holds (an atlas of many views needs more).
+  RasterWorkspace(Context& context, uint32_t width, uint32_t height, const std::string& name,
+                  uint32_t largeCapacity = kLargeCapacity);
 
   // Bindings 22 (keys), 23 (large triangles), 24 (depth) and 25 (bins).
   DescriptorWriter& bind(DescriptorWriter& writer) const;
@@ -69,6 +72,7 @@ class RasterWorkspace {
   Buffer large_;  // count, then RasterTriangle entries
   Buffer bins_;   // per 32x32-pixel bin: its count of large triangles, then their slots
   Buffer depth_;  // float per pixel, copied into the depth image
+  uint32_t largeCapacity_ = kLargeCapacity;
   uint32_t binsPerRow_ = 0;
   uint32_t binCount_ = 0;
 };
