@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 
+#include "particle_test_support.h"
 #include "render/settings.h"
 #include "scene/errors.h"
 #include "scene/lights.h"
@@ -174,6 +175,28 @@ TEST(LocalShadows, MatchForwardInEveryTechnique) {
                                                                       : test::kSameImage;
     test::expectWithinBound(test::render(scene, settings).ldr, ownGbuffer ? onGbuffer.ldr : onVisibility.ldr,
                             bound, std::string("light-shadowed atrium ") + technique);
+  }
+}
+
+// Smoke scatters the shadowed lights as forward does (particles/scattering.glsl: the shadow at the
+// particle), per pixel and once per particle.
+TEST(LocalShadows, ShadowTheSmokeAsForwardDoes) {
+  const Scene scene = loadScene(SceneRequest{"atrium", 0, 1});
+  for (const char* lighting : {"pixel", "vertex"}) {
+    RenderSettings settings;
+    settings.width = 128;
+    settings.height = 72;
+    settings.particles = "smoke";
+    settings.particleCount = 1024;
+    settings.particleLighting = lighting;
+    settings.shadows = "all";
+    settings.shadowLights = 16;
+    const test::ParticleFrame forward =
+        test::renderParticles(scene, test::reference(settings), test::kSmokeSteps);
+    settings.technique = "lll";
+    const test::ParticleFrame lll = test::renderParticles(scene, settings, test::kSmokeSteps);
+    test::expectWithinBound(lll.image.ldr, forward.image.ldr, test::kSmokeBound,
+                            std::string("light-shadowed smoke ") + lighting + "-lit");
   }
 }
 
