@@ -10,6 +10,11 @@ LLL_NAMESPACE_BEGIN
 LLL_CONST(uint, kMaxCascades, 4u);
 // Cascades sit in the shadow atlas in rows of this many cells, each shadowResolution square.
 LLL_CONST(uint, kCascadeColumns, 2u);
+// Lookup biases of every shadow map (SunShadow::bias, LocalShadowView::params): the normal offset in
+// texels, the slope bias in texels per unit of tan(theta) (2: the PCF taps reach the surface up to
+// 2 texels away, whose depth differs by that much).
+LLL_CONST(float, kShadowNormalOffsetTexels, 1.0f);
+LLL_CONST(float, kShadowSlopeBiasTexels, 2.0f);
 // The most local lights (--shadow-lights) that may cast each frame.
 LLL_CONST(uint, kMaxShadowLights, 1024u);
 LLL_CONST(uint, kShadowFilterNone, 0u);  // one texel, nearest: edges where geometry puts them

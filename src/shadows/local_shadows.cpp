@@ -18,9 +18,6 @@ namespace lll {
 
 namespace {
 
-// Lookup biases (LocalShadowView::params), as the sun's (sun_shadows.cpp).
-constexpr float kNormalOffsetTexels = 1.0f;
-constexpr float kSlopeBiasTexels = 2.0f;
 // Texels of margin on each side of a view, so the filter's taps near its edge read real depths.
 constexpr float kMarginTexels = 2.0f;
 // The near plane, as a share of the light's range (at least kNearest metres).
@@ -234,8 +231,8 @@ void LocalShadows::update(const gpu::FrameUniforms& frame) {
       out.cell = glm::vec4(float(x) / float(atlasWidth_), float(y) / float(atlasHeight_),
                            float(size) / float(atlasWidth_), float(size) / float(atlasHeight_));
       // A texel's world size per unit of distance along the view: its width at distance 1 over its texels.
-      out.params = glm::vec4(2.0f * lightViews[f].tanHalf / float(size), kNormalOffsetTexels,
-                             kSlopeBiasTexels, 1.0f / float(size));
+      out.params = glm::vec4(2.0f * lightViews[f].tanHalf / float(size), gpu::kShadowNormalOffsetTexels,
+                             gpu::kShadowSlopeBiasTexels, 1.0f / float(size));
       out.config = glm::uvec4(options_.filter, 0u, 0u, 0u);
       drawn.push_back(
           {lightViews[f].viewProj, x, y, size, glm::vec4(lights[light].position, lights[light].range)});
@@ -249,62 +246,25 @@ void LocalShadows::update(const gpu::FrameUniforms& frame) {
 }
 
 void LocalShadows::record(FrameContext& frame) {
-  constexpr VkPipelineStageFlags2 kReaders = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   if (!changes_.empty()) {
     // The light array is otherwise written once, at load: every pass reads it without declaring
     // it, so the barriers around the rewrite are explicit. Before: the last frame's reads.
     frame.graph.step({}, [&](VkCommandBuffer cmd) {
-      VkMemoryBarrier2 before{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-      before.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-      before.srcAccessMask = VK_ACCESS_2_MEMORY_READ_BIT;
-      before.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-      before.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-      VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-      dependency.memoryBarrierCount = 1;
-      dependency.pMemoryBarriers = &before;
-      vkCmdPipelineBarrier2(cmd, &dependency);
+      memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT,
+                    VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
       const VkBuffer lights = frame.scene.lightBuffer().handle();
       for (const auto& [light, value] : changes_)
         vkCmdUpdateBuffer(cmd, lights,
                           VkDeviceSize(light) * sizeof(gpu::GpuLight) + offsetof(gpu::GpuLight, spotParams) +
                               3 * sizeof(float),
                           sizeof(float), &value);
-      VkMemoryBarrier2 after{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-      after.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-      after.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-      after.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-      after.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT;
-      dependency.pMemoryBarriers = &after;
-      vkCmdPipelineBarrier2(cmd, &dependency);
+      // After: every reader of the frame.
+      memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
     });
     changes_.clear();  // written: a frame recorded again has nothing to rewrite
   }
-  const auto clearOrDraw = [&](VkCommandBuffer cmd) {
-    beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
-                   VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
-    if (viewsDrawn_ > 0) {
-      casters_->draw(frame, cmd, AlphaMode::Opaque);
-      casters_->draw(frame, cmd, AlphaMode::Mask);
-    }
-    vkCmdEndRendering(cmd);
-  };
-  if (viewsDrawn_ == 0) {
-    frame.graph.step({uses(atlas_, Use::DepthWrite)}, clearOrDraw);
-  } else if (!computeRaster_) {
-    frame.graph.pass("shadow-lights", {uses(atlas_, Use::DepthWrite)}, clearOrDraw);
-  } else {
-    computeRaster_->record(frame, atlas_);
-    if (casters_->hasMasked())
-      frame.graph.pass("shadow-lights-masked", {uses(atlas_, Use::DepthReadWrite)}, [&](VkCommandBuffer cmd) {
-        beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
-                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, false);
-        casters_->draw(frame, cmd, AlphaMode::Mask);
-        vkCmdEndRendering(cmd);
-      });
-  }
-  frame.graph.step({uses(atlas_, Use::Sampled, kReaders)}, [](VkCommandBuffer) {});
+  recordShadowAtlas(frame, "shadow-lights", atlas_, viewsDrawn_ > 0, casters_.get(), computeRaster_.get());
 }
 
 void LocalShadows::bind(DescriptorWriter& writer) const {

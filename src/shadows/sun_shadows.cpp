@@ -24,11 +24,8 @@ namespace {
 // first few percent of the view.
 constexpr float kLogarithmicShare = 0.75f;
 constexpr float kLogarithmicStart = 0.01f;
-// Lookup biases (SunShadow::bias): the normal offset in texels, the slope bias in texels per unit
-// of tan(theta) (2: the PCF taps reach the surface up to 2 texels away, whose depth differs by
-// that much), a constant bias in world units per unit of the scene's depth range.
-constexpr float kNormalOffsetTexels = 1.0f;
-constexpr float kSlopeBiasTexels = 2.0f;
+// The constant lookup bias in world units per unit of the scene's depth range (the others are
+// every shadow map's: shared/shadow_types.h).
 constexpr float kConstantBiasShare = 1e-4f;
 
 // The smallest sphere around the slice of a symmetric frustum between view depths d0 and d1, as a
@@ -121,8 +118,8 @@ gpu::SunShadow fitSunCascades(const gpu::FrameUniforms& frame, const glm::vec3& 
     out.texelWorld[c] = texel;
     previous = split;
   }
-  out.bias = glm::vec4(kNormalOffsetTexels, kSlopeBiasTexels, kConstantBiasShare * (farthest - closest),
-                       farthest - closest);
+  out.bias = glm::vec4(gpu::kShadowNormalOffsetTexels, gpu::kShadowSlopeBiasTexels,
+                       kConstantBiasShare * (farthest - closest), farthest - closest);
   const float columns = float(std::min(count, gpu::kCascadeColumns));
   const float rows = float((count + gpu::kCascadeColumns - 1) / gpu::kCascadeColumns);
   out.atlas = glm::vec4(1.0f / resolution, resolution, 1.0f / columns, 1.0f / rows);
@@ -201,34 +198,7 @@ void SunShadows::update(const gpu::FrameUniforms& frame, const Bounds& sceneBoun
 }
 
 void SunShadows::record(FrameContext& frame) {
-  constexpr VkPipelineStageFlags2 kReaders = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-  const auto clearOrDraw = [&](VkCommandBuffer cmd) {
-    beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
-                   VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true);
-    if (data_.config.x > 0) {
-      casters_->draw(frame, cmd, AlphaMode::Opaque);
-      casters_->draw(frame, cmd, AlphaMode::Mask);
-    }
-    vkCmdEndRendering(cmd);
-  };
-  if (data_.config.x == 0) {
-    frame.graph.step({uses(atlas_, Use::DepthWrite)}, clearOrDraw);
-  } else if (!computeRaster_) {
-    frame.graph.pass("shadow-sun", {uses(atlas_, Use::DepthWrite)}, clearOrDraw);
-  } else {
-    computeRaster_->record(frame, atlas_);
-    if (casters_->hasMasked())
-      frame.graph.pass("shadow-sun-masked", {uses(atlas_, Use::DepthReadWrite)}, [&](VkCommandBuffer cmd) {
-        beginRendering(cmd, atlasWidth_, atlasHeight_, {}, atlas_.view(),
-                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, false);
-        casters_->draw(frame, cmd, AlphaMode::Mask);
-        vkCmdEndRendering(cmd);
-      });
-  }
-  // Every later pass may read it, in any shader stage: one transition here covers them all.
-  frame.graph.step({uses(atlas_, Use::Sampled, kReaders)}, [](VkCommandBuffer) {});
+  recordShadowAtlas(frame, "shadow-sun", atlas_, data_.config.x > 0, casters_.get(), computeRaster_.get());
 }
 
 void SunShadows::bind(DescriptorWriter& writer) const {
