@@ -54,6 +54,7 @@ TEST(LocalShadowImportance, FollowsScreenCoverageAndIntensity) {
   EXPECT_FLOAT_EQ(shadowImportance(spot({0, 0, -2}, 10.0f), kFrame), 10.0f) << "the camera inside its reach";
   Light box = makeBoxLight({0, 0, -5}, {1, 0, 0}, {0, 1, 0}, glm::vec3(1.0f), glm::vec3(1.0f), 10.0f);
   EXPECT_EQ(shadowImportance(box, kFrame), 0.0f) << "box lights cast no shadow";
+  EXPECT_EQ(shadowImportance(spot({0, 0, -20}, 10.0f, 1e30f), kFrame), 0.0f) << "no finite view";
 }
 
 // A light record starts with no shadow views (spotParams.w 0): only the frames' choices give it some,

@@ -67,7 +67,9 @@ bool castsThroughCube(const Light& light) {
 float shadowImportance(const Light& light, const gpu::FrameUniforms& frame) {
   if (light.type != LightType::Point && light.type != LightType::Spot) return 0.0f;
   const float power = light.intensity * (light.color.r + light.color.g + light.color.b) / 3.0f;
-  if (!(power > 0.0f) || !(light.range > 0.0f)) return 0.0f;
+  // A reach beyond kFarthestShadow has no finite view (its near plane times its far one overflows).
+  if (!(power > 0.0f) || !(light.range > 0.0f) || !(light.range <= kFarthestShadow)) return 0.0f;
+  if (!std::isfinite(light.position.x + light.position.y + light.position.z)) return 0.0f;
   const glm::vec3 c = glm::vec3(frame.view * glm::vec4(light.position, 1.0f));
   const float r = light.range, depth = -c.z;
   const float tanX = frame.depthParams.z, tanY = frame.depthParams.w;

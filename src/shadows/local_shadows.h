@@ -48,6 +48,8 @@ struct RenderSettings;
 
 // A light that cast last frame keeps casting unless another scores this many times more.
 inline constexpr float kKeepShadow = 1.5f;
+// Lights that reach farther than this (metres) cast no shadow.
+inline constexpr float kFarthestShadow = 1e15f;
 // Spots wider than this (outer cone angle, radians: 60 degrees) cast through a cube, as points do.
 inline constexpr float kWidestShadowCone = 1.0471976f;
 
