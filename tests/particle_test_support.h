@@ -63,6 +63,23 @@ inline bool alive(const gpu::Particle& p) {
   return p.positionAge.w >= 0.0f && p.positionAge.w < p.velocityLifetime.w;
 }
 
+// Settled smoke (1,024 particles, 128x72) in `scene`, lit per pixel and once per particle, by lll
+// against forward's reference (test_support.h) within kSmokeBound; `settings` carries the rest
+// (suns, shadows), `label` names the comparison.
+inline void expectSmokeLitAsForward(const Scene& scene, RenderSettings settings, const std::string& label) {
+  settings.width = 128;
+  settings.height = 72;
+  settings.particles = "smoke";
+  settings.particleCount = 1024;
+  for (const char* lighting : {"pixel", "vertex"}) {
+    settings.particleLighting = lighting;
+    const ParticleFrame forward = renderParticles(scene, reference(settings), kSmokeSteps);
+    settings.technique = "lll";
+    const ParticleFrame lll = renderParticles(scene, settings, kSmokeSteps);
+    expectWithinBound(lll.image.ldr, forward.image.ldr, kSmokeBound, label + " " + lighting + "-lit");
+  }
+}
+
 inline Material greyMaterial(const char* name, float grey) {
   Material m;
   m.name = name;

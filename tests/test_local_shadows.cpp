@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 
+#include "camera_uniforms.h"
 #include "particle_test_support.h"
 #include "render/settings.h"
 #include "scene/errors.h"
@@ -20,13 +21,7 @@
 namespace lll {
 namespace {
 
-gpu::FrameUniforms cameraAt(glm::vec3 eye, glm::vec3 target, float near = 0.01f, float far = 100.0f) {
-  gpu::FrameUniforms u{};
-  u.view = glm::lookAt(eye, target, glm::vec3(0.0f, 1.0f, 0.0f));
-  const float tanHalf = std::tan(0.5f), aspect = 16.0f / 9.0f;
-  u.depthParams = glm::vec4(near, far, tanHalf * aspect, tanHalf);
-  return u;
-}
+using test::cameraAt;
 
 Light spot(glm::vec3 position, float intensity, float range = 5.0f) {
   Light light;
@@ -173,23 +168,10 @@ TEST(LocalShadows, MatchForwardInEveryTechnique) {
 // Smoke scatters the shadowed lights as forward does (particles/scattering.glsl: the shadow at the
 // particle), per pixel and once per particle.
 TEST(LocalShadows, ShadowTheSmokeAsForwardDoes) {
-  const Scene scene = loadScene(SceneRequest{"atrium", 0, 1});
-  for (const char* lighting : {"pixel", "vertex"}) {
-    RenderSettings settings;
-    settings.width = 128;
-    settings.height = 72;
-    settings.particles = "smoke";
-    settings.particleCount = 1024;
-    settings.particleLighting = lighting;
-    settings.shadows = "all";
-    settings.shadowLights = 16;
-    const test::ParticleFrame forward =
-        test::renderParticles(scene, test::reference(settings), test::kSmokeSteps);
-    settings.technique = "lll";
-    const test::ParticleFrame lll = test::renderParticles(scene, settings, test::kSmokeSteps);
-    test::expectWithinBound(lll.image.ldr, forward.image.ldr, test::kSmokeBound,
-                            std::string("light-shadowed smoke ") + lighting + "-lit");
-  }
+  RenderSettings settings;
+  settings.shadows = "all";
+  settings.shadowLights = 16;
+  test::expectSmokeLitAsForward(loadScene(SceneRequest{"atrium", 0, 1}), settings, "light-shadowed smoke");
 }
 
 // The casters drawn by the compute rasterizer (shadows/shadow_raster.h) give the hardware pass's

@@ -98,21 +98,7 @@ TEST(Sun, ComputeRasterizedShadowsMatchTheHardwares) {
 // Smoke scatters the sun as it scatters a point light (particles/scattering.glsl), per pixel and
 // once per particle.
 TEST(Sun, LightsTheSmokeAsForwardDoes) {
-  const Scene scene = sunlitAtrium();
-  for (const char* lighting : {"pixel", "vertex"}) {
-    RenderSettings settings;
-    settings.width = 128;
-    settings.height = 72;
-    settings.particles = "smoke";
-    settings.particleCount = 1024;
-    settings.particleLighting = lighting;
-    const test::ParticleFrame forward =
-        test::renderParticles(scene, test::reference(settings), test::kSmokeSteps);
-    settings.technique = "lll";
-    const test::ParticleFrame lll = test::renderParticles(scene, settings, test::kSmokeSteps);
-    test::expectWithinBound(lll.image.ldr, forward.image.ldr, test::kSmokeBound,
-                            std::string("sunlit smoke ") + lighting + "-lit");
-  }
+  test::expectSmokeLitAsForward(sunlitAtrium(), RenderSettings{}, "sunlit smoke");
 }
 
 // --sun is checked like every other option.

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "camera_uniforms.h"
 #include "render/settings.h"
 #include "scene/errors.h"
 #include "shadows/sun_shadows.h"
@@ -14,14 +15,7 @@
 namespace lll {
 namespace {
 
-// A camera's frame uniforms as the renderer fills the fields the fitting reads.
-gpu::FrameUniforms cameraAt(glm::vec3 eye, glm::vec3 target, float near = 0.01f, float far = 60.0f) {
-  gpu::FrameUniforms u{};
-  u.view = glm::lookAt(eye, target, glm::vec3(0.0f, 1.0f, 0.0f));
-  const float tanHalf = std::tan(0.5f), aspect = 16.0f / 9.0f;
-  u.depthParams = glm::vec4(near, far, tanHalf * aspect, tanHalf);
-  return u;
-}
+using test::cameraAt;
 
 Bounds sceneBox() {
   Bounds b;

@@ -5,6 +5,12 @@
 #include "shared/gpu_types.h"
 #ifndef LLL_NO_LOCAL_SHADOWS
 #include "common/local_shadow.glsl"
+#else
+// A pass that defines LLL_NO_LOCAL_SHADOWS (bench/alu_probe.comp) binds no shadow atlas.
+const bool kLocalShadows = false;
+float localShadow(GpuLight light, vec3 position, vec3 normal, vec3 l, float distance) {
+  return 1.0;
+}
 #endif
 
 const float kPi = 3.14159265358979;
@@ -127,10 +133,8 @@ float lightAttenuation(GpuLight light, vec3 toLight, vec3 l, float distance) {
 // where the light reaches and the surface faces it (`normal` zero: a particle, which always does).
 float shadowedAttenuation(GpuLight light, vec3 position, vec3 normal, vec3 toLight, vec3 l, float distance) {
   float attenuation = lightAttenuation(light, toLight, l, distance);
-#ifndef LLL_NO_LOCAL_SHADOWS
   if (kLocalShadows && attenuation > 0.0 && dot(normal, l) >= 0.0)
     attenuation *= localShadow(light, position, normal, l, distance);
-#endif
   return attenuation;
 }
 

@@ -7,12 +7,10 @@
 #include <cmath>
 
 #include "gpu/context.h"
-#include "gpu/vk_check.h"
 #include "render/frame.h"
 #include "render/gpu_scene.h"
 #include "render/settings.h"
 #include "scene/errors.h"
-#include "shadows/shadow_raster.h"
 
 namespace lll {
 
@@ -133,14 +131,20 @@ LocalShadows::LocalShadows(Context& context, const GpuScene& scene, const LocalS
   spotSlots_ = std::min(options_.lights, singles);
   cubeSlots_ = std::min(options_.lights, cubes);
   const uint32_t views = spotSlots_ + 6 * cubeSlots_;
+  ShadowAtlasDesc atlas;
+  atlas.image = "light-shadow-atlas";
+  atlas.pass = "shadow-lights";
+  atlas.raster = options_.raster;
+  atlas.request = "--shadow-raster compute with --shadows all";
   if (casting()) {
     const uint32_t size = options_.resolution;
     const uint32_t largest = context.properties().limits.maxImageDimension2D;
     columns_ = std::max(1u, std::min(views, largest / size));
-    atlasWidth_ = columns_ * size;
-    atlasHeight_ = (views + columns_ - 1) / columns_ * size;
-    const double bytes = 4.0 * atlasWidth_ * atlasHeight_;
-    if (atlasHeight_ > largest || bytes > kMostAtlasBytes) {
+    atlas.width = columns_ * size;
+    atlas.height = (views + columns_ - 1) / columns_ * size;
+    atlas.maxViews = views;
+    const double bytes = 4.0 * atlas.width * atlas.height;
+    if (atlas.height > largest || bytes > kMostAtlasBytes) {
       // The most lights that fit, if every one chosen were of the larger kind the scene has.
       const double fitViews =
           std::min(double(largest / size) * double(largest / size), kMostAtlasBytes / (4.0 * size * size));
@@ -149,39 +153,15 @@ LocalShadows::LocalShadows(Context& context, const GpuScene& scene, const LocalS
           "--shadow-lights {} at --shadow-light-resolution {}: {} shadow views need a {}x{} depth atlas "
           "({:.0f} MiB); this device's largest image is {} on a side and the atlas may take at most {:.0f} "
           "MiB: at most {} lights fit at this resolution",
-          options_.lights, size, views, atlasWidth_, atlasHeight_, bytes / 1048576.0, largest,
+          options_.lights, size, views, atlas.width, atlas.height, bytes / 1048576.0, largest,
           kMostAtlasBytes / 1048576.0, uint32_t(fitViews) / perLight));
     }
   }
-  atlas_ = Image(context, atlasWidth_, atlasHeight_, VK_FORMAT_D32_SFLOAT,
-                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                     VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // the compute rasterizer's copy
-                 "light-shadow-atlas");
+  atlas_ = ShadowAtlas(context, scene, atlas);
   views_.assign(std::max(1u, views), gpu::LocalShadowView{});
   viewBuffer_ = Buffer(context, views_.size() * sizeof(gpu::LocalShadowView),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "light-shadow-views");
   viewBuffer_.upload(views_.data(), views_.size() * sizeof(gpu::LocalShadowView));
-  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = info.minFilter = VK_FILTER_LINEAR;
-  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.compareEnable = VK_TRUE;
-  info.compareOp = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse depth: lit where nearer the light than stored
-  VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &sampler_));
-  if (!casting()) return;
-  casters_ = std::make_unique<ShadowCasters>(context, scene);
-  // auto: compute where it fits, on a GPU, as the sun's (bench/README.md, "Shadows").
-  const std::string problem = ShadowRaster::problem(context, atlasWidth_, atlasHeight_);
-  if (options_.raster == "compute" && !problem.empty())
-    throw InputError(fmt::format("--shadow-raster compute with --shadows all: {}", problem));
-  if (options_.raster == "compute" ||
-      (options_.raster == "auto" && problem.empty() && !context.isCpuDevice()))
-    computeRaster_ =
-        std::make_unique<ShadowRaster>(context, scene, atlasWidth_, atlasHeight_, views, "shadow-lights");
-}
-
-LocalShadows::~LocalShadows() {
-  computeRaster_.reset();
-  vkDestroySampler(context_.device(), sampler_, nullptr);
 }
 
 void LocalShadows::update(const gpu::FrameUniforms& frame) {
@@ -208,17 +188,13 @@ void LocalShadows::update(const gpu::FrameUniforms& frame) {
     slot.index = next;
     kept[i] = slot;
   }
-  slots_ = std::move(kept);
   // The light records to rewrite: those whose views changed, and those that stopped casting.
-  std::unordered_map<uint32_t, float> wanted;
   for (const auto& [light, slot] : slots_)
-    wanted[light] = slot.cube ? -float(firstView(slot) + 1) : float(firstView(slot) + 1);
-  for (const auto& [light, value] : written_)
-    if (!wanted.count(light)) changes_.push_back({light, 0.0f});
-  for (const auto& [light, value] : wanted)
-    if (auto it = written_.find(light); it == written_.end() || it->second != value)
-      changes_.push_back({light, value});
-  written_ = std::move(wanted);
+    if (!kept.count(light)) changes_.push_back({light, 0.0f});
+  for (const auto& [light, slot] : kept)
+    if (auto it = slots_.find(light); it == slots_.end() || recordValue(it->second) != recordValue(slot))
+      changes_.push_back({light, recordValue(slot)});
+  slots_ = std::move(kept);
   // Each casting light's views, in its cells.
   std::fill(views_.begin(), views_.end(), gpu::LocalShadowView{});
   std::vector<ShadowView> drawn;
@@ -230,8 +206,8 @@ void LocalShadows::update(const gpu::FrameUniforms& frame) {
       const uint32_t x = v % columns_ * size, y = v / columns_ * size;
       gpu::LocalShadowView& out = views_[v];
       out.viewProj = lightViews[f].viewProj;
-      out.cell = glm::vec4(float(x) / float(atlasWidth_), float(y) / float(atlasHeight_),
-                           float(size) / float(atlasWidth_), float(size) / float(atlasHeight_));
+      const glm::vec2 atlasSize(atlas_.width(), atlas_.height());
+      out.cell = glm::vec4(glm::vec2(x, y) / atlasSize, glm::vec2(size) / atlasSize);
       // A texel's world size per unit of distance along the view: its width at distance 1 over its texels.
       out.params = glm::vec4(2.0f * lightViews[f].tanHalf / float(size), gpu::kShadowNormalOffsetTexels,
                              gpu::kShadowSlopeBiasTexels, 1.0f / float(size));
@@ -242,9 +218,7 @@ void LocalShadows::update(const gpu::FrameUniforms& frame) {
   }
   viewBuffer_.upload(views_.data(), views_.size() * sizeof(gpu::LocalShadowView));
   viewsDrawn_ = uint32_t(drawn.size());
-  if (computeRaster_) computeRaster_->setViews(drawn);
-  // The hardware draws the casters (all of them, or the alpha-masked ones after the compute pass).
-  if (!computeRaster_ || casters_->hasMasked()) casters_->cull(drawn);
+  atlas_.setViews(drawn);
 }
 
 void LocalShadows::record(FrameContext& frame) {
@@ -266,13 +240,12 @@ void LocalShadows::record(FrameContext& frame) {
     });
     changes_.clear();  // written: a frame recorded again has nothing to rewrite
   }
-  recordShadowAtlas(frame, "shadow-lights", atlas_, viewsDrawn_ > 0, casters_.get(), computeRaster_.get());
+  atlas_.record(frame);
 }
 
 void LocalShadows::bind(DescriptorWriter& writer) const {
-  writer.storage(28, viewBuffer_.handle())
-      .image(29, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, atlas_.view(),
-             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, sampler_);
+  writer.storage(28, viewBuffer_.handle());
+  atlas_.bind(writer, 29);
 }
 
 std::vector<uint32_t> LocalShadows::shadowed() const {
@@ -284,11 +257,11 @@ std::vector<uint32_t> LocalShadows::shadowed() const {
 std::vector<std::pair<std::string, double>> LocalShadows::stats() const {
   if (!casting()) return {{"light-shadows", 0.0}};
   return {{"light-shadows", double(slots_.size())},
-          {"light-shadow-compute-raster", computeRaster_ ? 1.0 : 0.0},
+          {"light-shadow-compute-raster", atlas_.computeRaster() ? 1.0 : 0.0},
           {"light-shadow-views", double(viewsDrawn_)},
-          {"light-shadow-casters", double(casters_->castersDrawn())},
+          {"light-shadow-casters", double(atlas_.castersDrawn())},
           {"light-shadow-resolution", double(options_.resolution)},
-          {"light-shadow_bytes", 4.0 * atlasWidth_ * atlasHeight_}};
+          {"light-shadow_bytes", atlas_.bytes()}};
 }
 
 }  // namespace lll

@@ -34,14 +34,13 @@
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "scene/scene.h"
-#include "shadows/shadow_casters.h"
+#include "shadows/shadow_atlas.h"
 #include "shared/gpu_types.h"
 #include "shared/shadow_types.h"
 
 namespace lll {
 
 class Context;
-class ShadowRaster;
 class GpuScene;
 struct FrameContext;
 struct RenderSettings;
@@ -89,7 +88,6 @@ class LocalShadows {
  public:
   // Throws InputError when the atlas for K lights does not fit this device's largest image.
   LocalShadows(Context& context, const GpuScene& scene, const LocalShadowOptions& options);
-  ~LocalShadows();
   LocalShadows(const LocalShadows&) = delete;
   LocalShadows& operator=(const LocalShadows&) = delete;
 
@@ -112,6 +110,10 @@ class LocalShadows {
     uint32_t index = 0;  // in its pool
   };
   uint32_t firstView(const Slot& slot) const { return slot.cube ? spotSlots_ + 6 * slot.index : slot.index; }
+  // The light record's spotParams.w for a light in `slot` (common/local_shadow.glsl).
+  float recordValue(const Slot& slot) const {
+    return slot.cube ? -float(firstView(slot) + 1) : float(firstView(slot) + 1);
+  }
 
   Context& context_;
   const GpuScene& scene_;
@@ -119,18 +121,12 @@ class LocalShadows {
   uint32_t spotSlots_ = 0;  // single views, first in the atlas
   uint32_t cubeSlots_ = 0;  // six views each, after them
   uint32_t columns_ = 1;
-  uint32_t atlasWidth_ = 1;
-  uint32_t atlasHeight_ = 1;
-  std::unordered_map<uint32_t, Slot> slots_;     // the casting lights and their slots
-  std::unordered_map<uint32_t, float> written_;  // spotParams.w on the GPU, where not 0
+  std::unordered_map<uint32_t, Slot> slots_;  // the casting lights and their slots
   // Writes not yet recorded (light, spotParams.w), in order: update() adds, record() writes them.
   std::vector<std::pair<uint32_t, float>> changes_;
   std::vector<gpu::LocalShadowView> views_;
   Buffer viewBuffer_;
-  Image atlas_;
-  VkSampler sampler_ = VK_NULL_HANDLE;
-  std::unique_ptr<ShadowCasters> casters_;
-  std::unique_ptr<ShadowRaster> computeRaster_;
+  ShadowAtlas atlas_;
   uint32_t viewsDrawn_ = 0;
 };
 

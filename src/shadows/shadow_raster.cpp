@@ -134,32 +134,4 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
   work_.copyDepth(frame.graph, atlas);
 }
 
-void recordShadowAtlas(FrameContext& frame, const std::string& name, const Image& atlas, bool drawing,
-                       const ShadowCasters* casters, const ShadowRaster* compute) {
-  constexpr VkPipelineStageFlags2 kReaders = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-  // The hardware's pass: every caster (`clear`), or the alpha-masked ones over the compute depth.
-  const auto drawCasters = [&](VkCommandBuffer cmd, bool clear) {
-    beginRendering(cmd, atlas.width(), atlas.height(), {}, atlas.view(),
-                   VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, clear);
-    if (drawing && clear) casters->draw(frame, cmd, AlphaMode::Opaque);
-    if (drawing) casters->draw(frame, cmd, AlphaMode::Mask);
-    vkCmdEndRendering(cmd);
-  };
-  if (!drawing) {
-    frame.graph.step({uses(atlas, Use::DepthWrite)}, [&](VkCommandBuffer cmd) { drawCasters(cmd, true); });
-  } else if (!compute) {
-    frame.graph.pass(name, {uses(atlas, Use::DepthWrite)},
-                     [&](VkCommandBuffer cmd) { drawCasters(cmd, true); });
-  } else {
-    compute->record(frame, atlas);
-    if (casters->hasMasked())
-      frame.graph.pass(name + "-masked", {uses(atlas, Use::DepthReadWrite)},
-                       [&](VkCommandBuffer cmd) { drawCasters(cmd, false); });
-  }
-  // Every later pass may read it, in any shader stage: one transition here covers them all.
-  frame.graph.step({uses(atlas, Use::Sampled, kReaders)}, [](VkCommandBuffer) {});
-}
-
 }  // namespace lll

@@ -31,15 +31,6 @@ class Context;
 class GpuScene;
 struct FrameContext;
 
-class ShadowRaster;
-
-// Draws a shadow atlas for the frame: the pass `name` (the hardware drawing every caster of the
-// views `casters` culled), or, with `compute`, its passes and then the alpha-masked casters by the
-// hardware (`name`-masked); an untimed clear when `drawing` is false. Leaves the atlas readable by
-// every shader stage for the rest of the frame.
-void recordShadowAtlas(FrameContext& frame, const std::string& name, const Image& atlas, bool drawing,
-                       const ShadowCasters* casters, const ShadowRaster* compute);
-
 class ShadowRaster {
  public:
   // Why `context`'s device cannot rasterize an atlas of width x height texels this way; empty

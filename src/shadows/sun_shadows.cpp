@@ -7,12 +7,10 @@
 #include <cmath>
 
 #include "gpu/context.h"
-#include "gpu/vk_check.h"
 #include "render/frame.h"
 #include "render/gpu_scene.h"
 #include "render/settings.h"
 #include "scene/errors.h"
-#include "shadows/shadow_raster.h"
 
 namespace lll {
 
@@ -132,47 +130,28 @@ SunShadows::SunShadows(Context& context, const GpuScene& scene, const SunShadowO
       scene_(scene),
       options_(options),
       sun_(shadowCastingSun(scene.scene().directionalLights)) {
+  ShadowAtlasDesc atlas;
+  atlas.image = "sun-shadow-atlas";
+  atlas.pass = "shadow-sun";
+  atlas.raster = options_.raster;
+  atlas.request = "--shadow-raster compute";
   if (casting()) {
     const uint32_t columns = std::min(options_.cascades, gpu::kCascadeColumns);
     const uint32_t rows = (options_.cascades + gpu::kCascadeColumns - 1) / gpu::kCascadeColumns;
-    atlasWidth_ = columns * options_.resolution;
-    atlasHeight_ = rows * options_.resolution;
+    atlas.width = columns * options_.resolution;
+    atlas.height = rows * options_.resolution;
+    atlas.maxViews = options_.cascades;
     const uint32_t largest = context.properties().limits.maxImageDimension2D;
-    if (atlasWidth_ > largest || atlasHeight_ > largest)
+    if (atlas.width > largest || atlas.height > largest)
       throw InputError(fmt::format(
           "--shadow-resolution {} with --cascades {}: the shadow atlas would be {}x{} texels; this device's "
           "largest image is {} on a side",
-          options_.resolution, options_.cascades, atlasWidth_, atlasHeight_, largest));
+          options_.resolution, options_.cascades, atlas.width, atlas.height, largest));
   }
-  atlas_ = Image(context, atlasWidth_, atlasHeight_, VK_FORMAT_D32_SFLOAT,
-                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                     VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // the compute rasterizer's copy
-                 "sun-shadow-atlas");
+  atlas_ = ShadowAtlas(context, scene, atlas);
   uniforms_ = Buffer(context, sizeof(gpu::SunShadow), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload,
                      "sun-shadow");
-  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = info.minFilter = VK_FILTER_LINEAR;
-  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.compareEnable = VK_TRUE;
-  info.compareOp = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse depth: lit where nearer the sun than stored
-  VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &sampler_));
   uniforms_.upload(&data_, sizeof(data_));
-  if (!casting()) return;
-
-  casters_ = std::make_unique<ShadowCasters>(context, scene);
-  // auto: compute where it fits, on a GPU (bench/README.md, "The sun's shadow").
-  const std::string problem = ShadowRaster::problem(context, atlasWidth_, atlasHeight_);
-  if (options_.raster == "compute" && !problem.empty())
-    throw InputError(fmt::format("--shadow-raster compute: {}", problem));
-  if (options_.raster == "compute" ||
-      (options_.raster == "auto" && problem.empty() && !context.isCpuDevice()))
-    computeRaster_ = std::make_unique<ShadowRaster>(context, scene, atlasWidth_, atlasHeight_,
-                                                    options_.cascades, "shadow-sun");
-}
-
-SunShadows::~SunShadows() {
-  computeRaster_.reset();
-  vkDestroySampler(context_.device(), sampler_, nullptr);
 }
 
 std::vector<ShadowView> SunShadows::views() const {
@@ -185,34 +164,28 @@ std::vector<ShadowView> SunShadows::views() const {
 }
 
 void SunShadows::update(const gpu::FrameUniforms& frame, const Bounds& sceneBounds) {
-  if (!casting() || !sceneBounds.valid()) {
-    data_ = gpu::SunShadow{};
-  } else {
-    data_ = fitSunCascades(frame, glm::vec3(frame.sunDirection[0]), sceneBounds, options_);
-    // The hardware draws the casters (all of them, or the alpha-masked ones after the compute pass).
-    const std::vector<ShadowView> cascades = views();
-    if (computeRaster_) computeRaster_->setViews(cascades);
-    if (!computeRaster_ || casters_->hasMasked()) casters_->cull(cascades);
-  }
+  data_ = casting() && sceneBounds.valid()
+              ? fitSunCascades(frame, glm::vec3(frame.sunDirection[0]), sceneBounds, options_)
+              : gpu::SunShadow{};
+  atlas_.setViews(views());
   uniforms_.upload(&data_, sizeof(data_));
 }
 
 void SunShadows::record(FrameContext& frame) {
-  recordShadowAtlas(frame, "shadow-sun", atlas_, data_.config.x > 0, casters_.get(), computeRaster_.get());
+  atlas_.record(frame);
 }
 
 void SunShadows::bind(DescriptorWriter& writer) const {
-  writer.storage(26, uniforms_.handle())
-      .image(27, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, atlas_.view(),
-             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, sampler_);
+  writer.storage(26, uniforms_.handle());
+  atlas_.bind(writer, 27);
 }
 
 std::vector<std::pair<std::string, double>> SunShadows::stats() const {
   if (!casting()) return {{"sun-shadow-cascades", 0.0}};
   return {{"sun-shadow-cascades", double(options_.cascades)},
-          {"sun-shadow-compute-raster", computeRaster_ ? 1.0 : 0.0},
+          {"sun-shadow-compute-raster", atlas_.computeRaster() ? 1.0 : 0.0},
           {"sun-shadow-resolution", double(options_.resolution)},
-          {"sun-shadow_bytes", 4.0 * atlasWidth_ * atlasHeight_}};
+          {"sun-shadow_bytes", atlas_.bytes()}};
 }
 
 }  // namespace lll

@@ -26,12 +26,10 @@
 #include <utility>
 #include <vector>
 
-#include <memory>
-
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "scene/scene.h"
-#include "shadows/shadow_casters.h"
+#include "shadows/shadow_atlas.h"
 #include "shared/gpu_types.h"
 #include "shared/shadow_types.h"
 
@@ -39,7 +37,6 @@ namespace lll {
 
 class Context;
 class GpuScene;
-class ShadowRaster;
 struct FrameContext;
 struct RenderSettings;
 
@@ -68,7 +65,6 @@ class SunShadows {
  public:
   // Throws InputError when the atlas would exceed the device's largest image.
   SunShadows(Context& context, const GpuScene& scene, const SunShadowOptions& options);
-  ~SunShadows();
   SunShadows(const SunShadows&) = delete;
   SunShadows& operator=(const SunShadows&) = delete;
 
@@ -94,14 +90,9 @@ class SunShadows {
   const GpuScene& scene_;
   SunShadowOptions options_;
   int sun_ = -1;
-  uint32_t atlasWidth_ = 1;
-  uint32_t atlasHeight_ = 1;
   gpu::SunShadow data_{};
   Buffer uniforms_;
-  Image atlas_;
-  VkSampler sampler_ = VK_NULL_HANDLE;
-  std::unique_ptr<ShadowRaster> computeRaster_;  // --shadow-raster compute (or auto's choice)
-  std::unique_ptr<ShadowCasters> casters_;       // the hardware's: all casters, or the alpha-masked ones
+  ShadowAtlas atlas_;
 };
 
 }  // namespace lll
