@@ -181,14 +181,25 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
 // both rasterizers at 1, 2, 4 cascades and half and double resolution (a CPU device runs the
 // hardware rows alone); the sun and K local lights' shadows, every technique at K = 16 and 64, lll
 // at 1 and 256, and lll at 16 and 64 with the hardware drawing the local casters (not on a CPU
+// device); then the measure on the atrium lit by spots alone: lll without shadows, with the
+// sun's, and with the sun and 16 or 64 shadowed spots (64 also drawn by the hardware, not on a CPU
 // device).
 TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) {
   const auto full = buildSuite("shadows", SuiteOptions{});
   const size_t techniques = lll::techniques().size();
-  ASSERT_EQ(full.size(), 4 * techniques + 2 * 5 + 2 + 2);
+  ASSERT_EQ(full.size(), 4 * techniques + 2 * 5 + 2 + 2 + 5);
   std::map<std::string, int> byRaster;
   std::map<uint32_t, int> byLights;
+  std::vector<std::string> spotRows;
   for (const Scenario& s : full) {
+    if (s.scene.scene == "atrium-spots") {
+      EXPECT_EQ(s.settings.technique, "lll");
+      EXPECT_EQ(s.scene.suns.size(), 1u);
+      spotRows.push_back(s.settings.shadows == "all"
+                             ? fmt::format("{} {}", s.settings.shadowLights, s.settings.shadowRaster)
+                             : s.settings.shadows);
+      continue;
+    }
     EXPECT_EQ(s.scene.scene, "atrium");
     ASSERT_EQ(s.scene.suns.size(), 1u) << s.name;
     EXPECT_EQ(s.settings.width, 1920u);
@@ -215,8 +226,9 @@ TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) 
   EXPECT_EQ(byRaster["compute"], 5);
   EXPECT_EQ(byLights,
             (std::map<uint32_t, int>{{1, 1}, {16, int(techniques)}, {64, int(techniques)}, {256, 1}}));
+  EXPECT_EQ(spotRows, (std::vector<std::string>{"none", "sun", "16 auto", "64 auto", "64 hardware"}));
   const auto cpu = buildSuite("shadows", SuiteOptions{.cpuDevice = true});
-  EXPECT_EQ(cpu.size(), 4 * techniques + 5 + 2);
+  EXPECT_EQ(cpu.size(), 4 * techniques + 5 + 2 + 4);
   for (const Scenario& s : cpu) EXPECT_NE(s.settings.shadowRaster, "compute") << s.name;
 }
 

@@ -237,6 +237,31 @@ TEST(BuiltinScenes, ListsTheDefaultFirstAndEveryNameOnce) {
   for (const BuiltinSceneInfo& info : builtinScenes()) EXPECT_FALSE(info.description.empty()) << info.name;
 }
 
+// The shadowed-spots benchmark's scene: the atrium's lights where they were, every one a spot, the
+// former point lights shining straight down with their colours, ranges and intensities.
+TEST(BuiltinScenes, AtriumSpotsIsTheAtriumLitBySpotsOnly) {
+  const Scene& atrium = builtScene("atrium");
+  const Scene& spots = builtScene("atrium-spots");
+  EXPECT_EQ(spots.vertices.size(), atrium.vertices.size());
+  ASSERT_EQ(spots.lights.size(), atrium.lights.size());
+  for (size_t i = 0; i < spots.lights.size(); ++i) {
+    const Light& a = atrium.lights[i];
+    const Light& s = spots.lights[i];
+    ASSERT_EQ(s.type, LightType::Spot) << i;
+    EXPECT_EQ(s.position, a.position) << i;
+    EXPECT_EQ(s.color, a.color) << i;
+    EXPECT_EQ(s.range, a.range) << i;
+    EXPECT_EQ(s.intensity, a.intensity) << i;
+    if (a.type == LightType::Point) {
+      EXPECT_EQ(s.direction, glm::vec3(0.0f, -1.0f, 0.0f)) << i;
+      EXPECT_LT(s.innerConeAngle, s.outerConeAngle) << i;
+      EXPECT_LE(s.outerConeAngle, glm::radians(60.0f)) << i << ": one shadow view, not a cube";
+    } else {
+      EXPECT_EQ(s.direction, a.direction) << i;
+    }
+  }
+}
+
 TEST(BuiltinScenes, UnknownNamesGiveNothing) {
   EXPECT_FALSE(makeBuiltinScene("").has_value());
   EXPECT_FALSE(makeBuiltinScene("sponza").has_value());

@@ -242,6 +242,7 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
 // views): every technique at K = 16 and 64, lll at 1 and 256 (all of the atrium's lights), and on a
 // GPU lll at 16 and 64 with the hardware drawing the local casters.
 std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
+  constexpr const char* kSpotsScene = "atrium-spots";
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   const uint32_t resolution = options.quick ? 256 : 2048;
   SceneRequest scene{kDefaultSceneName, 0, 1};
@@ -266,10 +267,12 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   add(registeredTechniques(), "none", 4, resolution);
   add(registeredTechniques(), "sun", 4, resolution);
   const auto addLights = [&](const std::vector<std::string>& techniques, uint32_t lights,
-                             const std::string& raster = "auto") {
-    std::string how = fmt::format("sun + {} shadowed light{}", lights, lights == 1 ? "" : "s");
+                             const std::string& raster = "auto", const SceneRequest* spots = nullptr) {
+    const SceneRequest& where = spots ? *spots : scene;
+    std::string how = fmt::format("sun + {} shadowed {}{}", lights,
+                                  where.scene == kSpotsScene ? "spot" : "light", lights == 1 ? "" : "s");
     if (raster != "auto") how += ", " + raster + " raster";
-    Scenario base = makeScenario("shadows", how, scene, size);
+    Scenario base = makeScenario("shadows", how, where, size);
     base.settings.shadows = "all";
     base.settings.cascades = 4;
     base.settings.shadowResolution = resolution;
@@ -286,6 +289,23 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   // Who draws the local lights' casters, where auto picks compute.
   if (!options.cpuDevice)
     for (uint32_t lights : {16u, 64u}) addLights({"lll"}, lights, "hardware");
+  // The measure, the sun and 64 shadowed spots: the atrium with its lights turned into spots,
+  // against the same scene without shadows and with the sun's alone.
+  SceneRequest spots = scene;
+  spots.scene = kSpotsScene;
+  for (const char* shadows : {"none", "sun"}) {
+    Scenario base =
+        makeScenario("shadows", shadows == std::string("none") ? "no shadow" : "sun", spots, size);
+    base.settings.shadows = shadows;
+    base.settings.cascades = 4;
+    base.settings.shadowResolution = resolution;
+    for (Scenario s : perTechnique(base, {"lll"}, false)) {
+      s.series = fmt::format("{}, {}, {}", techniqueLabel(s.settings), kSpotsScene, base.name);
+      out.push_back(s);
+    }
+  }
+  for (uint32_t lights : {16u, 64u}) addLights({"lll"}, lights, "auto", &spots);
+  if (!options.cpuDevice) addLights({"lll"}, 64, "hardware", &spots);
   // On a CPU device the compute rows are left out: its storage buffers cannot hold the keys of the
   // larger atlases, and auto draws with the hardware there anyway.
   const std::vector<std::string> rasters = options.cpuDevice

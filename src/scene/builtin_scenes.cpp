@@ -28,6 +28,23 @@ Scene makeAtrium() {
   return scene;
 }
 
+// The atrium with every light a spot: its point lights turned into downlights (each shining straight
+// down, 35 to 50 degrees), beside its six gallery spots. The bench's scene for many shadowed spots
+// (issue 14's measure: the sun and 64 shadowed spots), where each spot is one shadow view rather
+// than a point light's six.
+Scene makeAtriumSpots() {
+  Scene scene = makeAtrium();
+  scene.name = "atrium-spots";
+  for (Light& light : scene.lights) {
+    if (light.type != LightType::Point) continue;
+    light.type = LightType::Spot;
+    light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    light.innerConeAngle = glm::radians(35.0f);
+    light.outerConeAngle = glm::radians(50.0f);
+  }
+  return scene;
+}
+
 // The i-th element of the van der Corput sequence in `base`: evenly spread, and the same
 // everywhere, unlike a random generator's output.
 float radicalInverse(uint32_t i, uint32_t base) {
@@ -122,6 +139,10 @@ const BuiltinEntry kBuiltinScenes[] = {
      "two-storey arcaded courtyard, 30 m x 14 m, with banners, glass and bronze; 104 coloured point lights "
      "and 6 spots (the default)",
      makeAtrium},
+    {"atrium-spots",
+     "the atrium with its 104 point lights turned into downlights: 110 spot lights (the shadowed-spots "
+     "benchmark)",
+     makeAtriumSpots},
     {"threel16", "ThreeL benchmark: the atrium lit by 16 coloured lights that each reach the whole scene",
      [] { return makeThreeL(16); }},
     {"threel256", "ThreeL benchmark: the atrium lit by 256 coloured lights that each reach the whole scene",
