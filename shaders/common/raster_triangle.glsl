@@ -261,14 +261,15 @@ uint rasterTileClass(RasterTriangle t, ivec2 lo, ivec2 hi) {
 // The per-pixel pass: the nearest key at `pixel` of an image `size` pixels large, from the first
 // pass's key and the large triangles listed in its 32x32-pixel bin (all of them when the bin's list
 // overflowed), walked in batches held in shared memory by the 8x8 workgroup, each triangle first
-// placed against the tile (rasterTileClass). Every invocation of the workgroup must call it.
-uint64_t rasterNearest(ivec2 pixel, ivec2 size) {
-  bool inImage = all(lessThan(pixel, size));
-  ivec2 tileLo = ivec2(gl_WorkGroupID.xy) * 8, tileHi = tileLo + 7;
+// placed against the tile (rasterTileClass). Every invocation of the workgroup must call it, with
+// the same `tileLo`: the first pixel of the workgroup's 8x8 tile, a multiple of 8 (a tile lies in
+// one bin). `inside`: whether `pixel` is one to resolve (its key is read).
+uint64_t rasterNearest(ivec2 pixel, ivec2 tileLo, bool inside, ivec2 size) {
+  ivec2 tileHi = tileLo + 7;
   ivec2 lo = rasterCentre(tileLo.x, tileLo.y), hi = rasterCentre(tileHi.x, tileHi.y);
   ivec2 p = rasterCentre(pixel.x, pixel.y);
-  uint64_t best = inImage ? keys[uint(pixel.y) * uint(size.x) + uint(pixel.x)] : 0ul;
-  uvec2 binXY = gl_WorkGroupID.xy * 8u / kRasterBinSize;
+  uint64_t best = inside ? keys[uint(pixel.y) * uint(size.x) + uint(pixel.x)] : 0ul;
+  uvec2 binXY = uvec2(tileLo) / kRasterBinSize;
   uint bin = binXY.y * raster.large.z + binXY.x;
   uint listed = binData[bin];
   bool overflow = listed > raster.large.w;
@@ -311,6 +312,11 @@ uint64_t rasterNearest(ivec2 pixel, ivec2 size) {
     barrier();
   }
   return best;
+}
+
+// The same, for a workgroup that resolves the 8x8 tile of the image at gl_WorkGroupID.
+uint64_t rasterNearest(ivec2 pixel, ivec2 size) {
+  return rasterNearest(pixel, ivec2(gl_WorkGroupID.xy) * 8, all(lessThan(pixel, size)), size);
 }
 
 #endif

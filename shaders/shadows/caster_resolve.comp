@@ -1,6 +1,7 @@
 #version 460
-// The shadow casters' compute rasterizer, per texel of the atlas (shadows/shadow_raster.h): the
-// nearest depth of the first pass's key and its bin's large triangles, for the copy into the atlas.
+// The shadow casters' compute rasterizer, per texel of each view's cell (shadows/shadow_raster.h):
+// the nearest depth of the first pass's key and its bin's large triangles, for the copy into the
+// atlas. Workgroup z is the view; texels outside this frame's cells are neither read nor written.
 #include "common/frame.glsl"
 #include "shared/shadow_types.h"
 
@@ -22,8 +23,14 @@ layout(push_constant) uniform RasterBlock {
 
 void main() {
   ivec2 size = ivec2(shadowViewHeader.yz);
-  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  uint64_t best = rasterNearest(texel, size);
-  if (any(greaterThanEqual(texel, size))) return;
+  uvec4 cell = shadowViews[gl_WorkGroupID.z].cell;
+  ivec2 cellLo = ivec2(cell.xy), cellEnd = min(cellLo + ivec2(cell.zz), size);
+  // Tiles on the atlas's 8-texel grid (each within one bin), from the one holding the cell's corner.
+  ivec2 tileLo = (cellLo & ~7) + ivec2(gl_WorkGroupID.xy) * 8;
+  if (any(greaterThanEqual(tileLo, cellEnd))) return;  // the whole workgroup
+  ivec2 texel = tileLo + ivec2(gl_LocalInvocationID.xy);
+  bool inside = all(greaterThanEqual(texel, cellLo)) && all(lessThan(texel, cellEnd));
+  uint64_t best = rasterNearest(texel, tileLo, inside, size);
+  if (!inside) return;
   depthOut[uint(texel.y) * uint(size.x) + uint(texel.x)] = uintBitsToFloat(uint(best >> 32));
 }

@@ -62,14 +62,14 @@ glm::uvec4 RasterWorkspace::largeParams(uint32_t largestOwnBox) const {
   return glm::uvec4(largeCapacity_, largestOwnBox, binsPerRow_, kBinCapacity);
 }
 
-void RasterWorkspace::clear(FrameGraph& graph) const {
-  graph.step(
-      {uses(keys_, Use::TransferWrite), uses(large_, Use::TransferWrite), uses(bins_, Use::TransferWrite)},
-      [&](VkCommandBuffer cmd) {
-        vkCmdFillBuffer(cmd, keys_.handle(), 0, VK_WHOLE_SIZE, 0);
-        vkCmdFillBuffer(cmd, large_.handle(), 0, kLargeHeader, 0);
-        vkCmdFillBuffer(cmd, bins_.handle(), 0, VkDeviceSize(binCount_) * sizeof(uint32_t), 0);
-      });
+void RasterWorkspace::clear(FrameGraph& graph, bool keys) const {
+  std::vector<ResourceUse> cleared = {uses(large_, Use::TransferWrite), uses(bins_, Use::TransferWrite)};
+  if (keys) cleared.push_back(uses(keys_, Use::TransferWrite));
+  graph.step(cleared, [&, keys](VkCommandBuffer cmd) {
+    if (keys) vkCmdFillBuffer(cmd, keys_.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, large_.handle(), 0, kLargeHeader, 0);
+    vkCmdFillBuffer(cmd, bins_.handle(), 0, VkDeviceSize(binCount_) * sizeof(uint32_t), 0);
+  });
 }
 
 std::vector<ResourceUse> RasterWorkspace::triangleUses() const {
@@ -82,14 +82,28 @@ std::vector<ResourceUse> RasterWorkspace::resolveUses() const {
           uses(bins_, Use::StorageRead, kCompute), uses(depth_, Use::StorageWrite, kCompute)};
 }
 
-void RasterWorkspace::copyDepth(FrameGraph& graph, const Image& image) const {
-  graph.step({uses(depth_, Use::TransferRead), uses(image, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
-    VkBufferImageCopy copy{};
+void RasterWorkspace::copyDepth(FrameGraph& graph, const Image& image, std::span<const VkRect2D> cells,
+                                const std::string& name) const {
+  std::vector<VkBufferImageCopy> copies;
+  const VkRect2D whole{{0, 0}, {width_, height_}};
+  for (const VkRect2D& cell : cells.empty() ? std::span<const VkRect2D>(&whole, 1) : cells) {
+    VkBufferImageCopy& copy = copies.emplace_back();
+    copy.bufferOffset = (VkDeviceSize(cell.offset.y) * width_ + VkDeviceSize(cell.offset.x)) * sizeof(float);
+    copy.bufferRowLength = width_;
+    copy.bufferImageHeight = height_;
     copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-    copy.imageExtent = {width_, height_, 1};
-    vkCmdCopyBufferToImage(cmd, depth_.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                           &copy);
-  });
+    copy.imageOffset = {cell.offset.x, cell.offset.y, 0};
+    copy.imageExtent = {cell.extent.width, cell.extent.height, 1};
+  }
+  const auto record = [this, &image, copies = std::move(copies)](VkCommandBuffer cmd) {
+    vkCmdCopyBufferToImage(cmd, depth_.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           uint32_t(copies.size()), copies.data());
+  };
+  const std::vector<ResourceUse> copied = {uses(depth_, Use::TransferRead), uses(image, Use::TransferWrite)};
+  if (name.empty())
+    graph.step(copied, record);
+  else
+    graph.pass(name, copied, record);
 }
 
 std::string ComputeRaster::problem(const Context& context, uint32_t width, uint32_t height) {

@@ -16,6 +16,7 @@
 // Coverage follows Vulkan's rules (8 sub-pixel bits, top-left edges, counter-clockwise front
 // faces), so ids match the hardware pass pixel for pixel up to snapping ties. Alpha-masked
 // primitives still go through the hardware pass afterwards (they need their texture).
+#include <span>
 #include <string>
 #include <vector>
 
@@ -55,13 +56,17 @@ class RasterWorkspace {
   DescriptorWriter& bind(DescriptorWriter& writer) const;
   // The push constants' `large` (capacity, largest own box, bins per row, bin capacity).
   glm::uvec4 largeParams(uint32_t largestOwnBox = kLargestOwnBox) const;
-  // The frame-graph step that clears the keys, the list's count and the bins' counts.
-  void clear(FrameGraph& graph) const;
+  // The frame-graph step that clears the keys, the list's count and the bins' counts; without
+  // `keys`, the keys are left to the caller (the shadow casters' clear only their views' cells).
+  void clear(FrameGraph& graph, bool keys = true) const;
   // The uses of the triangle pass, of the per-pixel pass (which writes the depth), and the step
-  // that copies the depth into `image` (a D32 image of the same size).
+  // that copies the depth into `image` (a D32 image of the same size): all of it, or only `cells`;
+  // a GPU-timed pass when `name` is given.
   std::vector<ResourceUse> triangleUses() const;
   std::vector<ResourceUse> resolveUses() const;
-  void copyDepth(FrameGraph& graph, const Image& image) const;
+  void copyDepth(FrameGraph& graph, const Image& image, std::span<const VkRect2D> cells = {},
+                 const std::string& name = {}) const;
+  const Buffer& keys() const { return keys_; }
   const Buffer& large() const { return large_; }
   const Buffer& bins() const { return bins_; }
 

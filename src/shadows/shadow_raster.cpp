@@ -76,8 +76,9 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
                   kStorage, MemoryUse::Upload, name_ + "-views");
   setViews({});
 
-  layout_ = PipelineLayout(
-      context, {"shadows/caster_triangles.comp", "shadows/caster_bins.comp", "shadows/caster_resolve.comp"});
+  layout_ = PipelineLayout(context, {"shadows/caster_clear.comp", "shadows/caster_triangles.comp",
+                                     "shadows/caster_bins.comp", "shadows/caster_resolve.comp"});
+  clearPipeline_ = Pipeline(context, layout_, "shadows/caster_clear.comp");
   trianglePipeline_ = Pipeline(context, layout_, "shadows/caster_triangles.comp");
   binPipeline_ = Pipeline(context, layout_, "shadows/caster_bins.comp");
   resolvePipeline_ = Pipeline(context, layout_, "shadows/caster_resolve.comp");
@@ -88,6 +89,12 @@ void ShadowRaster::setViews(std::span<const ShadowView> views) {
   std::vector<gpu::ShadowRasterView> packed(count);
   for (uint32_t v = 0; v < count; ++v)
     packed[v] = {views[v].viewProj, views[v].reach, glm::uvec4(views[v].x, views[v].y, views[v].size, 0u)};
+  cells_.clear();
+  largestCell_ = 0;
+  for (uint32_t v = 0; v < count; ++v) {
+    cells_.push_back({{int32_t(views[v].x), int32_t(views[v].y)}, {views[v].size, views[v].size}});
+    largestCell_ = std::max(largestCell_, views[v].size);
+  }
   const glm::uvec4 header(count, width_, height_, 0u);
   views_.upload(&header, sizeof(header));
   if (count > 0) views_.upload(packed.data(), count * sizeof(gpu::ShadowRasterView), sizeof(header));
@@ -113,7 +120,17 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
     writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
     vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   };
-  work_.clear(frame.graph);
+  // Per view (workgroup z), over its cell's 8-texel tiles: one more in x and y where the cell's corner
+  // is off the tiles' grid.
+  const uint32_t tiles = divideRoundingUp(largestCell_, RasterWorkspace::kTileSize) + 1;
+  const uint32_t views = uint32_t(cells_.size());
+  work_.clear(frame.graph, /*keys=*/false);
+  frame.graph.pass(name_ + "-clear", {uses(work_.keys(), Use::StorageWrite, kCompute)},
+                   [&](VkCommandBuffer cmd) {
+                     if (views == 0) return;
+                     bindAll(cmd, clearPipeline_);
+                     vkCmdDispatch(cmd, tiles, tiles, views);
+                   });
   frame.graph.pass(name_, work_.triangleUses(), [&](VkCommandBuffer cmd) {
     if (groups == 0) return;
     bindAll(cmd, trianglePipeline_);
@@ -127,11 +144,11 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
         vkCmdDispatch(cmd, kBinningGroups, 1, 1);
       });
   frame.graph.pass(name_ + "-resolve", work_.resolveUses(), [&](VkCommandBuffer cmd) {
+    if (views == 0) return;
     bindAll(cmd, resolvePipeline_);
-    vkCmdDispatch(cmd, divideRoundingUp(width_, RasterWorkspace::kTileSize),
-                  divideRoundingUp(height_, RasterWorkspace::kTileSize), 1);
+    vkCmdDispatch(cmd, tiles, tiles, views);
   });
-  work_.copyDepth(frame.graph, atlas);
+  if (!cells_.empty()) work_.copyDepth(frame.graph, atlas, cells_, name_ + "-copy");
 }
 
 }  // namespace lll

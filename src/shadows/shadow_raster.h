@@ -4,6 +4,8 @@
 // views: the sun's cascades, or the local lights' cones and cube faces. On the H200 the hardware
 // pass is bound by its few raster units; compute runs on all. The passes, named after the atlas
 // ("shadow-sun", "shadow-lights"):
+//   "shadow-sun-clear"    the keys of this frame's views' cells cleared (no others: the atlas keeps
+//                         room for views the frame may not draw);
 //   "shadow-sun"          one invocation per opaque caster triangle (every instance) draws it into
 //                         each view's cell (a local light's views only when the triangle is within
 //                         the light's range): small boxes covered with 64-bit atomic max, large
@@ -11,13 +13,15 @@
 //   "shadow-sun-bins"     each large triangle appended to the 32x32-texel bins it touches, by a
 //                         workgroup (the visibility buffer's thread-per-triangle listing took 3.6 ms
 //                         of 5.3 on the H200: a near cascade's triangle spans thousands of bins);
-//   "shadow-sun-resolve"  one invocation per atlas texel keeps the nearest depth of its key and its
-//                         bin's large triangles; the depths are copied into the atlas;
+//   "shadow-sun-resolve"  one invocation per texel of the views' cells keeps the nearest depth of its
+//                         key and its bin's large triangles;
+//   "shadow-sun-copy"     the cells' depths copied into the atlas;
 //   "shadow-sun-masked"   alpha-masked casters drawn by the hardware over that depth (they need
 //                         their texture), only where the scene has them.
 // Single-sided primitives are culled by their back faces, as the hardware pass culls them.
 #include <span>
 #include <string>
+#include <vector>
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
@@ -56,7 +60,10 @@ class ShadowRaster {
   uint32_t records_ = 0;
   uint32_t singleSided_ = 0;
   uint32_t triangles_ = 0;
+  std::vector<VkRect2D> cells_;  // this frame's views' cells, resolved and copied into the atlas
+  uint32_t largestCell_ = 0;
   PipelineLayout layout_;
+  Pipeline clearPipeline_;
   Pipeline trianglePipeline_;
   Pipeline binPipeline_;
   Pipeline resolvePipeline_;
