@@ -8,25 +8,19 @@
 // -y, +z, -z, for point lights and spots wider than a cube face).
 #ifndef LLL_LOCAL_SHADOW_GLSL
 #define LLL_LOCAL_SHADOW_GLSL
+#include "common/shadow_compare.glsl"
 #include "shared/gpu_types.h"
 #include "shared/shadow_types.h"
 
 layout(std430, set = 0, binding = 28) readonly buffer LocalShadowBlock {
   LocalShadowView localShadowViews[];
 };
-// Depth comparison sampler (GREATER_OR_EQUAL on reverse depth, linear filter), as the sun's.
-layout(set = 0, binding = 29) uniform sampler2DShadow localShadowAtlas;
+// The atlas's depths, compared by common/shadow_compare.glsl, as the sun's.
+layout(set = 0, binding = 29) uniform sampler2D localShadowAtlas;
 
 // Whether the renderer shadows any local light this run (--shadows all); false compiles the lookups
 // out of a pass specialized for the scene (render/frame.h, lightTypeConstants).
 layout(constant_id = 41) const bool kLocalShadows = true;
-
-// One comparison at atlas uv `at`. At level 0 explicitly: lookups sit in control flow that differs
-// from pixel to pixel (lights that reach, surfaces that face them), where a fragment shader's
-// implicit derivatives are undefined.
-float localShadowTap(vec2 at, float depth) {
-  return textureLod(localShadowAtlas, vec3(at, depth), 0.0);
-}
 
 // The fraction of `light` that reaches `position` (`l` the unit direction towards the light,
 // `distance` to it), 1 lit to 0 shadowed. `normal` (unit, or zero for particles) offsets the lookup
@@ -62,13 +56,14 @@ float localShadow(GpuLight light, vec3 position, vec3 normal, vec3 l, float dist
   vec2 lo = v.cell.xy + 0.5 * atlasTexel, hi = v.cell.xy + v.cell.zw - 0.5 * atlasTexel;
   vec2 at = v.cell.xy + uv * v.cell.zw;
   if (v.config.x == kShadowFilterNone) {
-    // The texel's centre: the linear filter then reads that texel alone.
+    // The texel's centre, inside the cell.
     at = v.cell.xy + (floor(uv / v.params.w) + 0.5) * atlasTexel;
-    return localShadowTap(clamp(at, lo, hi), ndc.z);
+    return shadowCompareTexel(localShadowAtlas, clamp(at, lo, hi), ndc.z);
   }
   float sum = 0.0;
   for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x) sum += localShadowTap(clamp(at + vec2(x, y) * atlasTexel, lo, hi), ndc.z);
+    for (int x = -1; x <= 1; ++x)
+      sum += shadowCompareLinear(localShadowAtlas, clamp(at + vec2(x, y) * atlasTexel, lo, hi), ndc.z);
   return sum * (1.0 / 9.0);
 }
 

@@ -5,14 +5,14 @@
 #ifndef LLL_SUN_SHADOW_GLSL
 #define LLL_SUN_SHADOW_GLSL
 #include "common/frame.glsl"
+#include "common/shadow_compare.glsl"
 #include "shared/shadow_types.h"
 
 layout(std430, set = 0, binding = 26) readonly buffer SunShadowBlock {
   SunShadow sunShadow;
 };
-// Depth comparison sampler (GREATER_OR_EQUAL on reverse depth, linear filter): 1 where the point
-// lies nearer the sun than the nearest caster stored.
-layout(set = 0, binding = 27) uniform sampler2DShadow sunShadowAtlas;
+// The cascades' depths (reverse: 1 nearest the sun), compared by common/shadow_compare.glsl.
+layout(set = 0, binding = 27) uniform sampler2D sunShadowAtlas;
 
 // The cascade covering view depth `viewDepth`: the first whose split lies beyond it.
 uint sunCascade(float viewDepth) {
@@ -23,13 +23,14 @@ uint sunCascade(float viewDepth) {
 }
 
 // One comparison at `cell` (a cascade's 0..1 square; kept a half texel inside it, so that a filter
-// tap never reads the next cascade's cell).
-float sunShadowTap(uint cascade, vec2 cell, float depth) {
+// tap never reads the next cascade's cell), filtered or of the one texel.
+float sunShadowTap(uint cascade, vec2 cell, float depth, bool filtered) {
   float inset = 0.5 * sunShadow.atlas.x;
   cell = clamp(cell, vec2(inset), vec2(1.0 - inset));
   vec2 origin = vec2(float(cascade % kCascadeColumns), float(cascade / kCascadeColumns));
-  // Level 0 explicitly: no implicit derivatives in control flow that differs between pixels.
-  return textureLod(sunShadowAtlas, vec3((origin + cell) * sunShadow.atlas.zw, depth), 0.0);
+  vec2 at = (origin + cell) * sunShadow.atlas.zw;
+  return filtered ? shadowCompareLinear(sunShadowAtlas, at, depth)
+                  : shadowCompareTexel(sunShadowAtlas, at, depth);
 }
 
 // The fraction of the shadow-casting sun (the frame's first directional light) that reaches `position`, 1 lit
@@ -55,13 +56,13 @@ float sunVisibility(vec3 position, vec3 normal) {
   float depth = clip.z + worldBias / sunShadow.bias.w;
   float resolution = sunShadow.atlas.y;
   if (sunShadow.config.z == kShadowFilterNone) {
-    // The texel's centre: the linear filter then reads that texel alone.
+    // The texel's centre.
     cell = (floor(cell * resolution) + 0.5) * sunShadow.atlas.x;
-    return sunShadowTap(c, cell, depth);
+    return sunShadowTap(c, cell, depth, false);
   }
   float sum = 0.0;
   for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x) sum += sunShadowTap(c, cell + vec2(x, y) * sunShadow.atlas.x, depth);
+    for (int x = -1; x <= 1; ++x) sum += sunShadowTap(c, cell + vec2(x, y) * sunShadow.atlas.x, depth, true);
   return sum * (1.0 / 9.0);
 }
 

@@ -35,7 +35,7 @@ std::string RasterWorkspace::problem(const Context& context, uint32_t width, uin
 }
 
 RasterWorkspace::RasterWorkspace(Context& context, uint32_t width, uint32_t height, const std::string& name,
-                                 uint32_t largeCapacity)
+                                 uint32_t largeCapacity, bool depthBuffer)
     : width_(width), height_(height), largeCapacity_(largeCapacity) {
   constexpr VkBufferUsageFlags kCleared =
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -46,16 +46,15 @@ RasterWorkspace::RasterWorkspace(Context& context, uint32_t width, uint32_t heig
   binCount_ = binsPerRow_ * divideRoundingUp(height, kBinSize);
   bins_ = Buffer(context, VkDeviceSize(binCount_) * (1 + kBinCapacity) * sizeof(uint32_t), kCleared,
                  MemoryUse::Device, name + "-bins");
-  depth_ = Buffer(context, VkDeviceSize(width) * height * sizeof(float),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device,
-                  name + "-depth");
+  if (depthBuffer)
+    depth_ = Buffer(context, VkDeviceSize(width) * height * sizeof(float),
+                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device,
+                    name + "-depth");
 }
 
 DescriptorWriter& RasterWorkspace::bind(DescriptorWriter& writer) const {
-  return writer.storage(22, keys_.handle())
-      .storage(23, large_.handle())
-      .storage(24, depth_.handle())
-      .storage(25, bins_.handle());
+  writer.storage(22, keys_.handle()).storage(23, large_.handle()).storage(25, bins_.handle());
+  return depth_.handle() != VK_NULL_HANDLE ? writer.storage(24, depth_.handle()) : writer;
 }
 
 glm::uvec4 RasterWorkspace::largeParams(uint32_t largestOwnBox) const {
@@ -78,8 +77,11 @@ std::vector<ResourceUse> RasterWorkspace::triangleUses() const {
 }
 
 std::vector<ResourceUse> RasterWorkspace::resolveUses() const {
-  return {uses(keys_, Use::StorageRead, kCompute), uses(large_, Use::StorageRead, kCompute),
-          uses(bins_, Use::StorageRead, kCompute), uses(depth_, Use::StorageWrite, kCompute)};
+  std::vector<ResourceUse> used = {uses(keys_, Use::StorageRead, kCompute),
+                                   uses(large_, Use::StorageRead, kCompute),
+                                   uses(bins_, Use::StorageRead, kCompute)};
+  if (depth_.handle() != VK_NULL_HANDLE) used.push_back(uses(depth_, Use::StorageWrite, kCompute));
+  return used;
 }
 
 void RasterWorkspace::copyDepth(FrameGraph& graph, const Image& image, std::span<const VkRect2D> cells,

@@ -49,10 +49,11 @@ class RasterWorkspace {
 
   RasterWorkspace() = default;
   // `largeCapacity`: how many large triangles the list holds (an atlas of many views needs more).
+  // Without `depthBuffer` the resolve writes its depths elsewhere (an R32F shadow atlas).
   RasterWorkspace(Context& context, uint32_t width, uint32_t height, const std::string& name,
-                  uint32_t largeCapacity = kLargeCapacity);
+                  uint32_t largeCapacity = kLargeCapacity, bool depthBuffer = true);
 
-  // Bindings 22 (keys), 23 (large triangles), 24 (depth) and 25 (bins).
+  // Bindings 22 (keys), 23 (large triangles), 24 (depth, where there is one) and 25 (bins).
   DescriptorWriter& bind(DescriptorWriter& writer) const;
   // The push constants' `large` (capacity, largest own box, bins per row, bin capacity).
   glm::uvec4 largeParams(uint32_t largestOwnBox = kLargestOwnBox) const;

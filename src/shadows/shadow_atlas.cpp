@@ -14,25 +14,36 @@ namespace lll {
 
 ShadowAtlas::ShadowAtlas(Context& context, const GpuScene& scene, const ShadowAtlasDesc& desc)
     : context_(&context), pass_(desc.pass) {
-  image_ = Image(context, desc.width, desc.height, VK_FORMAT_D32_SFLOAT,
-                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                     VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // the compute rasterizer's copy
-                 desc.image);
+  bool compute = false;
+  if (desc.maxViews > 0) {
+    casters_ = std::make_unique<ShadowCasters>(context, scene);
+    // auto: compute where it fits, on a GPU (bench/README.md, "The sun's shadow").
+    const std::string problem = ShadowRaster::problem(context, desc.width, desc.height);
+    if (desc.raster == "compute" && !problem.empty())
+      throw InputError(fmt::format("{}: {}", desc.request, problem));
+    compute =
+        desc.raster == "compute" || (desc.raster == "auto" && problem.empty() && !context.isCpuDevice());
+  }
+  // The compute rasterizer writes an R32F atlas itself, unless the hardware must draw alpha-masked
+  // casters over its depths: then they are copied into a D32 one.
+  const bool intoImage = compute && !casters_->hasMasked();
+  if (intoImage)
+    image_ = Image(context, desc.width, desc.height, VK_FORMAT_R32_SFLOAT,
+                   VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, desc.image);
+  else
+    image_ = Image(context, desc.width, desc.height, VK_FORMAT_D32_SFLOAT,
+                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                       VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // the compute rasterizer's copy
+                   desc.image);
+  // Read as plain floats and compared in the shaders (common/shadow_compare.glsl): an R32F image
+  // has no comparison sampling everywhere.
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = info.minFilter = VK_FILTER_LINEAR;
+  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
   info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.compareEnable = VK_TRUE;
-  info.compareOp = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse depth: lit where nearer the light than stored
   VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &sampler_));
-  if (desc.maxViews == 0) return;
-  casters_ = std::make_unique<ShadowCasters>(context, scene);
-  // auto: compute where it fits, on a GPU (bench/README.md, "The sun's shadow").
-  const std::string problem = ShadowRaster::problem(context, desc.width, desc.height);
-  if (desc.raster == "compute" && !problem.empty())
-    throw InputError(fmt::format("{}: {}", desc.request, problem));
-  if (desc.raster == "compute" || (desc.raster == "auto" && problem.empty() && !context.isCpuDevice()))
-    computeRaster_ =
-        std::make_unique<ShadowRaster>(context, scene, desc.width, desc.height, desc.maxViews, desc.pass);
+  if (compute)
+    computeRaster_ = std::make_unique<ShadowRaster>(context, scene, desc.width, desc.height, desc.maxViews,
+                                                    desc.pass, intoImage);
 }
 
 ShadowAtlas::ShadowAtlas() = default;
@@ -82,7 +93,9 @@ void ShadowAtlas::record(FrameContext& frame) const {
     vkCmdEndRendering(cmd);
   };
   if (!drawing) {
-    frame.graph.step({uses(image_, Use::DepthWrite)}, [&](VkCommandBuffer cmd) { drawCasters(cmd, true); });
+    // Nothing reads an atlas no view was drawn into; a depth atlas is cleared all the same.
+    if (image_.format() == VK_FORMAT_D32_SFLOAT)
+      frame.graph.step({uses(image_, Use::DepthWrite)}, [&](VkCommandBuffer cmd) { drawCasters(cmd, true); });
   } else if (!computeRaster_) {
     frame.graph.pass(pass_, {uses(image_, Use::DepthWrite)},
                      [&](VkCommandBuffer cmd) { drawCasters(cmd, true); });
@@ -98,7 +111,9 @@ void ShadowAtlas::record(FrameContext& frame) const {
 
 void ShadowAtlas::bind(DescriptorWriter& writer, uint32_t binding) const {
   writer.image(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, image_.view(),
-               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, sampler_);
+               image_.format() == VK_FORMAT_D32_SFLOAT ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL
+                                                       : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+               sampler_);
 }
 
 }  // namespace lll

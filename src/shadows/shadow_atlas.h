@@ -1,9 +1,10 @@
 #pragma once
 // A depth atlas of shadow views and who draws them, shared by the sun's cascades
-// (shadows/sun_shadows.h) and the local lights' views (shadows/local_shadows.h): the D32 image, its
-// comparison sampler (reverse depth: lit where nearer the light than stored), the hardware's
-// casters (shadows/shadow_casters.h) and, with --shadow-raster compute or auto's choice on a GPU,
-// the compute rasterizer (shadows/shadow_raster.h).
+// (shadows/sun_shadows.h) and the local lights' views (shadows/local_shadows.h): the image (D32
+// where the hardware draws casters, R32F where the compute rasterizer writes it alone), its sampler
+// (the shaders compare, common/shadow_compare.glsl: reverse depth, lit where nearer the light than
+// stored), the hardware's casters (shadows/shadow_casters.h) and, with --shadow-raster compute or
+// auto's choice on a GPU, the compute rasterizer (shadows/shadow_raster.h).
 #include <memory>
 #include <span>
 #include <string>

@@ -24,13 +24,14 @@ std::string ShadowRaster::problem(const Context& context, uint32_t width, uint32
 }
 
 ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t width, uint32_t height,
-                           uint32_t maxViews, std::string name)
+                           uint32_t maxViews, std::string name, bool intoImage)
     : context_(context),
       scene_(scene),
       width_(width),
       height_(height),
       maxViews_(maxViews),
-      name_(std::move(name)) {
+      name_(std::move(name)),
+      intoImage_(intoImage) {
   const Scene& s = scene.scene();
   // One record per (instance, opaque primitive), single-sided first (their back faces are culled).
   std::vector<std::vector<const DrawItem*>> meshDraws(s.meshes.size());
@@ -71,17 +72,18 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
   const uint32_t large =
       uint32_t(std::clamp<uint64_t>(uint64_t(maxViews) * 2048, RasterWorkspace::kLargeCapacity,
                                     std::max<uint64_t>(mostLarge, RasterWorkspace::kLargeCapacity)));
-  work_ = RasterWorkspace(context, width, height, "shadow-raster", large);
+  work_ = RasterWorkspace(context, width, height, "shadow-raster", large, /*depthBuffer=*/!intoImage);
   views_ = Buffer(context, sizeof(glm::uvec4) + std::max(1u, maxViews) * sizeof(gpu::ShadowRasterView),
                   kStorage, MemoryUse::Upload, name_ + "-views");
   setViews({});
 
+  const char* resolve = intoImage ? "shadows/caster_resolve_image.comp" : "shadows/caster_resolve.comp";
   layout_ = PipelineLayout(context, {"shadows/caster_clear.comp", "shadows/caster_triangles.comp",
-                                     "shadows/caster_bins.comp", "shadows/caster_resolve.comp"});
+                                     "shadows/caster_bins.comp", resolve});
   clearPipeline_ = Pipeline(context, layout_, "shadows/caster_clear.comp");
   trianglePipeline_ = Pipeline(context, layout_, "shadows/caster_triangles.comp");
   binPipeline_ = Pipeline(context, layout_, "shadows/caster_bins.comp");
-  resolvePipeline_ = Pipeline(context, layout_, "shadows/caster_resolve.comp");
+  resolvePipeline_ = Pipeline(context, layout_, resolve);
 }
 
 void ShadowRaster::setViews(std::span<const ShadowView> views) {
@@ -115,6 +117,7 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
       .storage(21, starts_.handle())
       .storage(26, views_.handle());
   work_.bind(writer);
+  if (intoImage_) writer.image(30, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, atlas.view(), VK_IMAGE_LAYOUT_GENERAL);
   const auto bindAll = [&](VkCommandBuffer cmd, const Pipeline& pipeline) {
     pipeline.bind(cmd);
     writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
@@ -143,12 +146,14 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
         bindAll(cmd, binPipeline_);
         vkCmdDispatch(cmd, kBinningGroups, 1, 1);
       });
-  frame.graph.pass(name_ + "-resolve", work_.resolveUses(), [&](VkCommandBuffer cmd) {
+  std::vector<ResourceUse> resolveUses = work_.resolveUses();
+  if (intoImage_) resolveUses.push_back(uses(atlas, Use::StorageWrite, kCompute));
+  frame.graph.pass(name_ + "-resolve", resolveUses, [&](VkCommandBuffer cmd) {
     if (views == 0) return;
     bindAll(cmd, resolvePipeline_);
     vkCmdDispatch(cmd, tiles, tiles, views);
   });
-  if (!cells_.empty()) work_.copyDepth(frame.graph, atlas, cells_, name_ + "-copy");
+  if (!intoImage_ && !cells_.empty()) work_.copyDepth(frame.graph, atlas, cells_, name_ + "-copy");
 }
 
 }  // namespace lll

@@ -15,7 +15,9 @@
 //                         of 5.3 on the H200: a near cascade's triangle spans thousands of bins);
 //   "shadow-sun-resolve"  one invocation per texel of the views' cells keeps the nearest depth of its
 //                         key and its bin's large triangles;
-//   "shadow-sun-copy"     the cells' depths copied into the atlas;
+//   "shadow-sun-copy"     the cells' depths copied into a D32 atlas, where alpha-masked casters need
+//                         it; otherwise the resolve writes an R32F atlas itself (the copy into a
+//                         depth image cost more than the drawing on the H200, bench/README.md);
 //   "shadow-sun-masked"   alpha-masked casters drawn by the hardware over that depth (they need
 //                         their texture), only where the scene has them.
 // Single-sided primitives are culled by their back faces, as the hardware pass culls them.
@@ -42,12 +44,14 @@ class ShadowRaster {
   static std::string problem(const Context& context, uint32_t width, uint32_t height);
 
   // For an atlas of width x height texels holding at most `maxViews` views; `name` names its passes.
+  // `intoImage`: the atlas is an R32F storage image the resolve writes; otherwise a D32 image the
+  // depths are copied into (where the hardware draws alpha-masked casters over them).
   ShadowRaster(Context& context, const GpuScene& scene, uint32_t width, uint32_t height, uint32_t maxViews,
-               std::string name);
+               std::string name, bool intoImage);
 
   // This frame's views (at most maxViews); before recording the frame.
   void setViews(std::span<const ShadowView> views);
-  // Rasterizes every opaque caster into the views, then copies the depths into `atlas`.
+  // Rasterizes every opaque caster into the views' cells of `atlas` (writing or copying the depths).
   void record(FrameContext& frame, const Image& atlas) const;
 
  private:
@@ -62,6 +66,7 @@ class ShadowRaster {
   uint32_t triangles_ = 0;
   std::vector<VkRect2D> cells_;  // this frame's views' cells, resolved and copied into the atlas
   uint32_t largestCell_ = 0;
+  bool intoImage_ = false;
   PipelineLayout layout_;
   Pipeline clearPipeline_;
   Pipeline trianglePipeline_;
