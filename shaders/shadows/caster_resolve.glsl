@@ -1,8 +1,8 @@
 // The shadow casters' compute rasterizer, per texel of each view's cell (shadows/shadow_raster.h):
-// the nearest depth of the first pass's key and its bin's large triangles. Workgroup z is the view;
-// texels outside this frame's cells are neither read nor written. Included by caster_resolve.comp
-// (into a buffer, copied into a D32 atlas) and caster_resolve_image.comp (straight into an R32F
-// atlas), which define shadowDepthOut(texel, depth).
+// the nearest depth of the first pass's key and its bin's large triangles, the key then reset to 0.
+// Workgroup z is the view; texels outside this frame's cells are neither read nor written. Included by
+// caster_resolve.comp (into a buffer, copied into a D32 atlas) and caster_resolve_image.comp (straight into
+// an R32F atlas), which define shadowDepthOut(texel, depth).
 #include "common/frame.glsl"
 #include "shared/shadow_types.h"
 
@@ -31,4 +31,7 @@ void main() {
   uint64_t best = rasterNearest(texel, tileLo, inside, size);
   if (!inside) return;
   shadowDepthOut(texel, size, uintBitsToFloat(uint(best >> 32)));
+  // Cleared for the next frame: the triangle pass writes keys only within the views' cells, and
+  // every cell drawn is resolved here in the same frame, so no pass over the whole atlas is needed.
+  keys[uint(texel.y) * uint(size.x) + uint(texel.x)] = 0ul;
 }

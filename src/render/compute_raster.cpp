@@ -40,6 +40,9 @@ RasterWorkspace::RasterWorkspace(Context& context, uint32_t width, uint32_t heig
   constexpr VkBufferUsageFlags kCleared =
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   keys_ = Buffer(context, keyBytes(width, height), kCleared, MemoryUse::Device, name + "-keys");
+  // Clear from the start, for a resolve that resets the keys it reads instead of a clear each frame.
+  context.submitAndWait(
+      [&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, keys_.handle(), 0, VK_WHOLE_SIZE, 0); });
   large_ = Buffer(context, kLargeHeader + VkDeviceSize(largeCapacity_) * sizeof(gpu::RasterTriangle),
                   kCleared, MemoryUse::Device, name + "-large-triangles");
   binsPerRow_ = divideRoundingUp(width, kBinSize);
@@ -76,10 +79,10 @@ std::vector<ResourceUse> RasterWorkspace::triangleUses() const {
           uses(bins_, Use::StorageReadWrite, kCompute)};
 }
 
-std::vector<ResourceUse> RasterWorkspace::resolveUses() const {
-  std::vector<ResourceUse> used = {uses(keys_, Use::StorageRead, kCompute),
-                                   uses(large_, Use::StorageRead, kCompute),
-                                   uses(bins_, Use::StorageRead, kCompute)};
+std::vector<ResourceUse> RasterWorkspace::resolveUses(bool resetsKeys) const {
+  std::vector<ResourceUse> used = {
+      uses(keys_, resetsKeys ? Use::StorageReadWrite : Use::StorageRead, kCompute),
+      uses(large_, Use::StorageRead, kCompute), uses(bins_, Use::StorageRead, kCompute)};
   if (depth_.handle() != VK_NULL_HANDLE) used.push_back(uses(depth_, Use::StorageWrite, kCompute));
   return used;
 }

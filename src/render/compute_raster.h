@@ -58,13 +58,13 @@ class RasterWorkspace {
   // The push constants' `large` (capacity, largest own box, bins per row, bin capacity).
   glm::uvec4 largeParams(uint32_t largestOwnBox = kLargestOwnBox) const;
   // The frame-graph step that clears the keys, the list's count and the bins' counts; without
-  // `keys`, the keys are left to the caller (the shadow casters' clear only their views' cells).
+  // `keys`, the keys are left to the resolve (the shadow casters' resets those it reads).
   void clear(FrameGraph& graph, bool keys = true) const;
   // The uses of the triangle pass, of the per-pixel pass (which writes the depth), and the step
   // that copies the depth into `image` (a D32 image of the same size): all of it, or only `cells`;
   // a GPU-timed pass when `name` is given.
   std::vector<ResourceUse> triangleUses() const;
-  std::vector<ResourceUse> resolveUses() const;
+  std::vector<ResourceUse> resolveUses(bool resetsKeys = false) const;
   void copyDepth(FrameGraph& graph, const Image& image, std::span<const VkRect2D> cells = {},
                  const std::string& name = {}) const;
   const Buffer& keys() const { return keys_; }

@@ -78,9 +78,7 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
   setViews({});
 
   const char* resolve = intoImage ? "shadows/caster_resolve_image.comp" : "shadows/caster_resolve.comp";
-  layout_ = PipelineLayout(context, {"shadows/caster_clear.comp", "shadows/caster_triangles.comp",
-                                     "shadows/caster_bins.comp", resolve});
-  clearPipeline_ = Pipeline(context, layout_, "shadows/caster_clear.comp");
+  layout_ = PipelineLayout(context, {"shadows/caster_triangles.comp", "shadows/caster_bins.comp", resolve});
   trianglePipeline_ = Pipeline(context, layout_, "shadows/caster_triangles.comp");
   binPipeline_ = Pipeline(context, layout_, "shadows/caster_bins.comp");
   resolvePipeline_ = Pipeline(context, layout_, resolve);
@@ -108,7 +106,9 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
   const uint32_t groupsPerRow = std::max(1u, std::min(groups, 65535u));
   gpu::RasterPush push{};
   push.counts = glm::uvec4(triangles_, records_, singleSided_, groupsPerRow);
-  push.large = work_.largeParams();
+  // The visibility buffer's threshold for listing a triangle as large: also the fastest here (the H200,
+  // bench/README.md: 256, 1024 and 4096 texels cost 0.05, 0.3 and 1.3 ms more with the sun alone).
+  push.large = work_.largeParams(RasterWorkspace::kLargestOwnBox);
   DescriptorWriter writer;
   writer.storage(16, recordBuffer_.handle())
       .storage(17, instances_.handle())
@@ -127,13 +127,7 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
   // is off the tiles' grid.
   const uint32_t tiles = divideRoundingUp(largestCell_, RasterWorkspace::kTileSize) + 1;
   const uint32_t views = uint32_t(cells_.size());
-  work_.clear(frame.graph, /*keys=*/false);
-  frame.graph.pass(name_ + "-clear", {uses(work_.keys(), Use::StorageWrite, kCompute)},
-                   [&](VkCommandBuffer cmd) {
-                     if (views == 0) return;
-                     bindAll(cmd, clearPipeline_);
-                     vkCmdDispatch(cmd, tiles, tiles, views);
-                   });
+  work_.clear(frame.graph, /*keys=*/false);  // the resolve resets the keys it reads
   frame.graph.pass(name_, work_.triangleUses(), [&](VkCommandBuffer cmd) {
     if (groups == 0) return;
     bindAll(cmd, trianglePipeline_);
@@ -146,7 +140,7 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
         bindAll(cmd, binPipeline_);
         vkCmdDispatch(cmd, kBinningGroups, 1, 1);
       });
-  std::vector<ResourceUse> resolveUses = work_.resolveUses();
+  std::vector<ResourceUse> resolveUses = work_.resolveUses(/*resetsKeys=*/true);
   if (intoImage_) resolveUses.push_back(uses(atlas, Use::StorageWrite, kCompute));
   frame.graph.pass(name_ + "-resolve", resolveUses, [&](VkCommandBuffer cmd) {
     if (views == 0) return;

@@ -4,8 +4,6 @@
 // views: the sun's cascades, or the local lights' cones and cube faces. On the H200 the hardware
 // pass is bound by its few raster units; compute runs on all. The passes, named after the atlas
 // ("shadow-sun", "shadow-lights"):
-//   "shadow-sun-clear"    the keys of this frame's views' cells cleared (no others: the atlas keeps
-//                         room for views the frame may not draw);
 //   "shadow-sun"          one invocation per opaque caster triangle (every instance) draws it into
 //                         each view's cell (a local light's views only when the triangle is within
 //                         the light's range): small boxes covered with 64-bit atomic max, large
@@ -14,7 +12,9 @@
 //                         workgroup (the visibility buffer's thread-per-triangle listing took 3.6 ms
 //                         of 5.3 on the H200: a near cascade's triangle spans thousands of bins);
 //   "shadow-sun-resolve"  one invocation per texel of the views' cells keeps the nearest depth of its
-//                         key and its bin's large triangles;
+//                         key and its bin's large triangles, and resets the key (the keys start
+//                         clear, and the triangle pass writes only within the cells: no clear pass
+//                         over the atlas, which keeps room for views a frame may not draw);
 //   "shadow-sun-copy"     the cells' depths copied into a D32 atlas, where alpha-masked casters need
 //                         it; otherwise the resolve writes an R32F atlas itself (the copy into a
 //                         depth image cost more than the drawing on the H200, bench/README.md);
@@ -68,7 +68,6 @@ class ShadowRaster {
   uint32_t largestCell_ = 0;
   bool intoImage_ = false;
   PipelineLayout layout_;
-  Pipeline clearPipeline_;
   Pipeline trianglePipeline_;
   Pipeline binPipeline_;
   Pipeline resolvePipeline_;
