@@ -6,6 +6,7 @@
 #include <signal.h>
 
 #include <algorithm>
+#include <chrono>
 #include <atomic>
 #include <cmath>
 #include <map>
@@ -45,6 +46,7 @@ void stopIfRequested() {
 struct FrameCounts {
   uint32_t warmup = 0;
   uint32_t timed = 0;
+  double minWarmupSeconds = 0.0;  // warm-up frames go on until this much time has passed too
 };
 
 // Loads scenes as scenarios ask for them and keeps the last: suites put scenarios that share a
@@ -150,12 +152,16 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
   std::optional<AluProbe> probe;
   if (s.aluProbe) probe.emplace(context, scene, s.settings.width, s.settings.height);
   std::vector<FrameResult> timed;
-  for (uint32_t i = 0; i < counts.warmup + counts.timed; ++i) {
+  const auto warmupStart = std::chrono::steady_clock::now();
+  uint32_t warmup = counts.warmup;
+  for (uint32_t i = 0; i < warmup + counts.timed; ++i) {
     stopIfRequested();
     FrameResult frame = renderer.renderFrame(false);
     if (i == 0) requireParticlePass(s, frame);
     if (probe) frame.passes.push_back(probe->run(uint32_t(scene.lights.size())));
-    if (i >= counts.warmup) timed.push_back(std::move(frame));
+    const std::chrono::duration<double> warming = std::chrono::steady_clock::now() - warmupStart;
+    if (i + 1 == warmup && warming.count() < counts.minWarmupSeconds) ++warmup;  // one more
+    if (i >= warmup) timed.push_back(std::move(frame));
   }
   r.passes = summarizePasses(timed);
   for (const FrameResult& frame : timed) r.rerenders += frame.rerenders;
@@ -311,7 +317,8 @@ BenchReport runBench(Context& context, const BenchOptions& options,
   const SuiteOptions suiteOptions{options.quick, options.fullForward, context.isCpuDevice(),
                                   options.particleCounts};
   const std::vector<Scenario> scenarios = chosenScenarios(report, suiteOptions);
-  const FrameCounts counts{report.warmupFrames, report.timedFrames};
+  const FrameCounts counts{report.warmupFrames, report.timedFrames,
+                           options.quick || context.isCpuDevice() ? 0.0 : kMinWarmupSeconds};
   Caches caches;
   caches.quick = options.quick;
   ForwardComparisons comparisons;
