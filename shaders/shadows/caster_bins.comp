@@ -1,7 +1,8 @@
 #version 460
 // The shadow casters' compute rasterizer, between its two passes (shadows/shadow_raster.h): the
-// large triangles caster_triangles.comp listed are appended to every 32x32-texel bin they touch,
-// each by a whole workgroup (a triangle of a near cascade can cover the cascade's 4,096 bins).
+// large triangles caster_triangles.comp listed are appended to every 32x32-texel bin they may
+// cover a texel centre of, each by a whole workgroup (a triangle of a near cascade can cover the cascade's
+// 4,096 bins).
 #include "common/frame.glsl"
 #include "shared/shadow_types.h"
 
@@ -22,5 +23,5 @@ void main() {
   uint imageHeight = shadowViewHeader.z;
   uint listed = min(largeCount, raster.large.x);
   for (uint slot = gl_WorkGroupID.x; slot < listed; slot += gl_NumWorkGroups.x)
-    rasterListInBins(slot, largeTriangles[slot].bounds, imageHeight, gl_LocalInvocationID.x, 64u);
+    rasterListInBins(slot, largeTriangles[slot], imageHeight, gl_LocalInvocationID.x, 64u, true);
 }
