@@ -179,19 +179,20 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
 
 // Shadows: every technique without and with the sun's (4 cascades of 2048), then lll's cascades by
 // both rasterizers at 1, 2, 4 cascades and half and double resolution (a CPU device runs the
-// hardware rows alone); the sun and K local lights' shadows, every technique at K = 16 and 64, lll
-// at 1 and 256, and lll at 16 and 64 with the hardware drawing the local casters (not on a CPU
-// device); then the measure on the atrium lit by spots alone: lll without shadows, with the
-// sun's, and with the sun and 16 or 64 shadowed spots (64 also drawn by the hardware, not on a CPU
-// device).
+// hardware rows alone); K local lights' shadows for every technique at K = 1, 16, 64 and 256, with
+// the sun and in the atrium without it (and without shadows there), and lll at 16 and 64 with the
+// hardware drawing the local casters (not on a CPU device); then the measure on the atrium
+// lit by spots alone: lll without shadows, with the sun's, and with the sun and 16 or 64 shadowed
+// spots (64 also drawn by the hardware, not on a CPU device).
 TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) {
   const auto full = buildSuite("shadows", SuiteOptions{});
   const size_t techniques = lll::techniques().size();
-  ASSERT_EQ(full.size(), 4 * techniques + 2 * 5 + 2 + 2 + 5);
+  ASSERT_EQ(full.size(), 2 * techniques + 2 * 5 + 4 * techniques + 5 * techniques + 2 + 5);
   std::map<std::string, int> byRaster;
-  std::map<uint32_t, int> byLights;
+  std::map<std::pair<bool, uint32_t>, int> byLights;  // (with the sun, K)
   std::vector<std::string> spotRows;
   for (const Scenario& s : full) {
+    EXPECT_EQ(s.settings.width, 1920u);
     if (s.scene.scene == "atrium-spots") {
       EXPECT_EQ(s.settings.technique, "lll");
       EXPECT_EQ(s.scene.suns.size(), 1u);
@@ -201,17 +202,24 @@ TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) 
       continue;
     }
     EXPECT_EQ(s.scene.scene, "atrium");
-    ASSERT_EQ(s.scene.suns.size(), 1u) << s.name;
-    EXPECT_EQ(s.settings.width, 1920u);
+    const bool sun = !s.scene.suns.empty();
     if (s.settings.shadows == "all") {
       if (s.settings.shadowRaster == "hardware") {
         EXPECT_EQ(s.settings.technique, "lll");
+        EXPECT_TRUE(sun);
         EXPECT_NE(s.series.find("hardware raster"), std::string::npos) << s.series;
         continue;
       }
-      ++byLights[s.settings.shadowLights];
-      EXPECT_NE(s.series.find(fmt::format("sun + {} shadowed light", s.settings.shadowLights)),
-                std::string::npos);
+      ++byLights[{sun, s.settings.shadowLights}];
+      EXPECT_NE(
+          s.series.find(fmt::format("{}{} shadowed light", sun ? "sun + " : "", s.settings.shadowLights)),
+          std::string::npos)
+          << s.series;
+      continue;
+    }
+    if (!sun) {
+      EXPECT_EQ(s.settings.shadows, "none");
+      ++byRaster["no sun"];
       continue;
     }
     ++byRaster[s.settings.shadows == "none" ? "none" : s.settings.shadowRaster];
@@ -221,14 +229,17 @@ TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) 
     }
   }
   EXPECT_EQ(byRaster["none"], int(techniques));
+  EXPECT_EQ(byRaster["no sun"], int(techniques));
   EXPECT_EQ(byRaster["auto"], int(techniques));
   EXPECT_EQ(byRaster["hardware"], 5);
   EXPECT_EQ(byRaster["compute"], 5);
-  EXPECT_EQ(byLights,
-            (std::map<uint32_t, int>{{1, 1}, {16, int(techniques)}, {64, int(techniques)}, {256, 1}}));
+  for (const bool sun : {true, false})
+    for (const uint32_t k : {1u, 16u, 64u, 256u})
+      EXPECT_EQ((byLights[{sun, k}]), int(techniques)) << sun << k;
+  EXPECT_EQ(byLights.size(), 8u);
   EXPECT_EQ(spotRows, (std::vector<std::string>{"none", "sun", "16 auto", "64 auto", "64 hardware"}));
   const auto cpu = buildSuite("shadows", SuiteOptions{.cpuDevice = true});
-  EXPECT_EQ(cpu.size(), 4 * techniques + 5 + 2 + 4);
+  EXPECT_EQ(cpu.size(), 2 * techniques + 5 + 4 * techniques + 5 * techniques + 4);
   for (const Scenario& s : cpu) EXPECT_NE(s.settings.shadowRaster, "compute") << s.name;
 }
 

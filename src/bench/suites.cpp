@@ -238,11 +238,14 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
 // Shadows (issue 14): the default atrium (110 lights) under a sun low over the courtyard, every
 // technique without the sun's shadow and with it (4 cascades of 2048 texels, the issue's measure),
 // and lll with fewer cascades and other resolutions, each drawn by the hardware and by the compute
-// rasterizer (--shadow-raster); then the sun and K shadowed local lights (--shadows all, 512-texel
-// views): every technique at K = 16 and 64, lll at 1 and 256 (all of the atrium's lights), and on a
-// GPU lll at 16 and 64 with the hardware drawing the local casters.
+// rasterizer (--shadow-raster); then K shadowed local lights (--shadows all, 512-texel views),
+// every technique at K = 1, 16, 64 and 256 (all of the atrium's lights that reach the view), with the
+// sun and in the atrium without it, and on a GPU lll at 16 and 64 with the hardware drawing the
+// local casters; then the issue's measure, the sun and 64 shadowed spots (atrium-spots).
 std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   constexpr const char* kSpotsScene = "atrium-spots";
+  constexpr uint32_t kLightCounts[] = {1, 16, 64,
+                                       256};  // 256: every light of the atrium that reaches the view
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   const uint32_t resolution = options.quick ? 256 : 2048;
   SceneRequest scene{kDefaultSceneName, 0, 1};
@@ -267,9 +270,9 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   add(registeredTechniques(), "none", 4, resolution);
   add(registeredTechniques(), "sun", 4, resolution);
   const auto addLights = [&](const std::vector<std::string>& techniques, uint32_t lights,
-                             const std::string& raster = "auto", const SceneRequest* spots = nullptr) {
-    const SceneRequest& where = spots ? *spots : scene;
-    std::string how = fmt::format("sun + {} shadowed {}{}", lights,
+                             const std::string& raster = "auto", const SceneRequest* other = nullptr) {
+    const SceneRequest& where = other ? *other : scene;
+    std::string how = fmt::format("{}{} shadowed {}{}", where.suns.empty() ? "" : "sun + ", lights,
                                   where.scene == kSpotsScene ? "spot" : "light", lights == 1 ? "" : "s");
     if (raster != "auto") how += ", " + raster + " raster";
     Scenario base = makeScenario("shadows", how, where, size);
@@ -284,8 +287,18 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
       out.push_back(s);
     }
   };
-  for (uint32_t lights : {16u, 64u}) addLights(registeredTechniques(), lights);
-  for (uint32_t lights : {1u, 256u}) addLights({"lll"}, lights);
+  for (uint32_t lights : kLightCounts) addLights(registeredTechniques(), lights);
+  // The local lights' shadows alone: the atrium without the sun.
+  const SceneRequest sunless{kDefaultSceneName, 0, 1};
+  {
+    Scenario base = makeScenario("shadows", "no sun, no shadow", sunless, size);
+    base.settings.shadows = "none";
+    for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
+      s.series = fmt::format("{}, no sun, no shadow", techniqueLabel(s.settings));
+      out.push_back(s);
+    }
+  }
+  for (uint32_t lights : kLightCounts) addLights(registeredTechniques(), lights, "auto", &sunless);
   // Who draws the local lights' casters, where auto picks compute.
   if (!options.cpuDevice)
     for (uint32_t lights : {16u, 64u}) addLights({"lll"}, lights, "hardware");
