@@ -6,8 +6,8 @@
 #include <signal.h>
 
 #include <algorithm>
-#include <chrono>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <optional>
