@@ -19,7 +19,7 @@ sweeps+='|/(Deferred|Prepass)Assets\.'
 bash "$root/scripts/build.sh" "$root/build"
 (cd "$root/build" && ctest --output-on-failure -j "$jobs" --timeout 600 -R "$sweeps|/Soak\.")
 
-# -O1 and line tables only (-g1): the sanitized build took 11 of the command's 27 minutes from a clean
+# -O1 and line tables only (-g1): the sanitized build took 10.9 of the command's 25.5 minutes from a clean
 # clone on a 2-core machine with RelWithDebInfo's -O2 -g; its reports still name files and lines.
 bash "$root/scripts/build.sh" "$root/build-asan" -DLLL_SANITIZE=ON -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
 # Leak checking is off: the Vulkan driver is unloaded before LeakSanitizer runs, so its own
