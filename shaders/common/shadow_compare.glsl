@@ -1,5 +1,5 @@
 // Depth comparisons in a shadow atlas, by hand: the atlases are sampled as plain float textures
-// (render/shadows/shadow_atlas.h), a D32 image where the hardware draws the casters and an R32F one
+// (src/shadows/shadow_atlas.h), a D32 image where the hardware draws the casters and an R32F one
 // that the compute rasterizer writes directly (a copy into a depth image cost more than the
 // drawing on the H200). Reverse depth: a point is lit where its depth is >= the stored one.
 #ifndef LLL_SHADOW_COMPARE_GLSL

@@ -2,7 +2,7 @@
 // the nearest depth of the first pass's key and its bin's large triangles, the key then reset to 0.
 // Workgroup z is the view; texels outside this frame's cells are neither read nor written. Included by
 // caster_resolve.comp (into a buffer, copied into a D32 atlas) and caster_resolve_image.comp (straight into
-// an R32F atlas), which define shadowDepthOut(texel, depth).
+// an R32F atlas), which define shadowDepthOut(texel, size, depth).
 #include "common/frame.glsl"
 #include "shared/shadow_types.h"
 

@@ -35,14 +35,15 @@ std::string RasterWorkspace::problem(const Context& context, uint32_t width, uin
 }
 
 RasterWorkspace::RasterWorkspace(Context& context, uint32_t width, uint32_t height, const std::string& name,
-                                 uint32_t largeCapacity, bool depthBuffer)
-    : width_(width), height_(height), largeCapacity_(largeCapacity) {
+                                 uint32_t largeCapacity, bool depthBuffer, bool resolveResetsKeys)
+    : width_(width), height_(height), largeCapacity_(largeCapacity), resolveResetsKeys_(resolveResetsKeys) {
   constexpr VkBufferUsageFlags kCleared =
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   keys_ = Buffer(context, keyBytes(width, height), kCleared, MemoryUse::Device, name + "-keys");
   // Clear from the start, for a resolve that resets the keys it reads instead of a clear each frame.
-  context.submitAndWait(
-      [&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, keys_.handle(), 0, VK_WHOLE_SIZE, 0); });
+  if (resolveResetsKeys)
+    context.submitAndWait(
+        [&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, keys_.handle(), 0, VK_WHOLE_SIZE, 0); });
   large_ = Buffer(context, kLargeHeader + VkDeviceSize(largeCapacity_) * sizeof(gpu::RasterTriangle),
                   kCleared, MemoryUse::Device, name + "-large-triangles");
   binsPerRow_ = divideRoundingUp(width, kBinSize);
@@ -64,7 +65,8 @@ glm::uvec4 RasterWorkspace::largeParams(uint32_t largestOwnBox) const {
   return glm::uvec4(largeCapacity_, largestOwnBox, binsPerRow_, kBinCapacity);
 }
 
-void RasterWorkspace::clear(FrameGraph& graph, bool keys) const {
+void RasterWorkspace::clear(FrameGraph& graph) const {
+  const bool keys = !resolveResetsKeys_;
   std::vector<ResourceUse> cleared = {uses(large_, Use::TransferWrite), uses(bins_, Use::TransferWrite)};
   if (keys) cleared.push_back(uses(keys_, Use::TransferWrite));
   graph.step(cleared, [&, keys](VkCommandBuffer cmd) {
@@ -79,9 +81,9 @@ std::vector<ResourceUse> RasterWorkspace::triangleUses() const {
           uses(bins_, Use::StorageReadWrite, kCompute)};
 }
 
-std::vector<ResourceUse> RasterWorkspace::resolveUses(bool resetsKeys) const {
+std::vector<ResourceUse> RasterWorkspace::resolveUses() const {
   std::vector<ResourceUse> used = {
-      uses(keys_, resetsKeys ? Use::StorageReadWrite : Use::StorageRead, kCompute),
+      uses(keys_, resolveResetsKeys_ ? Use::StorageReadWrite : Use::StorageRead, kCompute),
       uses(large_, Use::StorageRead, kCompute), uses(bins_, Use::StorageRead, kCompute)};
   if (depth_.handle() != VK_NULL_HANDLE) used.push_back(uses(depth_, Use::StorageWrite, kCompute));
   return used;

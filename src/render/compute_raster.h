@@ -49,25 +49,27 @@ class RasterWorkspace {
 
   RasterWorkspace() = default;
   // `largeCapacity`: how many large triangles the list holds (an atlas of many views needs more).
-  // Without `depthBuffer` the resolve writes its depths elsewhere (an R32F shadow atlas).
+  // Without `depthBuffer` the resolve writes its depths elsewhere (an R32F shadow atlas). With
+  // `resolveResetsKeys` the resolve clears each key it reads (the shadow casters'): the keys are
+  // cleared once here and clear() leaves them alone.
   RasterWorkspace(Context& context, uint32_t width, uint32_t height, const std::string& name,
-                  uint32_t largeCapacity = kLargeCapacity, bool depthBuffer = true);
+                  uint32_t largeCapacity = kLargeCapacity, bool depthBuffer = true,
+                  bool resolveResetsKeys = false);
 
   // Bindings 22 (keys), 23 (large triangles), 24 (depth, where there is one) and 25 (bins).
   DescriptorWriter& bind(DescriptorWriter& writer) const;
   // The push constants' `large` (capacity, largest own box, bins per row, bin capacity).
   glm::uvec4 largeParams(uint32_t largestOwnBox = kLargestOwnBox) const;
-  // The frame-graph step that clears the keys, the list's count and the bins' counts; without
-  // `keys`, the keys are left to the resolve (the shadow casters' resets those it reads).
-  void clear(FrameGraph& graph, bool keys = true) const;
+  // The frame-graph step that clears the list's count, the bins' counts and the keys (unless the
+  // resolve resets them).
+  void clear(FrameGraph& graph) const;
   // The uses of the triangle pass, of the per-pixel pass (which writes the depth), and the step
   // that copies the depth into `image` (a D32 image of the same size): all of it, or only `cells`;
   // a GPU-timed pass when `name` is given.
   std::vector<ResourceUse> triangleUses() const;
-  std::vector<ResourceUse> resolveUses(bool resetsKeys = false) const;
+  std::vector<ResourceUse> resolveUses() const;
   void copyDepth(FrameGraph& graph, const Image& image, std::span<const VkRect2D> cells = {},
                  const std::string& name = {}) const;
-  const Buffer& keys() const { return keys_; }
   const Buffer& large() const { return large_; }
   const Buffer& bins() const { return bins_; }
 
@@ -79,6 +81,7 @@ class RasterWorkspace {
   Buffer bins_;   // per 32x32-pixel bin: its count of large triangles, then their slots
   Buffer depth_;  // float per pixel, copied into the depth image
   uint32_t largeCapacity_ = kLargeCapacity;
+  bool resolveResetsKeys_ = false;
   uint32_t binsPerRow_ = 0;
   uint32_t binCount_ = 0;
 };

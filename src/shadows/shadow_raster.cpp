@@ -72,7 +72,8 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
   const uint32_t large =
       uint32_t(std::clamp<uint64_t>(uint64_t(maxViews) * 2048, RasterWorkspace::kLargeCapacity,
                                     std::max<uint64_t>(mostLarge, RasterWorkspace::kLargeCapacity)));
-  work_ = RasterWorkspace(context, width, height, "shadow-raster", large, /*depthBuffer=*/!intoImage);
+  work_ = RasterWorkspace(context, width, height, "shadow-raster", large, /*depthBuffer=*/!intoImage,
+                          /*resolveResetsKeys=*/true);
   views_ = Buffer(context, sizeof(glm::uvec4) + std::max(1u, maxViews) * sizeof(gpu::ShadowRasterView),
                   kStorage, MemoryUse::Upload, name_ + "-views");
   setViews({});
@@ -87,11 +88,10 @@ ShadowRaster::ShadowRaster(Context& context, const GpuScene& scene, uint32_t wid
 void ShadowRaster::setViews(std::span<const ShadowView> views) {
   const uint32_t count = uint32_t(std::min<size_t>(views.size(), maxViews_));
   std::vector<gpu::ShadowRasterView> packed(count);
-  for (uint32_t v = 0; v < count; ++v)
-    packed[v] = {views[v].viewProj, views[v].reach, glm::uvec4(views[v].x, views[v].y, views[v].size, 0u)};
   cells_.clear();
   largestCell_ = 0;
   for (uint32_t v = 0; v < count; ++v) {
+    packed[v] = {views[v].viewProj, views[v].reach, glm::uvec4(views[v].x, views[v].y, views[v].size, 0u)};
     cells_.push_back({{int32_t(views[v].x), int32_t(views[v].y)}, {views[v].size, views[v].size}});
     largestCell_ = std::max(largestCell_, views[v].size);
   }
@@ -127,7 +127,7 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
   // is off the tiles' grid.
   const uint32_t tiles = divideRoundingUp(largestCell_, RasterWorkspace::kTileSize) + 1;
   const uint32_t views = uint32_t(cells_.size());
-  work_.clear(frame.graph, /*keys=*/false);  // the resolve resets the keys it reads
+  work_.clear(frame.graph);
   frame.graph.pass(name_, work_.triangleUses(), [&](VkCommandBuffer cmd) {
     if (groups == 0) return;
     bindAll(cmd, trianglePipeline_);
@@ -140,7 +140,7 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
         bindAll(cmd, binPipeline_);
         vkCmdDispatch(cmd, kBinningGroups, 1, 1);
       });
-  std::vector<ResourceUse> resolveUses = work_.resolveUses(/*resetsKeys=*/true);
+  std::vector<ResourceUse> resolveUses = work_.resolveUses();
   if (intoImage_) resolveUses.push_back(uses(atlas, Use::StorageWrite, kCompute));
   frame.graph.pass(name_ + "-resolve", resolveUses, [&](VkCommandBuffer cmd) {
     if (views == 0) return;
