@@ -3,6 +3,7 @@
 // the distance from a light to a tile's volume (ternary search, independent of the closed form the
 // GPU uses) and sampled points of a light inside a tile's volume.
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <glm/glm.hpp>
 #include <vector>
@@ -26,6 +27,18 @@ inline float referenceDistanceSquared(glm::vec3 c, glm::vec4 tile, float zNear, 
     (f(a) <= f(b) ? hi : lo) = (f(a) <= f(b) ? b : a);
   }
   return std::min({f(lo), f(zNear), f(zFar)});
+}
+
+// Depth bounds of a tile's depth slice, as common/depth_slices.glsl defines them: slice 0 in front
+// of the tile's nearest opaque surface, slices 1 .. n-1 exponential over its range; one slice is
+// the whole tile.
+inline glm::vec2 referenceSliceBounds(glm::vec2 range, uint32_t slice, uint32_t slices, float zNear) {
+  if (slices <= 1) return {zNear, range.y};
+  if (slice == 0) return {zNear, range.x};
+  const uint32_t last = slices - 1;
+  const float ratio = std::max(range.y / range.x, 1.0f);
+  return {range.x * std::pow(ratio, float(slice - 1) / float(last)),
+          range.x * std::pow(ratio, float(slice) / float(last))};
 }
 
 struct ViewLight {

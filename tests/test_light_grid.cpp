@@ -20,15 +20,6 @@ namespace {
 
 using GridCase = test::SceneWithLights;
 
-// Depth bounds of a cluster's slice, as common/grid_data.glsl defines them (without the slack).
-glm::vec2 sliceBounds(glm::vec2 range, uint32_t slice, uint32_t slices, float zNear) {
-  if (slice == 0) return {zNear, range.x};
-  const uint32_t last = slices - 1;
-  const float ratio = std::max(range.y / range.x, 1.0f);
-  return {range.x * std::pow(ratio, float(slice - 1) / float(last)),
-          range.x * std::pow(ratio, float(slice) / float(last))};
-}
-
 struct ClusterCheck {
   uint64_t mustList = 0;  // (cluster, light) pairs where a sampled point of the light lies in the cluster
   uint64_t missing = 0;
@@ -58,7 +49,7 @@ ClusterCheck checkClusters(const Scene& scene, const RenderSettings& settings) {
           gpu::tileSlopes(tx * t, std::min((tx + 1) * t, w), ty * t, std::min((ty + 1) * t, h), w, h,
                           u.depthParams.z, u.depthParams.w);
       for (uint32_t slice = 0; slice < grid.slices; ++slice) {
-        const glm::vec2 b = sliceBounds(grid.tileRange[tile], slice, grid.slices, zNear);
+        const glm::vec2 b = test::referenceSliceBounds(grid.tileRange[tile], slice, grid.slices, zNear);
         // Points strictly inside the slice: a point on a boundary belongs to either neighbour.
         const float lo = b.x * (1.0f + 1e-3f), hi = b.y * (1.0f - 1e-3f);
         const std::vector<uint32_t>& listed = grid.clusters[size_t(tile) * grid.slices + slice];

@@ -31,6 +31,8 @@ struct ListCheck {
   uint32_t missing = 0;
   uint32_t beyondMargin = 0;
   uint32_t depthOutside = 0;
+  uint32_t outsideSlice = 0;  // links in a depth slice their bounds do not overlap
+  uint32_t slicedOut = 0;     // (tile, slice, light): listed in another slice of the tile, not this one
 };
 
 // How far beyond its range a fill may list a light: the shells' coarseness and the tile inflation.
@@ -54,44 +56,63 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
   renderer.renderFrame(false);
   if (stats) *stats = renderer.technique().stats();
   const TileLightLists lists = readTileLightLists(renderer.technique());
+  EXPECT_EQ(lists.slices, settings.lllSlices == 0 ? 1u : settings.lllSlices + 1);
   const gpu::FrameUniforms& u = renderer.uniforms();
   std::vector<ViewLight> lights;
   for (const Light& light : scene.lights) lights.push_back(toView(light, u.view));
   ListCheck check;
   const float w = float(settings.width), h = float(settings.height), t = float(settings.tileSize);
+  const float zNear = u.depthParams.x;
   for (uint32_t ty = 0; ty < lists.tilesY; ++ty) {
     for (uint32_t tx = 0; tx < lists.tilesX; ++tx) {
       const uint32_t index = ty * lists.tilesX + tx;
       const glm::vec4 slopes =
           gpu::tileSlopes(tx * t, std::min((tx + 1) * t, w), ty * t, std::min((ty + 1) * t, h), w, h,
                           u.depthParams.z, u.depthParams.w);
-      const float zNear = u.depthParams.x, zFar = lists.tileDepth[index];
-      std::vector<const LightLinkRecord*> byLight(lights.size(), nullptr);
-      for (const LightLinkRecord& link : lists.tiles[index]) {
-        EXPECT_LT(link.light, lights.size());
-        if (link.light < lights.size()) byLight[link.light] = &link;
-        ++check.listed;
-      }
-      for (uint32_t i = 0; i < lights.size(); ++i) {
-        const ViewLight& l = lights[i];
-        const float dist = std::sqrt(referenceDistanceSquared(l.center, slopes, zNear, zFar));
-        const std::vector<glm::vec3> inside =
-            dist <= l.range ? samplesInside(l, slopes, zNear, zFar) : std::vector<glm::vec3>{};
-        const bool must = !inside.empty() || (!l.spot && !l.box && dist <= l.range * 0.999f);
-        check.mustList += must;
-        const LightLinkRecord* link = byLight[i];
-        if (must && !link) ++check.missing;
-        // Shells: a front face overwritten in the bounds buffer by another light counts as clipped by
-        // the near plane (Bezrati 1.3.2), so such a link ignores the tile's depth: measure to the
-        // tile's whole frustum.
-        const float marginDistance = settings.lllFill == "shells"
-                                         ? std::sqrt(referenceDistanceSquared(l.center, slopes, zNear, 1e4f))
-                                         : dist;
-        if (link && marginDistance > allowedDistance(settings.lllFill, l, settings, renderer))
-          ++check.beyondMargin;
-        // Every sampled point of the light in this tile lies within the link's depth bounds.
-        for (const glm::vec3& p : link ? inside : std::vector<glm::vec3>{})
-          if (p.z < link->minDepth - 1e-3f * p.z || p.z > link->maxDepth + 1e-3f * p.z) ++check.depthOutside;
+      const float zFar = lists.tileRange[index].y;
+      std::vector<uint32_t> slicesListing(lights.size(), 0);
+      for (uint32_t slice = 0; slice < lists.slices; ++slice)
+        for (const LightLinkRecord& link : lists.lists[size_t(index) * lists.slices + slice])
+          if (link.light < lights.size()) ++slicesListing[link.light];
+      for (uint32_t count : slicesListing)
+        if (count > 0) check.slicedOut += lists.slices - count;
+      for (uint32_t slice = 0; slice < lists.slices; ++slice) {
+        // The slice's volume; with slices, only points strictly inside it (a point on a boundary
+        // belongs to either neighbour).
+        glm::vec2 b = test::referenceSliceBounds(lists.tileRange[index], slice, lists.slices, zNear);
+        if (lists.slices > 1) b = {std::max(b.x * (1.0f + 1e-3f), zNear), b.y * (1.0f - 1e-3f)};
+        std::vector<const LightLinkRecord*> byLight(lights.size(), nullptr);
+        for (const LightLinkRecord& link : lists.lists[size_t(index) * lists.slices + slice]) {
+          EXPECT_LT(link.light, lights.size());
+          if (link.light < lights.size()) byLight[link.light] = &link;
+          ++check.listed;
+          // A link in a slice its depth bounds do not reach lights no point there.
+          const glm::vec2 raw = test::referenceSliceBounds(lists.tileRange[index], slice, lists.slices, zNear);
+          if (lists.slices > 1 && (link.maxDepth < raw.x * (1.0f - 1e-3f) || link.minDepth > raw.y * (1.0f + 1e-3f)))
+            ++check.outsideSlice;
+        }
+        for (uint32_t i = 0; i < lights.size(); ++i) {
+          const ViewLight& l = lights[i];
+          const float dist = std::sqrt(referenceDistanceSquared(l.center, slopes, zNear, zFar));
+          const float sliceDist = b.y > b.x ? std::sqrt(referenceDistanceSquared(l.center, slopes, b.x, b.y)) : 1e30f;
+          const std::vector<glm::vec3> inside =
+              sliceDist <= l.range ? samplesInside(l, slopes, b.x, b.y) : std::vector<glm::vec3>{};
+          const bool must = !inside.empty() || (!l.spot && !l.box && sliceDist <= l.range * 0.999f);
+          check.mustList += must;
+          const LightLinkRecord* link = byLight[i];
+          if (must && !link) ++check.missing;
+          // Shells: a front face overwritten in the bounds buffer by another light counts as clipped by
+          // the near plane (Bezrati 1.3.2), so such a link ignores the tile's depth: measure to the
+          // tile's whole frustum.
+          const float marginDistance = settings.lllFill == "shells"
+                                           ? std::sqrt(referenceDistanceSquared(l.center, slopes, zNear, 1e4f))
+                                           : dist;
+          if (link && marginDistance > allowedDistance(settings.lllFill, l, settings, renderer))
+            ++check.beyondMargin;
+          // Every sampled point of the light in this tile lies within the link's depth bounds.
+          for (const glm::vec3& p : link ? inside : std::vector<glm::vec3>{})
+            if (p.z < link->minDepth - 1e-3f * p.z || p.z > link->maxDepth + 1e-3f * p.z) ++check.depthOutside;
+        }
       }
     }
   }
@@ -105,6 +126,7 @@ struct ListCase {
   uint32_t width;
   uint32_t height;
   uint32_t fillSplits = 0;  // compute fill: workgroups per cell (0: by light count, here 1)
+  uint32_t slices = 0;      // --lll-slices
 };
 
 class LllLists : public ::testing::TestWithParam<ListCase> {};
@@ -118,11 +140,16 @@ TEST_P(LllLists, MatchCpuReference) {
   settings.width = c.width;
   settings.height = c.height;
   settings.lllFillSplits = c.fillSplits;
+  settings.lllSlices = c.slices;
   const ListCheck check = checkLists(test::awkwardLightsScene(40), settings);
   EXPECT_GT(check.mustList, 100u);  // the scene really exercises the lists
   EXPECT_EQ(check.missing, 0u) << "lights the reference requires but the fill did not list";
   EXPECT_EQ(check.beyondMargin, 0u) << "lights listed farther away than the fill's documented margin";
   EXPECT_EQ(check.depthOutside, 0u) << "light points outside their link's depth bounds";
+  EXPECT_EQ(check.outsideSlice, 0u) << "links in depth slices their bounds do not reach";
+  if (c.slices > 0) {
+    EXPECT_GT(check.slicedOut, check.listed / 4) << "the slices should keep most lights out of most lists";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Fills, LllLists,
@@ -132,13 +159,19 @@ INSTANTIATE_TEST_SUITE_P(Fills, LllLists,
                                            ListCase{"compute", 1, 111, 67}, ListCase{"ray", 1, 111, 67},
                                            ListCase{"shells", 1, 111, 67},
                                            ListCase{"compute", 8, 333, 197, 3},
-                                           ListCase{"compute", 1, 111, 67, 16}),
+                                           ListCase{"compute", 1, 111, 67, 16},
+                                           ListCase{"compute", 8, 333, 197, 0, 16},
+                                           ListCase{"compute", 8, 333, 197, 3, 16},
+                                           ListCase{"compute", 1, 111, 67, 0, 32},
+                                           ListCase{"ray", 16, 333, 197, 0, 8},
+                                           ListCase{"shells", 8, 333, 197, 0, 4}),
                          [](const auto& info) {
                            return std::string(info.param.fill) + "_tile" + std::to_string(info.param.tile) +
                                   "_" + std::to_string(info.param.width) + "x" +
                                   std::to_string(info.param.height) +
                                   (info.param.fillSplits ? "_splits" + std::to_string(info.param.fillSplits)
-                                                         : "");
+                                                         : "") +
+                                  (info.param.slices ? "_slices" + std::to_string(info.param.slices) : "");
                          });
 
 // The compute fill reads the lights binned to its cell (lighting/light_bins.h). Many large lights
@@ -173,15 +206,18 @@ using ImageCase = test::SceneWithLights;
 
 // Each fill with the default compute shading, and the chapter's fragment shading with one fill
 // (fill and shading are independent: the lists are the same).
+// Depth-sliced lists (--lll-slices) with the compute fill and with a raster fill.
 struct Variant {
   const char* fill;
   const char* shade;
+  uint32_t slices = 0;
 };
-constexpr Variant kVariants[] = {
-    {"compute", "compute"}, {"ray", "compute"}, {"shells", "compute"}, {"compute", "fragment"}};
+constexpr Variant kVariants[] = {{"compute", "compute"},     {"ray", "compute"},
+                                 {"shells", "compute"},      {"compute", "fragment"},
+                                 {"compute", "compute", 16}, {"shells", "fragment", 8}};
 
 std::string variantName(const Variant& v) {
-  return std::string(v.fill) + "/" + v.shade;
+  return std::string(v.fill) + "/" + v.shade + (v.slices ? "/slices" + std::to_string(v.slices) : "");
 }
 
 class LllImages : public ::testing::TestWithParam<ImageCase> {};
@@ -196,6 +232,7 @@ TEST_P(LllImages, EveryFillMatchesForward) {
   for (const Variant& v : kVariants) {
     settings.lllFill = v.fill;
     settings.lllShade = v.shade;
+    settings.lllSlices = v.slices;
     const test::Rendered lll = test::render(scene, settings);
     test::expectWithinBound(
         lll.ldr, reference.ldr, test::kSameImage,
@@ -226,6 +263,7 @@ TEST(LllImages, AwkwardLightsMatchForward) {
   for (const Variant& v : kVariants) {
     settings.lllFill = v.fill;
     settings.lllShade = v.shade;
+    settings.lllSlices = v.slices;
     test::expectWithinBound(test::render(scene, settings).ldr, reference.ldr, test::kSameImage,
                             "lll/" + variantName(v) + " awkward lights");
   }

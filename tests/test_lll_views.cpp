@@ -57,7 +57,7 @@ TEST_P(HeatmapView, ShowsEachTilesListLength) {
     for (uint32_t x = 0; x < r.hdr.width; ++x) {
       const glm::vec4 c = r.hdr.at(x, y);
       if (c.r == 0.0f && c.g == 0.0f && c.b == 0.0f) continue;  // background or an empty list
-      const size_t count = r.lists.tiles[(y / tile) * r.lists.tilesX + x / tile].size();
+      const size_t count = r.lists.lists[(y / tile) * r.lists.tilesX + x / tile].size();
       ASSERT_GT(count, 0u) << "a coloured pixel in a tile without lights at " << x << "," << y;
       const glm::vec3 expected = heat(float(count) / 32.0f);
       ASSERT_NEAR(c.r, expected.r, 2e-3f) << x << "," << y << " list of " << count;

@@ -2,6 +2,7 @@
 // depth falls in, and the depth bounds of a slice. Build passes define GRID_BUILD_PASS.
 #ifndef LLL_GRID_DATA_GLSL
 #define LLL_GRID_DATA_GLSL
+#include "common/depth_slices.glsl"
 #include "common/frame.glsl"
 #include "shared/grid_types.h"
 
@@ -47,22 +48,14 @@ uint gridTileOf(uvec2 pixel) {
 
 // The slice of a tile with depth range `range` (nearest, farthest) that holds `depth`.
 uint sliceOf(vec2 range, float depth) {
-  if (depth < range.x) return 0u;
-  uint last = gridSlices() - 1u;
-  float ratio = range.y / range.x;
-  if (last <= 1u || !(ratio > 1.0001)) return 1u;
-  float s = float(last) * log(depth / range.x) / log(ratio);
-  return 1u + min(uint(max(s, 0.0)), last - 1u);
+  return depthSliceOf(range, depth, gridSlices());
 }
 
 // Depth bounds of slice `slice` of a tile with depth range `range`, widened by kGridSliceSlack.
 vec2 sliceBounds(vec2 range, uint slice) {
-  if (slice == 0u) return vec2(frame.depthParams.x, range.x * (1.0 + kGridSliceSlack));
-  uint last = gridSlices() - 1u;
-  float ratio = max(range.y / range.x, 1.0);
-  float lo = slice == 1u ? range.x : range.x * pow(ratio, float(slice - 1u) / float(last));
-  float hi = slice == last ? range.y : range.x * pow(ratio, float(slice) / float(last));
-  return vec2(lo * (1.0 - kGridSliceSlack), hi * (1.0 + kGridSliceSlack));
+  vec2 b = depthSliceBounds(range, slice, gridSlices(), frame.depthParams.x);
+  return slice == 0u ? vec2(b.x, b.y * (1.0 + kGridSliceSlack))
+                     : vec2(b.x * (1.0 - kGridSliceSlack), b.y * (1.0 + kGridSliceSlack));
 }
 
 // The lights of the cluster holding a point at `viewDepth` seen through `pixel`: first and end

@@ -1,7 +1,9 @@
 // The Light Linked List's buffers (set 0, bindings 3..10) and the two operations on them: pushing
-// a link at a tile's head (fills) and walking a tile's list (every shading pass).
+// a link at a list's head (fills) and walking a list (every shading pass). A tile has one list, or
+// one per depth slice with --lll-slices (common/depth_slices.glsl): list tile * slices + slice.
 #ifndef LLL_DATA_GLSL
 #define LLL_DATA_GLSL
+#include "common/depth_slices.glsl"
 #include "common/frame.glsl"
 #include "shared/lll_types.h"
 
@@ -32,9 +34,21 @@ layout(std430, set = 0, binding = 5) LLL_LIST_ACCESS buffer LinkBlock {
 layout(std430, set = 0, binding = 6) LLL_COUNTER_ACCESS buffer CounterBlock {
   LllCounters counters;
 };
-layout(std430, set = 0, binding = 7) LLL_LIST_ACCESS buffer TileDepthBlock {
-  float tileDepth[];
+// Nearest and farthest linear depth of each tile's opaque surfaces.
+layout(std430, set = 0, binding = 7) LLL_LIST_ACCESS buffer TileRangeBlock {
+  vec2 tileRange[];
 };
+
+// Lists per tile: 1, or the depth slices of --lll-slices.
+uint listSlices() {
+  return max(lll.slicing.x, 1u);
+}
+
+// The list that lights a point at `viewDepth` in tile `tileIndex`.
+uint listIndexOf(uint tileIndex, float viewDepth) {
+  uint slices = listSlices();
+  return slices == 1u ? tileIndex : tileIndex * slices + depthSliceOf(tileRange[tileIndex], viewDepth, slices);
+}
 
 // Clamped to the grid: helper invocations beyond the image's right or bottom edge must still read
 // a real list.
@@ -81,13 +95,24 @@ void writeLink(uint link, uint lightIndex, float minDepth, float maxDepth, uint 
   }
 }
 
-// Allocates a link and pushes it at the head of the tile's list (LIFO), as the raster fills do:
-// any number of fragments may push into one tile at once. Past the pool's end the counter still
-// counts, so the CPU learns the size the pool must grow to; nothing is written.
+// The run of a tile's lists that a light with these depth bounds belongs in: every slice a point
+// within the bounds can fall in (the walk finds a point's slice with the same function).
+uvec2 listsOverlapping(uint tileIndex, float minDepth, float maxDepth) {
+  uint slices = listSlices();
+  uvec2 s = slices == 1u ? uvec2(0u)
+                         : depthSlicesOverlapping(tileRange[tileIndex], max(minDepth, 0.0), maxDepth, slices);
+  return tileIndex * slices + s;
+}
+
+// Allocates links and pushes one at the head of each of the tile's lists the light's depth bounds
+// overlap (LIFO), as the raster fills do: any number of fragments may push into one tile at once.
+// Past the pool's end the counter still counts, so the CPU learns the size the pool must grow to;
+// nothing is written.
 void pushLink(uint tileIndex, uint lightIndex, float minDepth, float maxDepth) {
-  uint link = atomicAdd(counters.linksRequested, 1u);
-  if (link >= lll.params.x) return;
-  writeLink(link, lightIndex, minDepth, maxDepth, atomicExchange(tileHeads[tileIndex], link));
+  uvec2 lists = listsOverlapping(tileIndex, minDepth, maxDepth);
+  uint link = atomicAdd(counters.linksRequested, lists.y - lists.x + 1u);
+  for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
+    writeLink(link, lightIndex, minDepth, maxDepth, atomicExchange(tileHeads[list], link));
 }
 #endif
 

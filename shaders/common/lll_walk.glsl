@@ -5,10 +5,10 @@
 #include "common/brdf.glsl"
 #include "common/lll_data.glsl"
 
-// The walk itself, as an iterator: start with link = tileHeads[tile] and steps = 0; each call
+// The walk itself, as an iterator: start with link = tileHeads[list] and steps = 0; each call
 // yields the next listed light whose depth bounds contain `linearDepth`, false at the list's end.
 // It also stops after longestPossibleList() links, so a corrupt list can never hang the GPU.
-//   uint link = tileHeads[tile], steps = 0u, light;
+//   uint link = tileHeads[listIndexOf(tile, depth)], steps = 0u, light;
 //   while (nextListedLight(link, steps, depth, light)) ... lights[light] ...
 bool nextListedLight(inout uint link, inout uint steps, float linearDepth, out uint light) {
   light = 0u;
@@ -24,9 +24,9 @@ bool nextListedLight(inout uint link, inout uint steps, float linearDepth, out u
   return false;
 }
 
-uint listLength(uint tileIndex) {
+uint listLength(uint list) {
   uint count = 0u;
-  uint link = tileHeads[tileIndex];
+  uint link = tileHeads[list];
   for (; !isListEnd(link) && count < longestPossibleList(); ++count) link = readLink(link).next;
   return count;
 }

@@ -30,8 +30,14 @@ struct LllUniforms {
   // x link pool capacity (links), y link format, z debug view, w workgroups per cell of the compute
   // fill (each takes a part of the cell's binned lights).
   uvec4 params;
+  // x lists per tile: 1, or its depth slices with --lll-slices (common/depth_slices.glsl); yzw unused.
+  uvec4 slicing;
 };
-LLL_CHECK_SIZE(LllUniforms, 32);
+LLL_CHECK_SIZE(LllUniforms, 48);
+
+// Most depth slices per tile of --lll-slices N (N + 1 lists: N across the tile's opaque depth range and
+// one in front of it).
+LLL_CONST(uint, kMaxLllSlices, 32u);
 
 // Raster fills: which lights one instanced draw covers.
 struct FillPush {
@@ -44,7 +50,7 @@ struct LllCounters {
   uint linksRequested;  // every allocation attempt, also past the pool's end: the size it must have
   uint longestList;     // written by the stats pass
   uint totalListLength;
-  uint tilesWithLights;
+  uint listsWithLights;  // lists (tiles, or tile slices) with at least one link
 };
 LLL_CHECK_SIZE(LllCounters, 16);
 

@@ -140,6 +140,7 @@ class LightLinkedList final : public Technique {
   uint32_t tilesY_ = 0;
   uint32_t tiles_ = 0;
   uint32_t fillSplits_ = 1;
+  uint32_t slices_ = 1;  // lists per tile
   uint64_t poolCapacity_ = 0;
   uint64_t maxPoolLinks_ = 0;
   uint32_t overflows_ = 0;
@@ -153,7 +154,7 @@ class LightLinkedList final : public Technique {
   Buffer heads_;
   Buffer links_;
   Buffer counters_;
-  Buffer tileDepth_;
+  Buffer tileRange_;  // nearest and farthest linear depth of each tile
   Buffer bounds_;
   Buffer shellOrder_;
   // The compute fill's first level; its cells' far depths are written by the tile-depth pass.
@@ -192,6 +193,11 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
     throw InputError(fmt::format("--lll-fill-splits {}: expected 0 (by light count) to {}",
                                  settings.lllFillSplits, kMaxCellSplits));
   fillSplits_ = settings.lllFillSplits ? settings.lllFillSplits : cellSplitsFor(context, scene.lightCount());
+  if (settings.lllSlices > gpu::kMaxLllSlices)
+    throw InputError(fmt::format("--lll-slices {}: expected 0 (one list per tile) to {}", settings.lllSlices,
+                                 gpu::kMaxLllSlices));
+  slices_ = settings.lllSlices == 0 ? 1 : settings.lllSlices + 1;
+  uniforms_.slicing = glm::uvec4(slices_, 0, 0, 0);
   uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),
                              float(targets.height) / float(tilesY_ * tile), 0.0f, 0.0f);
@@ -205,7 +211,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   createBuffers();
   createPipelines();
   if (fill_ != LllFill::Compute) createShells(scene);
-  allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile));
+  allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile) * (slices_ == 1 ? 1 : 2));
 }
 
 LightLinkedList::~LightLinkedList() {
@@ -216,8 +222,8 @@ void LightLinkedList::createBuffers() {
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   uniformBuffer_ =
       Buffer(context_, sizeof(gpu::LllUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
-  heads_ = Buffer(context_, uint64_t(tiles_) * 4, storage, MemoryUse::Device);
-  tileDepth_ = Buffer(context_, uint64_t(tiles_) * 4, storage, MemoryUse::Device);
+  heads_ = Buffer(context_, uint64_t(tiles_) * slices_ * 4, storage, MemoryUse::Device);
+  tileRange_ = Buffer(context_, uint64_t(tiles_) * 8, storage, MemoryUse::Device);
   // Read by the CPU after each frame: link requests (overflow) and list statistics.
   counters_ = Buffer(context_, sizeof(gpu::LllCounters), storage, MemoryUse::Readback);
   if (fill_ == LllFill::Shells)
@@ -318,9 +324,9 @@ LightingInterface LightLinkedList::lighting() const {
                 .storage(4, heads_.handle())
                 .storage(5, links_.handle())
                 .storage(6, counters_.handle())
-                .storage(7, tileDepth_.handle());
+                .storage(7, tileRange_.handle());
           },
-          {&heads_, &links_, &tileDepth_}};
+          {&heads_, &links_, &tileRange_}};
 }
 
 void LightLinkedList::clear(FrameContext& frame) {
@@ -337,7 +343,7 @@ void LightLinkedList::reduceTileDepth(FrameContext& frame) {
   constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   frame.graph.pass("lll-tile-depth",
                    {uses(frame.targets.depth, Use::Sampled, kCompute),
-                    uses(tileDepth_, Use::StorageWrite, kCompute), bins_.farDepthWrite(kCompute)},
+                    uses(tileRange_, Use::StorageWrite, kCompute), bins_.farDepthWrite(kCompute)},
                    [&](VkCommandBuffer cmd) {
                      tileDepthPipeline_.bind(cmd);
                      // Only this pass samples the depth buffer: binding it while shading reads it as an
@@ -354,7 +360,7 @@ void LightLinkedList::reduceTileDepth(FrameContext& frame) {
 // What a fill reads and writes, in `stages`.
 std::vector<ResourceUse> LightLinkedList::fillUses(VkPipelineStageFlags2 stages) const {
   std::vector<ResourceUse> out = {
-      uses(tileDepth_, Use::StorageRead, stages), uses(heads_, Use::StorageReadWrite, stages),
+      uses(tileRange_, Use::StorageRead, stages), uses(heads_, Use::StorageReadWrite, stages),
       uses(links_, Use::StorageWrite, stages), uses(counters_, Use::StorageReadWrite, stages)};
   if (bounds_) out.push_back(uses(bounds_, Use::StorageReadWrite, stages));
   if (shellOrder_) out.push_back(uses(shellOrder_, Use::StorageRead, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT));
@@ -433,7 +439,7 @@ void LightLinkedList::measureLists(FrameContext& frame) {
                    [&](VkCommandBuffer cmd) {
                      statsPipeline_.bind(cmd);
                      descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-                     vkCmdDispatch(cmd, divideRoundingUp(tiles_, 64), 1, 1);
+                     vkCmdDispatch(cmd, divideRoundingUp(tiles_ * slices_, 64), 1, 1);
                    });
 }
 
@@ -463,8 +469,9 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
       {"links_used", double(lastCounters_.linksRequested)},
       {"link_pool_capacity", double(poolCapacity_)},
       {"link_pool_bytes", double(poolCapacity_ * linkBytes_)},
-      {"head_bytes", double(tiles_) * 4},
-      {"tile_depth_bytes", double(tiles_) * 4},
+      {"head_bytes", double(tiles_) * slices_ * 4},
+      {"tile_depth_bytes", double(tiles_) * 8},
+      {"lists_per_tile", double(slices_)},
       {"link_bytes_each", double(linkBytes_)},
       {"overflows", double(overflows_)},
       {"tiles", double(tiles_)},
@@ -478,8 +485,8 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
   if (measured_ && countersValid_) {
     s.push_back({"longest_list", double(lastCounters_.longestList)});
     s.push_back({"mean_list", double(lastCounters_.totalListLength) /
-                                  double(std::max(1u, lastCounters_.tilesWithLights))});
-    s.push_back({"tiles_with_lights", double(lastCounters_.tilesWithLights)});
+                                  double(std::max(1u, lastCounters_.listsWithLights))});
+    s.push_back({"lists_with_lights", double(lastCounters_.listsWithLights)});
   }
   return s;
 }
@@ -487,23 +494,25 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
 TileLightLists LightLinkedList::readLists() {
   const std::vector<uint32_t> heads = readBackWords(context_, heads_),
                               words = readBackWords(context_, links_),
-                              depth = readBackWords(context_, tileDepth_);
+                              depth = readBackWords(context_, tileRange_);
   TileLightLists lists;
   lists.tilesX = tilesX_;
   lists.tilesY = tilesY_;
-  lists.tiles.resize(tiles_);
-  for (uint32_t t = 0; t < tiles_; ++t) {
-    lists.tileDepth.push_back(std::bit_cast<float>(depth[t]));
+  lists.slices = slices_;
+  for (uint32_t t = 0; t < tiles_; ++t)
+    lists.tileRange.emplace_back(std::bit_cast<float>(depth[2 * t]), std::bit_cast<float>(depth[2 * t + 1]));
+  lists.lists.resize(size_t(tiles_) * slices_);
+  for (size_t t = 0; t < lists.lists.size(); ++t) {
     uint32_t link = heads[t];
     for (uint64_t guard = 0; link != gpu::kLinkEnd && guard < poolCapacity_; ++guard) {
       if (linkFormat_ == gpu::kLinkCompact) {
         if (link == gpu::kCompactLinkEnd) break;
         const glm::vec2 d = glm::unpackHalf2x16(words[2 * link]);
-        lists.tiles[t].push_back({words[2 * link + 1] >> 24, d.x, d.y});
+        lists.lists[t].push_back({words[2 * link + 1] >> 24, d.x, d.y});
         link = words[2 * link + 1] & gpu::kCompactLinkEnd;
       } else {
         const uint32_t* w = &words[4 * size_t(link)];
-        lists.tiles[t].push_back({w[2], std::bit_cast<float>(w[0]), std::bit_cast<float>(w[1])});
+        lists.lists[t].push_back({w[2], std::bit_cast<float>(w[0]), std::bit_cast<float>(w[1])});
         link = w[3];
       }
     }

@@ -5,6 +5,7 @@
 // on captured frames); the shared passes then walk the lists through its lighting interface
 // (shaders/lighting/lll/lighting.glsl).
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <memory>
 #include <vector>
 
@@ -24,8 +25,9 @@ struct LightLinkRecord {
 struct TileLightLists {
   uint32_t tilesX = 0;
   uint32_t tilesY = 0;
-  std::vector<float> tileDepth;                     // farthest linear depth of each tile
-  std::vector<std::vector<LightLinkRecord>> tiles;  // each tile's links, head first
+  uint32_t slices = 1;                // lists per tile: 1, or its depth slices (--lll-slices N: N + 1)
+  std::vector<glm::vec2> tileRange;   // nearest and farthest linear depth of each tile's opaque surfaces
+  std::vector<std::vector<LightLinkRecord>> lists;  // list tile * slices + slice, head first
 };
 
 // Reads the lists back from an "lll" technique; throws std::invalid_argument for another one.

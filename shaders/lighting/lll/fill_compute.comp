@@ -10,6 +10,8 @@
 // Each thread owns its tile's list, so links need no atomic exchange at the head, and the group
 // allocates all its links of a batch with one atomic on the global counter (shared-memory offsets
 // within the group) instead of one per link: 16 full-screen lights at 1080p are 518,400 links.
+// With depth-sliced lists (--lll-slices) a light gets a link in each of its tile's slices its depth
+// bounds overlap, pushed at that slice's head with an atomic exchange (the cell's parts share them).
 #include "common/light_bins.glsl"
 #include "lighting/lll/light_shape.glsl"
 
@@ -33,7 +35,8 @@ void main() {
   bool valid = tile.x < tilesSize.x && tile.y < tilesSize.y;
   uint tileIndex = tile.y * tilesSize.x + tile.x;
   float zNear = frame.depthParams.x;
-  float far = valid ? tileDepth[tileIndex] : 0.0;
+  float far = valid ? tileRange[tileIndex].y : 0.0;
+  bool sliced = listSlices() > 1u;
   if (gl_LocalInvocationIndex == 0u) groupFarBits = 0u;
   barrier();
   atomicMax(groupFarBits, floatBitsToUint(far));  // non-negative floats order like their bits
@@ -78,6 +81,15 @@ void main() {
         hits[i >> 5] |= 1u << (i & 31u);
     }
     uint own = bitCount(hits.x) + bitCount(hits.y);
+    for (uint word = 0u; sliced && word < 2u; ++word) {
+      own -= bitCount(hits[word]);
+      for (uint bits = hits[word]; bits != 0u; bits &= bits - 1u) {
+        GpuLight light = lights[candidates[word * 32u + uint(findLSB(bits))]];
+        float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
+        uvec2 lists = listsOverlapping(tileIndex, z - halfDepth, z + halfDepth);
+        own += lists.y - lists.x + 1u;
+      }
+    }
     uint offset = own > 0u ? atomicAdd(groupLinks, own) : 0u;
     barrier();
     if (gl_LocalInvocationIndex == 0u && groupLinks > 0u)
@@ -91,6 +103,12 @@ void main() {
         if (link >= lll.params.x) break;  // past the pool: counted, not written (the CPU grows it)
         GpuLight light = lights[candidates[i]];
         float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
+        if (sliced) {
+          uvec2 lists = listsOverlapping(tileIndex, z - halfDepth, z + halfDepth);
+          for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
+            writeLink(link, candidates[i], z - halfDepth, z + halfDepth, atomicExchange(tileHeads[list], link));
+          continue;
+        }
         writeLink(link, candidates[i], z - halfDepth, z + halfDepth, head);
         if (head == kLinkEnd) {
           tail = link;
@@ -101,7 +119,7 @@ void main() {
     }
     barrier();
   }
-  if (!valid) return;
+  if (!valid || sliced) return;
   if (splits == 1u) {
     tileHeads[tileIndex] = head;
   } else if (head != kLinkEnd) {

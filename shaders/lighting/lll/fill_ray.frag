@@ -110,6 +110,6 @@ void main() {
   }
   if (hi < lo || hi <= 0.0) return;
   lo = max(lo, 0.0);                      // the eye is inside the light
-  if (lo > tileDepth[tileIndex]) return;  // software depth test: behind the tile's farthest surface
+  if (lo > tileRange[tileIndex].y) return;  // software depth test: behind the tile's farthest surface
   pushLink(tileIndex, inLight, lo, hi);
 }

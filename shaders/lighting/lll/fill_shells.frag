@@ -24,7 +24,7 @@ void main() {
   uint slot = (inBatchId % kBoundsLayers) * frame.counts.z * frame.counts.w + tileIndex;
   if (kBackFaces == 0u) {
     uint depthBits = halfRoundedDown(max(inDepth, 0.0));
-    if (inDepth > tileDepth[tileIndex]) depthBits |= 0x8000u;  // occluded: store it negated
+    if (inDepth > tileRange[tileIndex].y) depthBits |= 0x8000u;  // occluded: store it negated
     tileBounds[slot] = (inBatchId << 16) | depthBits;
     return;
   }

@@ -1,6 +1,6 @@
 // The light linked list's lighting interface (shaders/common/lighting.glsl says what an interface
-// provides): the lights of the pixel's tile list whose depth bounds hold the point, and the debug
-// views (--debug-view heatmap | bounds | tiles).
+// provides): the lights of the list of the pixel's tile (and depth slice, with --lll-slices) whose
+// depth bounds hold the point, and the debug views (--debug-view heatmap | bounds | tiles).
 #ifndef LLL_LIGHTING_INTERFACE_GLSL
 #define LLL_LIGHTING_INTERFACE_GLSL
 #include "common/debug_colors.glsl"
@@ -13,7 +13,7 @@ struct LightCursor {
 };
 
 LightCursor lightsAt(uvec2 pixel, float viewDepth) {
-  return LightCursor(tileHeads[tileIndexOf(pixel)], 0u, viewDepth);
+  return LightCursor(tileHeads[listIndexOf(tileIndexOf(pixel), viewDepth)], 0u, viewDepth);
 }
 
 bool nextLight(inout LightCursor cursor, out uint light) {
@@ -41,7 +41,7 @@ vec3 lightingView(Surface s, uvec2 pixel, float viewDepth, vec3 color, out bool 
   uint view = lll.params.z;
   replaced = view == kDebugHeatmap || view == kDebugBounds;
   if (view == kDebugHeatmap) {
-    uint count = listLength(tileIndexOf(pixel));
+    uint count = listLength(listIndexOf(tileIndexOf(pixel), viewDepth));
     return count == 0u ? vec3(0.0) : heat(float(count) / float(frame.display.y));
   }
   if (view == kDebugBounds) return boundsView(s, pixel, viewDepth);
