@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -108,6 +109,26 @@ TEST(BenchSuites, DensityKeepsLightsPerPixelAndSkipsTheSlowTechniquesBeyondTheir
 }
 
 // The density scenes: a quarter the range and a sixteenth the intensity at 64x the lights.
+TEST(BenchSuites, SlicesIsLllWithAndWithoutDepthSlicesOnBothLightSets) {
+  const auto full = buildSuite("slices", SuiteOptions{});
+  ASSERT_EQ(full.size(), 2u * 3u * 6u);
+  size_t dense = 0, sliced = 0;
+  std::set<std::string> labels;
+  for (const Scenario& s : full) {
+    EXPECT_EQ(s.settings.technique, "lll");
+    EXPECT_EQ(s.settings.lllFill, "compute");
+    EXPECT_LE(s.settings.lllSlices, 32u);
+    EXPECT_TRUE(s.skip.empty());
+    dense += s.scene.scaleIntensityWithRange;
+    sliced += s.settings.lllSlices > 0;
+    labels.insert(seriesLabel(s));
+  }
+  EXPECT_EQ(dense, 18u);
+  EXPECT_EQ(sliced, 30u);
+  EXPECT_EQ(labels.size(), 6u);  // each slice count is its own series
+  EXPECT_TRUE(labels.count("lll/compute/slices16")) << fmt::format("{}", fmt::join(labels, ", "));
+}
+
 TEST(BenchSuites, DensityScalesIntensityWithTheSquareOfTheRange) {
   SceneRequest plain{"atrium", 16, 1};
   SceneRequest scaled = plain;

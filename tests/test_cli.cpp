@@ -121,6 +121,10 @@ TEST_F(CliTest, LightsBeyondTheLightCap) {
   expectBadInput(render("plane", {"--lights", "16777216"}), {"--lights 16777216", "16777217", "at most"});
 }
 
+TEST_F(CliTest, LllSlicesBeyondTheMost) {
+  expectBadInput(render("plane", {"--technique", "lll", "--lll-slices", "33"}), {"--lll-slices", "33"});
+}
+
 TEST_F(CliTest, AbsurdLightRangeScale) {
   expectBadInput(render("plane", {"--lights", "4", "--light-range-scale", "0"}),
                  {"--light-range-scale", "0"});

@@ -288,6 +288,20 @@ TEST(LllImages, TinyPoolGrowsAndStillMatches) {
   }
 }
 
+TEST(LllImages, MoreSlicesThanTheMostAreRefused) {
+  RenderSettings settings;
+  settings.technique = "lll";
+  settings.width = 32;
+  settings.height = 32;
+  settings.lllSlices = gpu::kMaxLllSlices + 1;
+  try {
+    Renderer(test::gpuContext(), test::awkwardLightsScene(4), settings);
+    ADD_FAILURE() << "33 slices accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--lll-slices 33"), std::string::npos) << e.what();
+  }
+}
+
 TEST(LllImages, CompactLinksRefuseTooManyLights) {
   Scene scene = test::awkwardLightsScene(300);
   RenderSettings settings;

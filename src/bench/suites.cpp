@@ -155,6 +155,37 @@ std::vector<Scenario> densitySuite(const SuiteOptions& options) {
   return out;
 }
 
+// Depth-sliced lists (--lll-slices): lll's compute fill with one list per tile and with 2 to 32
+// slices, on the density suite's lights (small, at constant density) and the scaling suite's (the
+// default scene's ranges, many lights along each tile's depth).
+std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
+  const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
+  const std::vector<uint32_t> slices =
+      options.quick ? std::vector<uint32_t>{0, 4, 16} : std::vector<uint32_t>{0, 2, 4, 8, 16, 32};
+  std::vector<Scenario> out;
+  for (const bool dense : {true, false}) {
+    const std::vector<uint32_t> counts =
+        options.quick ? std::vector<uint32_t>{64, 256}
+        : dense       ? std::vector<uint32_t>{4096, 65536, 1048576}
+                      : std::vector<uint32_t>{1024, 16384, 65536};
+    for (const uint32_t lights : counts) {
+      SceneRequest scene{kDefaultSceneName, lights, 1};
+      if (dense) {
+        scene.lightRangeScale = float(std::cbrt(1024.0 / double(lights)));
+        scene.scaleIntensityWithRange = true;
+      }
+      for (const uint32_t n : slices) {
+        Scenario s = makeScenario("slices", fmt::format("{} {} lights", dense ? "density" : "scaling", lights),
+                                  scene, size);
+        s.settings.technique = "lll";
+        s.settings.lllSlices = n;
+        out.push_back(s);
+      }
+    }
+  }
+  return out;
+}
+
 // What the tile size costs and saves: time and light-list memory of the LLL, tile 1 to 16.
 std::vector<Scenario> tilesSuite(const SuiteOptions& options) {
   const uint32_t lights = options.quick ? 64 : 1024;
@@ -407,7 +438,8 @@ std::string lllVariant(const RenderSettings& settings) {
   if (settings.technique != "lll") return "";
   if (settings.lllShade == "fragment") return settings.lllFill + "/fragment-shade";
   if (settings.surfaces == "gbuffer") return settings.lllFill + "/gbuffer";
-  return settings.raster == "hardware" ? settings.lllFill + "/hardware-raster" : settings.lllFill;
+  const std::string sliced = settings.lllSlices ? fmt::format("/slices{}", settings.lllSlices) : "";
+  return (settings.raster == "hardware" ? settings.lllFill + "/hardware-raster" : settings.lllFill) + sliced;
 }
 
 std::string techniqueLabel(const RenderSettings& settings) {
@@ -415,8 +447,8 @@ std::string techniqueLabel(const RenderSettings& settings) {
 }
 
 const std::vector<std::string>& suiteNames() {
-  static const std::vector<std::string> names = {"threel", "scaling", "density",  "tiles",  "overdraw",
-                                                 "smoke",  "gi",      "gi-error", "shadows"};
+  static const std::vector<std::string> names = {"threel", "scaling",  "density", "slices", "tiles",
+                                                 "overdraw", "smoke", "gi",      "gi-error", "shadows"};
   return names;
 }
 
@@ -424,6 +456,7 @@ std::vector<Scenario> buildSuite(const std::string& suite, const SuiteOptions& o
   if (suite == "threel") return threelSuite(options);
   if (suite == "scaling") return scalingSuite(options);
   if (suite == "density") return densitySuite(options);
+  if (suite == "slices") return slicesSuite(options);
   if (suite == "tiles") return tilesSuite(options);
   if (suite == "overdraw") return overdrawSuite(options);
   if (suite == "smoke") return smokeSuite(options);
