@@ -29,18 +29,6 @@ inline float referenceDistanceSquared(glm::vec3 c, glm::vec4 tile, float zNear, 
   return std::min({f(lo), f(zNear), f(zFar)});
 }
 
-// Depth bounds of a tile's depth slice, as common/depth_slices.glsl defines them: slice 0 in front
-// of the tile's nearest opaque surface, slices 1 .. n-1 exponential over its range; one slice is
-// the whole tile.
-inline glm::vec2 referenceSliceBounds(glm::vec2 range, uint32_t slice, uint32_t slices, float zNear) {
-  if (slices <= 1) return {zNear, range.y};
-  if (slice == 0) return {zNear, range.x};
-  const uint32_t last = slices - 1;
-  const float ratio = std::max(range.y / range.x, 1.0f);
-  return {range.x * std::pow(ratio, float(slice - 1) / float(last)),
-          range.x * std::pow(ratio, float(slice) / float(last))};
-}
-
 struct ViewLight {
   glm::vec3 center;  // view space, z = depth in front of the eye, y up
   glm::vec3 axis;

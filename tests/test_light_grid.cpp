@@ -12,6 +12,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/errors.h"
 #include "scene/scene_source.h"
+#include "shared/depth_slices.h"
 #include "shared/lll_types.h"
 #include "test_support.h"
 
@@ -49,7 +50,8 @@ ClusterCheck checkClusters(const Scene& scene, const RenderSettings& settings) {
           gpu::tileSlopes(tx * t, std::min((tx + 1) * t, w), ty * t, std::min((ty + 1) * t, h), w, h,
                           u.depthParams.z, u.depthParams.w);
       for (uint32_t slice = 0; slice < grid.slices; ++slice) {
-        const glm::vec2 b = test::referenceSliceBounds(grid.tileRange[tile], slice, grid.slices, zNear);
+        const glm::vec2 b =
+            gpu::depthSliceBounds(grid.tileRange[tile], slice, glm::uvec2(1, grid.slices - 1), zNear);
         // Points strictly inside the slice: a point on a boundary belongs to either neighbour.
         const float lo = b.x * (1.0f + 1e-3f), hi = b.y * (1.0f - 1e-3f);
         const std::vector<uint32_t>& listed = grid.clusters[size_t(tile) * grid.slices + slice];

@@ -12,6 +12,7 @@
 #include "scene/errors.h"
 #include "scene/lights.h"
 #include "scene/scene_source.h"
+#include "shared/depth_slices.h"
 #include "shared/lll_types.h"
 #include "test_support.h"
 
@@ -33,6 +34,7 @@ struct ListCheck {
   uint32_t depthOutside = 0;
   uint32_t outsideSlice = 0;  // links in a depth slice their bounds do not overlap
   uint32_t slicedOut = 0;     // (tile, slice, light): listed in another slice of the tile, not this one
+  uint32_t deepTiles = 0;     // tiles whose opaque depth range has more than one slice
 };
 
 // How far beyond its range a fill may list a light: the shells' coarseness and the tile inflation.
@@ -56,7 +58,7 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
   renderer.renderFrame(false);
   if (stats) *stats = renderer.technique().stats();
   const TileLightLists lists = readTileLightLists(renderer.technique());
-  EXPECT_EQ(lists.slices, settings.lllSlices == 0 ? 1u : settings.lllSlices + 1);
+  EXPECT_EQ(lists.slices, std::max(settings.lllSlices, 1u));
   const gpu::FrameUniforms& u = renderer.uniforms();
   std::vector<ViewLight> lights;
   for (const Light& light : scene.lights) lights.push_back(toView(light, u.view));
@@ -70,6 +72,11 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
           gpu::tileSlopes(tx * t, std::min((tx + 1) * t, w), ty * t, std::min((ty + 1) * t, h), w, h,
                           u.depthParams.z, u.depthParams.w);
       const float zFar = lists.tileRange[index].y;
+      const glm::uvec2 split = gpu::lllSliceSplit(lists.tileRange[index], lists.slices);
+      check.deepTiles += split.y > 1;
+      std::vector<float> tileDistance(lights.size());
+      for (uint32_t i = 0; i < lights.size(); ++i)
+        tileDistance[i] = std::sqrt(referenceDistanceSquared(lights[i].center, slopes, zNear, zFar));
       std::vector<uint32_t> slicesListing(lights.size(), 0);
       for (uint32_t slice = 0; slice < lists.slices; ++slice)
         for (const LightLinkRecord& link : lists.lists[size_t(index) * lists.slices + slice])
@@ -79,7 +86,7 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
       for (uint32_t slice = 0; slice < lists.slices; ++slice) {
         // The slice's volume; with slices, only points strictly inside it (a point on a boundary
         // belongs to either neighbour).
-        glm::vec2 b = test::referenceSliceBounds(lists.tileRange[index], slice, lists.slices, zNear);
+        glm::vec2 b = gpu::depthSliceBounds(lists.tileRange[index], slice, split, zNear);
         if (lists.slices > 1) b = {std::max(b.x * (1.0f + 1e-3f), zNear), b.y * (1.0f - 1e-3f)};
         std::vector<const LightLinkRecord*> byLight(lights.size(), nullptr);
         for (const LightLinkRecord& link : lists.lists[size_t(index) * lists.slices + slice]) {
@@ -87,14 +94,17 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
           if (link.light < lights.size()) byLight[link.light] = &link;
           ++check.listed;
           // A link in a slice its depth bounds do not reach lights no point there.
-          const glm::vec2 raw = test::referenceSliceBounds(lists.tileRange[index], slice, lists.slices, zNear);
+          const glm::vec2 raw = gpu::depthSliceBounds(lists.tileRange[index], slice, split, zNear);
           if (lists.slices > 1 && (link.maxDepth < raw.x * (1.0f - 1e-3f) || link.minDepth > raw.y * (1.0f + 1e-3f)))
             ++check.outsideSlice;
         }
         for (uint32_t i = 0; i < lights.size(); ++i) {
           const ViewLight& l = lights[i];
-          const float dist = std::sqrt(referenceDistanceSquared(l.center, slopes, zNear, zFar));
-          const float sliceDist = b.y > b.x ? std::sqrt(referenceDistanceSquared(l.center, slopes, b.x, b.y)) : 1e30f;
+          const float dist = tileDistance[i];
+          // A light out of the tile's reach is out of each slice's (the slices lie within the tile).
+          const float sliceDist = b.y > b.x && (lists.slices == 1 || dist <= l.range)
+                                      ? std::sqrt(referenceDistanceSquared(l.center, slopes, b.x, b.y))
+                                      : 1e30f;
           const std::vector<glm::vec3> inside =
               sliceDist <= l.range ? samplesInside(l, slopes, b.x, b.y) : std::vector<glm::vec3>{};
           const bool must = !inside.empty() || (!l.spot && !l.box && sliceDist <= l.range * 0.999f);
@@ -126,7 +136,7 @@ struct ListCase {
   uint32_t width;
   uint32_t height;
   uint32_t fillSplits = 0;  // compute fill: workgroups per cell (0: by light count, here 1)
-  uint32_t slices = 0;      // --lll-slices
+  uint32_t slices = 1;      // --lll-slices
 };
 
 class LllLists : public ::testing::TestWithParam<ListCase> {};
@@ -147,7 +157,7 @@ TEST_P(LllLists, MatchCpuReference) {
   EXPECT_EQ(check.beyondMargin, 0u) << "lights listed farther away than the fill's documented margin";
   EXPECT_EQ(check.depthOutside, 0u) << "light points outside their link's depth bounds";
   EXPECT_EQ(check.outsideSlice, 0u) << "links in depth slices their bounds do not reach";
-  if (c.slices > 0) {
+  if (c.slices > 1) {
     EXPECT_GT(check.slicedOut, check.listed / 4) << "the slices should keep most lights out of most lists";
   }
 }
@@ -171,12 +181,31 @@ INSTANTIATE_TEST_SUITE_P(Fills, LllLists,
                                   std::to_string(info.param.height) +
                                   (info.param.fillSplits ? "_splits" + std::to_string(info.param.fillSplits)
                                                          : "") +
-                                  (info.param.slices ? "_slices" + std::to_string(info.param.slices) : "");
+                                  (info.param.slices > 1 ? "_slices" + std::to_string(info.param.slices) : "");
                          });
 
 // The compute fill reads the lights binned to its cell (lighting/light_bins.h). Many large lights
 // on a fine grid overflow the bins' first allocation: the frame must be drawn again with room for
 // every entry, and the lists must still hold every light the reference requires.
+// Depth-sliced lists where tiles are deep: the atrium's columns and arches in front of its walls
+// split the tiles' opaque depth ranges as well as the depth in front of them.
+TEST(LllLists, SlicedListsOfDeepTilesMatchCpuReference) {
+  RenderSettings settings;
+  settings.technique = "lll";
+  settings.tileSize = 16;
+  settings.width = 192;
+  settings.height = 108;
+  settings.lllSlices = 8;
+  const ListCheck check = checkLists(test::loadSceneWithLights({"atrium", 300}), settings);
+  EXPECT_GT(check.mustList, 1000u);
+  EXPECT_EQ(check.missing, 0u) << "lights the reference requires but the fill did not list";
+  EXPECT_EQ(check.beyondMargin, 0u);
+  EXPECT_EQ(check.depthOutside, 0u);
+  EXPECT_EQ(check.outsideSlice, 0u);
+  EXPECT_GT(check.deepTiles, 10u) << "the atrium should have tiles with deep opaque ranges";
+  EXPECT_GT(check.slicedOut, check.listed / 4);
+}
+
 TEST(LllLists, OverflowingBinsGrowAndLoseNoLight) {
   RenderSettings settings;
   settings.technique = "lll";
@@ -210,14 +239,14 @@ using ImageCase = test::SceneWithLights;
 struct Variant {
   const char* fill;
   const char* shade;
-  uint32_t slices = 0;
+  uint32_t slices = 1;
 };
 constexpr Variant kVariants[] = {{"compute", "compute"},     {"ray", "compute"},
                                  {"shells", "compute"},      {"compute", "fragment"},
                                  {"compute", "compute", 16}, {"shells", "fragment", 8}};
 
 std::string variantName(const Variant& v) {
-  return std::string(v.fill) + "/" + v.shade + (v.slices ? "/slices" + std::to_string(v.slices) : "");
+  return std::string(v.fill) + "/" + v.shade + (v.slices > 1 ? "/slices" + std::to_string(v.slices) : "");
 }
 
 class LllImages : public ::testing::TestWithParam<ImageCase> {};

@@ -2,8 +2,8 @@
 // depth falls in, and the depth bounds of a slice. Build passes define GRID_BUILD_PASS.
 #ifndef LLL_GRID_DATA_GLSL
 #define LLL_GRID_DATA_GLSL
-#include "common/depth_slices.glsl"
 #include "common/frame.glsl"
+#include "shared/depth_slices.h"
 #include "shared/grid_types.h"
 
 #ifdef GRID_BUILD_PASS
@@ -47,13 +47,18 @@ uint gridTileOf(uvec2 pixel) {
 }
 
 // The slice of a tile with depth range `range` (nearest, farthest) that holds `depth`.
+// One slice in front of the tile's opaque range, the rest across it.
+uvec2 gridSliceSplit() {
+  return uvec2(1u, gridSlices() - 1u);
+}
+
 uint sliceOf(vec2 range, float depth) {
-  return depthSliceOf(range, depth, gridSlices());
+  return depthSliceOf(range, depth, gridSliceSplit(), frame.depthParams.x);
 }
 
 // Depth bounds of slice `slice` of a tile with depth range `range`, widened by kGridSliceSlack.
 vec2 sliceBounds(vec2 range, uint slice) {
-  vec2 b = depthSliceBounds(range, slice, gridSlices(), frame.depthParams.x);
+  vec2 b = depthSliceBounds(range, slice, gridSliceSplit(), frame.depthParams.x);
   return slice == 0u ? vec2(b.x, b.y * (1.0 + kGridSliceSlack))
                      : vec2(b.x * (1.0 - kGridSliceSlack), b.y * (1.0 + kGridSliceSlack));
 }

@@ -1,10 +1,10 @@
 // The Light Linked List's buffers (set 0, bindings 3..10) and the two operations on them: pushing
 // a link at a list's head (fills) and walking a list (every shading pass). A tile has one list, or
-// one per depth slice with --lll-slices (common/depth_slices.glsl): list tile * slices + slice.
+// one per depth slice with --lll-slices (shared/depth_slices.h): list tile * slices + slice.
 #ifndef LLL_DATA_GLSL
 #define LLL_DATA_GLSL
-#include "common/depth_slices.glsl"
 #include "common/frame.glsl"
+#include "shared/depth_slices.h"
 #include "shared/lll_types.h"
 
 // Shading passes only read the lists; fills define LLL_FILL_PASS to write them.
@@ -47,7 +47,9 @@ uint listSlices() {
 // The list that lights a point at `viewDepth` in tile `tileIndex`.
 uint listIndexOf(uint tileIndex, float viewDepth) {
   uint slices = listSlices();
-  return slices == 1u ? tileIndex : tileIndex * slices + depthSliceOf(tileRange[tileIndex], viewDepth, slices);
+  if (slices == 1u) return tileIndex;
+  vec2 range = tileRange[tileIndex];
+  return tileIndex * slices + depthSliceOf(range, viewDepth, lllSliceSplit(range, slices), frame.depthParams.x);
 }
 
 // Clamped to the grid: helper invocations beyond the image's right or bottom edge must still read
@@ -99,9 +101,12 @@ void writeLink(uint link, uint lightIndex, float minDepth, float maxDepth, uint 
 // within the bounds can fall in (the walk finds a point's slice with the same function).
 uvec2 listsOverlapping(uint tileIndex, float minDepth, float maxDepth) {
   uint slices = listSlices();
-  uvec2 s = slices == 1u ? uvec2(0u)
-                         : depthSlicesOverlapping(tileRange[tileIndex], max(minDepth, 0.0), maxDepth, slices);
-  return tileIndex * slices + s;
+  if (slices == 1u) return uvec2(tileIndex);
+  vec2 range = tileRange[tileIndex];
+  uvec2 split = lllSliceSplit(range, slices);
+  float zNear = frame.depthParams.x;
+  return tileIndex * slices +
+         uvec2(depthSliceOf(range, minDepth, split, zNear), depthSliceOf(range, maxDepth, split, zNear));
 }
 
 // Allocates links and pushes one at the head of each of the tile's lists the light's depth bounds

@@ -30,13 +30,12 @@ struct LllUniforms {
   // x link pool capacity (links), y link format, z debug view, w workgroups per cell of the compute
   // fill (each takes a part of the cell's binned lights).
   uvec4 params;
-  // x lists per tile: 1, or its depth slices with --lll-slices (common/depth_slices.glsl); yzw unused.
+  // x lists per tile: 1, or its depth slices with --lll-slices (shared/depth_slices.h); yzw unused.
   uvec4 slicing;
 };
 LLL_CHECK_SIZE(LllUniforms, 48);
 
-// Most depth slices per tile of --lll-slices N (N + 1 lists: N across the tile's opaque depth range and
-// one in front of it).
+// Most depth slices (lists) per tile of --lll-slices.
 LLL_CONST(uint, kMaxLllSlices, 32u);
 
 // Raster fills: which lights one instanced draw covers.

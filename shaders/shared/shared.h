@@ -11,13 +11,17 @@
 #define LLL_NAMESPACE_BEGIN \
   namespace lll::gpu {      \
   using vec2 = glm::vec2;   \
+  using uvec2 = glm::uvec2; \
   using vec4 = glm::vec4;   \
   using uvec4 = glm::uvec4; \
   using ivec4 = glm::ivec4; \
   using mat4 = glm::mat4;   \
   using uint = uint32_t;    \
   using vec3 = glm::vec3;   \
+  using glm::ceil;          \
   using glm::clamp;         \
+  using glm::log;           \
+  using glm::pow;           \
   using glm::dot;           \
   using glm::max;           \
   using glm::min;

@@ -74,8 +74,8 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "lights, 64 on a CPU device)")
       ->check(CLI::Range(0u, 64u));
   cmd.add_option("--lll-slices", s.lllSlices,
-                 "depth slices per tile of the light lists (0: one list per tile; N: N across the tile's "
-                 "depth range and one in front of it, 1 to 32)")
+                 "lists per tile, one per depth slice: 1 (one list per tile) to 32; slices split the depth in "
+                 "front of the tile's nearest surface and, where deep, its surfaces' depth range")
       ->check(CLI::Range(0u, 32u));
   cmd.add_option("--lll-link", s.lllLink, "link format: compact (8 B, <=256 lights) | wide (16 B) | auto")
       ->check(CLI::IsMember({"compact", "wide", "auto"}));

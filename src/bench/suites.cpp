@@ -156,12 +156,12 @@ std::vector<Scenario> densitySuite(const SuiteOptions& options) {
 }
 
 // Depth-sliced lists (--lll-slices): lll's compute fill with one list per tile and with 2 to 32
-// slices, on the density suite's lights (small, at constant density) and the scaling suite's (the
+// lists (slices) per tile, on the density suite's lights (small, at constant density) and the scaling suite's (the
 // default scene's ranges, many lights along each tile's depth).
 std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   const std::vector<uint32_t> slices =
-      options.quick ? std::vector<uint32_t>{0, 4, 16} : std::vector<uint32_t>{0, 2, 4, 8, 16, 32};
+      options.quick ? std::vector<uint32_t>{1, 4, 16} : std::vector<uint32_t>{1, 2, 4, 8, 16, 32};
   std::vector<Scenario> out;
   for (const bool dense : {true, false}) {
     const std::vector<uint32_t> counts =
@@ -438,7 +438,7 @@ std::string lllVariant(const RenderSettings& settings) {
   if (settings.technique != "lll") return "";
   if (settings.lllShade == "fragment") return settings.lllFill + "/fragment-shade";
   if (settings.surfaces == "gbuffer") return settings.lllFill + "/gbuffer";
-  const std::string sliced = settings.lllSlices ? fmt::format("/slices{}", settings.lllSlices) : "";
+  const std::string sliced = settings.lllSlices > 1 ? fmt::format("/slices{}", settings.lllSlices) : "";
   return (settings.raster == "hardware" ? settings.lllFill + "/hardware-raster" : settings.lllFill) + sliced;
 }
 

@@ -194,9 +194,9 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
                                  settings.lllFillSplits, kMaxCellSplits));
   fillSplits_ = settings.lllFillSplits ? settings.lllFillSplits : cellSplitsFor(context, scene.lightCount());
   if (settings.lllSlices > gpu::kMaxLllSlices)
-    throw InputError(fmt::format("--lll-slices {}: expected 0 (one list per tile) to {}", settings.lllSlices,
-                                 gpu::kMaxLllSlices));
-  slices_ = settings.lllSlices == 0 ? 1 : settings.lllSlices + 1;
+    throw InputError(fmt::format("--lll-slices {}: expected 1 (one list per tile) to {} lists per tile",
+                                 settings.lllSlices, gpu::kMaxLllSlices));
+  slices_ = std::max(settings.lllSlices, 1u);
   uniforms_.slicing = glm::uvec4(slices_, 0, 0, 0);
   uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),
@@ -211,7 +211,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   createBuffers();
   createPipelines();
   if (fill_ != LllFill::Compute) createShells(scene);
-  allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile) * (slices_ == 1 ? 1 : 2));
+  allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile) * std::min(slices_, 2u));
 }
 
 LightLinkedList::~LightLinkedList() {

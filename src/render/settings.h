@@ -29,9 +29,9 @@ struct RenderSettings {
   uint32_t linksPerTile = 32;  // initial link pool: tiles * this, grown on overflow
   // Workgroups sharing each cell's lights in lll's compute fill (1 to 64); 0: by light count.
   uint32_t lllFillSplits = 0;
-  // Depth slices per tile of lll's lists (Ortegren's clustered linked lists): 0 one list per tile;
-  // N: N lists across the tile's opaque depth range and one in front of it (as --cluster-slices).
-  uint32_t lllSlices = 0;
+  // Lists per tile of lll, one per depth slice (Ortegren's clustered linked lists; shared/depth_slices.h
+  // says how a tile's depth is split); 1 (or 0): one list per tile, as Bezrati's.
+  uint32_t lllSlices = 1;
   std::string debugView = "none";  // none | heatmap | bounds | tiles
   // Clustered shading (technique "clustered"): depth slices per tile behind its front slice.
   uint32_t clusterSlices = 16;
