@@ -166,7 +166,7 @@ std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
   for (const bool dense : {true, false}) {
     const std::vector<uint32_t> counts =
         options.quick ? std::vector<uint32_t>{64, 256}
-        : dense       ? std::vector<uint32_t>{4096, 65536, 1048576}
+        : dense       ? std::vector<uint32_t>{4096, 131072, 1048576}
                       : std::vector<uint32_t>{1024, 16384, 65536};
     for (const uint32_t lights : counts) {
       SceneRequest scene{kDefaultSceneName, lights, 1};
