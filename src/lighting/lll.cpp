@@ -247,8 +247,7 @@ void LightLinkedList::createPipelines() {
   fillLayout_ = PipelineLayout(context_, kBindings, sizeof(gpu::FillPush), VK_SHADER_STAGE_VERTEX_BIT);
   tileDepthPipeline_ = Pipeline(context_, layout_, "lighting/lll/tile_depth.comp");
   statsPipeline_ = Pipeline(context_, layout_, "lighting/lll/stats.comp");
-  if (fill_ == LllFill::Compute)
-    computeFill_ = Pipeline(context_, layout_, "lighting/lll/fill_compute.comp", {slices_});
+  if (fill_ == LllFill::Compute) computeFill_ = Pipeline(context_, layout_, "lighting/lll/fill_compute.comp");
 
   GraphicsPipelineDesc fill;
   fill.vertexShader = "lighting/lll/fill_shell.vert";

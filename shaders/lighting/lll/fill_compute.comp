@@ -11,8 +11,7 @@
 // allocates all its links of a batch with one atomic on the global counter (shared-memory offsets
 // within the group) instead of one per link: 16 full-screen lights at 1080p are 518,400 links.
 // With depth-sliced lists (--lll-slices) a light gets a link in each of its tile's slices its depth
-// bounds overlap; the thread keeps each slice's chain (head and tail) in shared memory and, at the
-// end, stores the heads, or splices its part's chains in with one atomic exchange each.
+// bounds overlap, pushed at that slice's head with an atomic exchange (the cell's parts share them).
 #include "common/light_bins.glsl"
 #include "lighting/lll/light_shape.glsl"
 
@@ -24,19 +23,6 @@ shared uint candidates[64];
 shared uint candidateTiles[64];  // sphereTilesInGroup: which of the group's tiles a candidate may touch
 shared uint groupLinks;
 shared uint groupBase;
-// Sliced lists: the lists per tile (specialization constant; 1 without slices) and each thread's
-// chain of each of its tile's slices, head and tail.
-layout(constant_id = 0) const uint kSlices = 1u;
-shared uint sliceHeads[64 * kSlices];
-shared uint sliceTails[64 * kSlices];
-
-// Points a link's `next` at `next`, in the pool's format.
-void setNext(uint link, uint next) {
-  if (lll.params.y == kLinkCompact)
-    linkWords[2u * link + 1u] = (linkWords[2u * link + 1u] & ~kCompactLinkEnd) | (next & kCompactLinkEnd);
-  else
-    linkWords[4u * link + 3u] = next;
-}
 
 void main() {
   // With many lights a cell's binned lights are split among lll.params.w workgroups (one part
@@ -49,12 +35,8 @@ void main() {
   bool valid = tile.x < tilesSize.x && tile.y < tilesSize.y;
   uint tileIndex = tile.y * tilesSize.x + tile.x;
   float zNear = frame.depthParams.x;
-  vec2 range = valid ? tileRange[tileIndex] : vec2(zNear);
-  float far = valid ? range.y : 0.0;
-  bool sliced = kSlices > 1u;
-  uvec2 split = lllSliceSplit(range, kSlices);
-  uint row = gl_LocalInvocationIndex * kSlices;
-  for (uint s = 0u; sliced && s < kSlices; ++s) sliceHeads[row + s] = kLinkEnd;
+  float far = valid ? tileRange[tileIndex].y : 0.0;
+  bool sliced = listSlices() > 1u;
   if (gl_LocalInvocationIndex == 0u) groupFarBits = 0u;
   barrier();
   atomicMax(groupFarBits, floatBitsToUint(far));  // non-negative floats order like their bits
@@ -104,7 +86,8 @@ void main() {
       for (uint bits = hits[word]; bits != 0u; bits &= bits - 1u) {
         GpuLight light = lights[candidates[word * 32u + uint(findLSB(bits))]];
         float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
-        own += depthSliceOf(range, z + halfDepth, split, zNear) - depthSliceOf(range, z - halfDepth, split, zNear) + 1u;
+        uvec2 lists = listsOverlapping(tileIndex, z - halfDepth, z + halfDepth);
+        own += lists.y - lists.x + 1u;
       }
     }
     uint offset = own > 0u ? atomicAdd(groupLinks, own) : 0u;
@@ -121,14 +104,9 @@ void main() {
         GpuLight light = lights[candidates[i]];
         float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
         if (sliced) {
-          uint last = depthSliceOf(range, z + halfDepth, split, zNear);
-          for (uint s = depthSliceOf(range, z - halfDepth, split, zNear); s <= last && link < lll.params.x;
-               ++s, ++link) {
-            uint next = sliceHeads[row + s];
-            if (next == kLinkEnd) sliceTails[row + s] = link;
-            sliceHeads[row + s] = link;
-            writeLink(link, candidates[i], z - halfDepth, z + halfDepth, next);
-          }
+          uvec2 lists = listsOverlapping(tileIndex, z - halfDepth, z + halfDepth);
+          for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
+            writeLink(link, candidates[i], z - halfDepth, z + halfDepth, atomicExchange(tileHeads[list], link));
           continue;
         }
         writeLink(link, candidates[i], z - halfDepth, z + halfDepth, head);
@@ -141,17 +119,7 @@ void main() {
     }
     barrier();
   }
-  if (!valid) return;
-  for (uint s = 0u; sliced && s < kSlices; ++s) {
-    uint sliceHead = sliceHeads[row + s];
-    if (splits == 1u) {
-      tileHeads[tileIndex * kSlices + s] = sliceHead;
-    } else if (sliceHead != kLinkEnd) {
-      // Parts of one cell share its tiles' lists: splice this part's chain in at the head.
-      setNext(sliceTails[row + s], atomicExchange(tileHeads[tileIndex * kSlices + s], sliceHead));
-    }
-  }
-  if (sliced) return;
+  if (!valid || sliced) return;
   if (splits == 1u) {
     tileHeads[tileIndex] = head;
   } else if (head != kLinkEnd) {
