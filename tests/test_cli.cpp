@@ -399,7 +399,7 @@ TEST_F(CliTest, TechniquesListsForwardAndLll) {
 // ---- lll-memory: the chapter's figures ----
 
 TEST_F(CliTest, LllMemoryPerPixelTiles) {
-  const CliResult r = runLll({"lll-memory", "--tile", "1"});
+  const CliResult r = runLll({"lll-memory", "--tile", "1", "--lll-slices", "1"});
   EXPECT_EQ(r.exitCode, 0) << r;
   EXPECT_TRUE(contains(lineStartingWith(r.output, "tiles"), "1920 x 1080 = 2073600")) << r;
   EXPECT_TRUE(contains(lineStartingWith(r.output, "links"), "66355200")) << r;  // 32 per tile
@@ -408,8 +408,15 @@ TEST_F(CliTest, LllMemoryPerPixelTiles) {
   EXPECT_TRUE(contains(pool, "530841600 bytes")) << r;
   EXPECT_TRUE(contains(pool, "506.25 MiB")) << r;
   EXPECT_TRUE(contains(lineStartingWith(r.output, "heads"), "8294400 bytes")) << r;
-  EXPECT_TRUE(contains(lineStartingWith(r.output, "tile depth"), "8294400 bytes")) << r;
-  EXPECT_TRUE(contains(lineStartingWith(r.output, "total"), "547430400 bytes")) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "tile depth"), "16588800 bytes")) << r;  // near, far
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "total"), "555724800 bytes")) << r;
+}
+
+TEST_F(CliTest, LllMemoryHeadsPerDepthSlice) {
+  const CliResult r = runLll({"lll-memory", "--tile", "8", "--lll-slices", "16"});
+  EXPECT_EQ(r.exitCode, 0) << r;
+  EXPECT_TRUE(contains(lineStartingWith(r.output, "heads"), "2073600 bytes")) << r;  // 32,400 tiles x 16 x 4
+  expectBadInput(runLll({"lll-memory", "--lll-slices", "0"}), {"--lll-slices", "0"});
 }
 
 TEST_F(CliTest, LllMemoryEighthTiles) {

@@ -246,6 +246,9 @@ void addLllMemoryOptions(CLI::App& cmd, lll::LllMemoryQuery& query) {
   cmd.add_option("--link", query.link, "link format: compact (8 B) | wide (16 B)")
       ->check(CLI::IsMember({"compact", "wide"}))
       ->capture_default_str();
+  cmd.add_option("--lll-slices", query.slices, "lists (depth slices) per tile, as lll render's --lll-slices")
+      ->check(CLI::Range(1u, 32u))
+      ->capture_default_str();
 }
 
 }  // namespace

@@ -30,8 +30,9 @@ struct RenderSettings {
   // Workgroups sharing each cell's lights in lll's compute fill (1 to 64); 0: by light count.
   uint32_t lllFillSplits = 0;
   // Lists per tile of lll, one per depth slice (Ortegren's clustered linked lists; shared/depth_slices.h
-  // says how a tile's depth is split); 1 (or 0): one list per tile, as Bezrati's.
-  uint32_t lllSlices = 1;
+  // says how a tile's depth is split); 1 (or 0): one list per tile, as Bezrati's. Default 2: one list
+  // in front of the tile's nearest surface, one over its surfaces (bench/README.md, the slices suite).
+  uint32_t lllSlices = 2;
   std::string debugView = "none";  // none | heatmap | bounds | tiles
   // Clustered shading (technique "clustered"): depth slices per tile behind its front slice.
   uint32_t clusterSlices = 16;

@@ -35,8 +35,11 @@ void main() {
   bool valid = tile.x < tilesSize.x && tile.y < tilesSize.y;
   uint tileIndex = tile.y * tilesSize.x + tile.x;
   float zNear = frame.depthParams.x;
-  float far = valid ? tileRange[tileIndex].y : 0.0;
-  bool sliced = listSlices() > 1u;
+  vec2 range = valid ? tileRange[tileIndex] : vec2(zNear);
+  float far = valid ? range.y : 0.0;
+  uint slices = listSlices();
+  bool sliced = slices > 1u;
+  uvec2 split = lllSliceSplit(range, slices);
   if (gl_LocalInvocationIndex == 0u) groupFarBits = 0u;
   barrier();
   atomicMax(groupFarBits, floatBitsToUint(far));  // non-negative floats order like their bits
@@ -86,8 +89,7 @@ void main() {
       for (uint bits = hits[word]; bits != 0u; bits &= bits - 1u) {
         GpuLight light = lights[candidates[word * 32u + uint(findLSB(bits))]];
         float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
-        uvec2 lists = listsOverlapping(tileIndex, z - halfDepth, z + halfDepth);
-        own += lists.y - lists.x + 1u;
+        own += depthSliceOf(range, z + halfDepth, split, zNear) - depthSliceOf(range, z - halfDepth, split, zNear) + 1u;
       }
     }
     uint offset = own > 0u ? atomicAdd(groupLinks, own) : 0u;
@@ -104,8 +106,9 @@ void main() {
         GpuLight light = lights[candidates[i]];
         float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
         if (sliced) {
-          uvec2 lists = listsOverlapping(tileIndex, z - halfDepth, z + halfDepth);
-          for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
+          uint first = tileIndex * slices, last = first + depthSliceOf(range, z + halfDepth, split, zNear);
+          for (uint list = first + depthSliceOf(range, z - halfDepth, split, zNear);
+               list <= last && link < lll.params.x; ++list, ++link)
             writeLink(link, candidates[i], z - halfDepth, z + halfDepth, atomicExchange(tileHeads[list], link));
           continue;
         }
