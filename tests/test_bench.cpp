@@ -121,6 +121,8 @@ TEST(BenchSuites, SlicesIsLllWithAndWithoutDepthSlicesOnBothLightSets) {
     EXPECT_TRUE(s.skip.empty());
     dense += s.scene.scaleIntensityWithRange;
     sliced += s.settings.lllSlices > 1;
+    // Every count but the default is named in the label.
+    EXPECT_EQ(seriesLabel(s) == "lll/compute", s.settings.lllSlices == RenderSettings{}.lllSlices);
     labels.insert(seriesLabel(s));
   }
   EXPECT_EQ(dense, 18u);

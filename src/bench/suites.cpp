@@ -436,9 +436,12 @@ std::string seriesLabel(const Scenario& scenario) {
 
 std::string lllVariant(const RenderSettings& settings) {
   if (settings.technique != "lll") return "";
-  if (settings.lllShade == "fragment") return settings.lllFill + "/fragment-shade";
-  if (settings.surfaces == "gbuffer") return settings.lllFill + "/gbuffer";
-  const std::string sliced = settings.lllSlices > 1 ? fmt::format("/slices{}", settings.lllSlices) : "";
+  // Lists per tile, named where they are not the default.
+  const uint32_t slices = std::max(settings.lllSlices, 1u);
+  const std::string sliced =
+      slices != std::max(RenderSettings{}.lllSlices, 1u) ? fmt::format("/slices{}", slices) : "";
+  if (settings.lllShade == "fragment") return settings.lllFill + "/fragment-shade" + sliced;
+  if (settings.surfaces == "gbuffer") return settings.lllFill + "/gbuffer" + sliced;
   return (settings.raster == "hardware" ? settings.lllFill + "/hardware-raster" : settings.lllFill) + sliced;
 }
 
