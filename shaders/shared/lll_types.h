@@ -30,9 +30,7 @@ struct LllUniforms {
   // x link pool capacity (links), y link format, z debug view, w workgroups per cell of the compute
   // fill (each takes a part of the cell's binned lights).
   uvec4 params;
-  // x lists per tile: 1, or its depth slices with --lll-slices (shared/depth_slices.h); y 1 where lists
-  // mostly run down consecutive links (the compute fill): the walk reads ahead (common/lll_walk.glsl);
-  // zw unused.
+  // x lists per tile: 1, or its depth slices with --lll-slices (shared/depth_slices.h); yzw unused.
   uvec4 slicing;
 };
 LLL_CHECK_SIZE(LllUniforms, 48);

@@ -11,8 +11,7 @@
 // allocates all its links of a batch with one atomic on the global counter (shared-memory offsets
 // within the group) instead of one per link: 16 full-screen lights at 1080p are 518,400 links.
 // With depth-sliced lists (--lll-slices) a light gets a link in each of its tile's slices its depth
-// bounds overlap; each slice's links of a batch are chained together and pushed at the slice's head
-// with one atomic exchange (the cell's parts share the heads).
+// bounds overlap, pushed at that slice's head with an atomic exchange (the cell's parts share them).
 #include "common/light_bins.glsl"
 #include "lighting/lll/light_shape.glsl"
 
@@ -85,15 +84,12 @@ void main() {
         hits[i >> 5] |= 1u << (i & 31u);
     }
     uint own = bitCount(hits.x) + bitCount(hits.y);
-    uvec2 sliceSpan = uvec2(slices, 0u);  // the slices this batch's hits reach, first and last
     for (uint word = 0u; sliced && word < 2u; ++word) {
       own -= bitCount(hits[word]);
       for (uint bits = hits[word]; bits != 0u; bits &= bits - 1u) {
         GpuLight light = lights[candidates[word * 32u + uint(findLSB(bits))]];
         float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
-        uvec2 span = uvec2(depthSliceOf(range, z - halfDepth, split, zNear), depthSliceOf(range, z + halfDepth, split, zNear));
-        own += span.y - span.x + 1u;
-        sliceSpan = uvec2(min(sliceSpan.x, span.x), max(sliceSpan.y, span.y));
+        own += depthSliceOf(range, z + halfDepth, split, zNear) - depthSliceOf(range, z - halfDepth, split, zNear) + 1u;
       }
     }
     uint offset = own > 0u ? atomicAdd(groupLinks, own) : 0u;
@@ -102,39 +98,20 @@ void main() {
       groupBase = atomicAdd(counters.linksRequested, groupLinks);
     barrier();
     uint link = groupBase + offset;
-    // Sliced: slice by slice, so that each slice's links of the batch are consecutive, each pointing
-    // at the one below it (the walk reads ahead), and the slice's head is exchanged once per batch.
-    for (uint s = sliceSpan.x; sliced && s <= sliceSpan.y; ++s) {
-      uint firstLink = link, firstLight = 0u;
-      vec2 firstBounds = vec2(0.0);
-      for (uint word = 0u; word < 2u; ++word) {
-        for (uint bits = hits[word]; bits != 0u; bits &= bits - 1u) {
-          uint i = word * 32u + uint(findLSB(bits));
-          GpuLight light = lights[candidates[i]];
-          float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
-          if (s < depthSliceOf(range, z - halfDepth, split, zNear) || s > depthSliceOf(range, z + halfDepth, split, zNear))
-            continue;
-          if (link == firstLink) {  // written last, once the slice's previous head is known
-            firstLight = candidates[i];
-            firstBounds = vec2(z - halfDepth, z + halfDepth);
-          } else if (link < lll.params.x) {
-            writeLink(link, candidates[i], z - halfDepth, z + halfDepth, link - 1u);
-          }
-          ++link;
-        }
-      }
-      // Past the pool: counted, not written (the CPU grows it); the chain ends at the last written.
-      if (link > firstLink && firstLink < lll.params.x)
-        writeLink(firstLink, firstLight, firstBounds.x, firstBounds.y,
-                  atomicExchange(tileHeads[tileIndex * slices + s], min(link, lll.params.x) - 1u));
-    }
-    for (uint word = 0u; !sliced && word < 2u; ++word) {
+    for (uint word = 0u; word < 2u; ++word) {
       while (hits[word] != 0u) {
         uint i = word * 32u + uint(findLSB(hits[word]));
         hits[word] &= hits[word] - 1u;
         if (link >= lll.params.x) break;  // past the pool: counted, not written (the CPU grows it)
         GpuLight light = lights[candidates[i]];
         float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
+        if (sliced) {
+          uint first = tileIndex * slices, last = first + depthSliceOf(range, z + halfDepth, split, zNear);
+          for (uint list = first + depthSliceOf(range, z - halfDepth, split, zNear);
+               list <= last && link < lll.params.x; ++list, ++link)
+            writeLink(link, candidates[i], z - halfDepth, z + halfDepth, atomicExchange(tileHeads[list], link));
+          continue;
+        }
         writeLink(link, candidates[i], z - halfDepth, z + halfDepth, head);
         if (head == kLinkEnd) {
           tail = link;
