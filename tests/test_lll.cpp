@@ -13,6 +13,7 @@
 #include "scene/lights.h"
 #include "scene/scene_source.h"
 #include "shared/depth_slices.h"
+#include "shared/light_bins_types.h"
 #include "shared/lll_types.h"
 #include "test_support.h"
 
@@ -204,6 +205,34 @@ TEST(LllLists, SlicedListsOfDeepTilesMatchCpuReference) {
   EXPECT_EQ(check.outsideSlice, 0u);
   EXPECT_GT(check.deepTiles, 10u) << "the atrium should have tiles with deep opaque ranges";
   EXPECT_GT(check.slicedOut, check.listed / 4);
+}
+
+// A cell's lights split among workgroups: each takes a part of at least kMinCellPart lights, so
+// only cells with more than that are shared. 1,200 lights on two cells of 8x8 16-pixel tiles: every
+// cell is shared by several parts, whose chains are spliced at the heads (one list per tile) or
+// pushed at the slices' heads (sliced).
+TEST(LllLists, CellsSharedByWorkgroupsLoseNoLight) {
+  for (const uint32_t slices : {1u, 4u}) {
+    RenderSettings settings;
+    settings.technique = "lll";
+    settings.tileSize = 16;
+    settings.width = 160;
+    settings.height = 90;
+    settings.lllFillSplits = 8;
+    settings.lllSlices = slices;
+    std::vector<std::pair<std::string, double>> stats;
+    const Scene scene = test::awkwardLightsScene(1200);
+    const ListCheck check = checkLists(scene, settings, &stats);
+    double binned = 0.0;
+    for (const auto& [name, value] : stats)
+      if (name == "bin_entries_used") binned = value;
+    EXPECT_GT(binned, 2.0 * 2.0 * gpu::kMinCellPart) << "each of the two cells should hold several parts";
+    EXPECT_GT(check.mustList, 1000u);
+    EXPECT_EQ(check.missing, 0u) << slices << " lists per tile";
+    EXPECT_EQ(check.beyondMargin, 0u);
+    EXPECT_EQ(check.depthOutside, 0u);
+    EXPECT_EQ(check.outsideSlice, 0u);
+  }
 }
 
 TEST(LllLists, OverflowingBinsGrowAndLoseNoLight) {
