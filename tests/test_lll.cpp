@@ -13,7 +13,6 @@
 #include "scene/lights.h"
 #include "scene/scene_source.h"
 #include "shared/depth_slices.h"
-#include "shared/light_bins_types.h"
 #include "shared/lll_types.h"
 #include "test_support.h"
 
@@ -207,10 +206,9 @@ TEST(LllLists, SlicedListsOfDeepTilesMatchCpuReference) {
   EXPECT_GT(check.slicedOut, check.listed / 4);
 }
 
-// A cell's lights split among workgroups: each takes a part of at least kMinCellPart lights, so
-// only cells with more than that are shared. 1,200 lights on two cells of 8x8 16-pixel tiles: every
-// cell is shared by several parts, whose chains are spliced at the heads (one list per tile) or
-// pushed at the slices' heads (sliced).
+// A cell's lights split among workgroups (--lll-fill-splits): 1,200 lights on two cells of 8x8
+// 16-pixel tiles, each cell's lights in 8 parts, whose chains are spliced at the heads (one list per
+// tile) or pushed at the slices' heads (sliced).
 TEST(LllLists, CellsSharedByWorkgroupsLoseNoLight) {
   for (const uint32_t slices : {1u, 4u}) {
     RenderSettings settings;
@@ -226,7 +224,7 @@ TEST(LllLists, CellsSharedByWorkgroupsLoseNoLight) {
     double binned = 0.0;
     for (const auto& [name, value] : stats)
       if (name == "bin_entries_used") binned = value;
-    EXPECT_GT(binned, 2.0 * 2.0 * gpu::kMinCellPart) << "each of the two cells should hold several parts";
+    EXPECT_GT(binned, 2.0 * 8.0 * 64.0) << "each part of the two cells should hold a batch of lights";
     EXPECT_GT(check.mustList, 1000u);
     EXPECT_EQ(check.missing, 0u) << slices << " lists per tile";
     EXPECT_EQ(check.beyondMargin, 0u);

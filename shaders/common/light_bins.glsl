@@ -41,14 +41,6 @@ uvec2 binRange(uint cell) {
   return uvec2(first, min(binCells[cell].count, binHeader.capacity - first));
 }
 
-// Part `part` of `splits` of a cell's binned lights `binned` (first, count): equal chunks of at
-// least kMinCellPart lights, so the parts past the cell's lights are empty.
-uvec2 cellPart(uvec2 binned, uint part, uint splits) {
-  uint chunk = max(kMinCellPart, (binned.y + splits - 1u) / splits);
-  uint begin = min(part * chunk, binned.y);
-  return uvec2(binned.x + begin, min(binned.y - begin, chunk));
-}
-
 // Pixel x of view-ray slope u (x / z), pixel y of slope v (y / z, y up).
 float pixelOfSlopeX(float u) {
   return (u / frame.depthParams.z + 1.0) * 0.5 * frame.viewport.x;

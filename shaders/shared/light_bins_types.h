@@ -9,11 +9,6 @@
 
 LLL_NAMESPACE_BEGIN
 
-// The fewest binned lights a workgroup of a list build takes from its cell when the cell's lights
-// are split among several (LightBins' cellSplitsFor): a cell with few lights keeps them in few
-// workgroups, four full batches of 64 each, and the cell's other workgroups end at once.
-LLL_CONST(uint, kMinCellPart, 256u);
-
 // Written by the bins' clear pass each frame; `requested` counted by the scan, read back.
 struct LightBinHeader {
   uint requested;  // entries the scatter asked for, also past `capacity`: the size binLights needs

@@ -24,9 +24,8 @@
 
 namespace lll {
 
-// Workgroups that share one cell's binned lights in a list build (each takes a part of at least
-// kMinCellPart lights, so a cell with few lights uses few of them and the rest end at once): one per
-// 1,024 lights, at most kMaxCellSplits. Down a long view a few cells hold most of the lights; with one
+// Workgroups that share one cell's binned lights in a list build (each takes a part): one per 1,024
+// lights, at most kMaxCellSplits. Down a long view a few cells hold most of the lights; with one
 // workgroup each they hold up the frame (H200, 1,048,576 lights: lll's fill 31.3 ms with 1,
 // 10.2 with 16, 6.1 with 64).
 // On a CPU device every cell is split kMaxCellSplits ways whatever the light count: Mesa's

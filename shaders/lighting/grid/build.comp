@@ -28,8 +28,6 @@ void main() {
   uint splits = max(grid.params.w, 1u);
   uvec2 cell = uvec2(gl_WorkGroupID.x / splits, gl_WorkGroupID.y);
   uint part = gl_WorkGroupID.x % splits;
-  uvec2 binned = cellPart(binRange(cell.y * binHeader.cellsX + cell.x), part, splits);
-  if (binned.y == 0u) return;  // the whole group: nothing of this cell is left for this part
   uvec2 tilesSize = frame.counts.zw;
   uvec2 tile = cell * 8u + gl_LocalInvocationID.xy;
   bool valid = tile.x < tilesSize.x && tile.y < tilesSize.y;
@@ -49,6 +47,9 @@ void main() {
   vec4 ownSlopes = slopesOfTiles(tile, tile);
   barrier();
   float groupFar = uintBitsToFloat(groupFarBits);
+  uvec2 binned = binRange(cell.y * binHeader.cellsX + cell.x);
+  uint partBegin = binned.y * part / splits;
+  binned = uvec2(binned.x + partBegin, binned.y * (part + 1u) / splits - partBegin);
 
   for (uint base = 0u; base < binned.y; base += 64u) {
     uint candidate = kNoCandidate;

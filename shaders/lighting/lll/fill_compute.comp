@@ -26,13 +26,10 @@ shared uint groupBase;
 
 void main() {
   // With many lights a cell's binned lights are split among lll.params.w workgroups (one part
-  // each, of at least kMinCellPart lights), so the few cells that see most of the lights (down a
-  // long view) do not hold up the frame, while a cell with few lights keeps them in few groups.
+  // each), so the few cells that see most of the lights (down a long view) do not hold up the frame.
   uint splits = max(lll.params.w, 1u);
   uvec2 cell = uvec2(gl_WorkGroupID.x / splits, gl_WorkGroupID.y);
   uint part = gl_WorkGroupID.x % splits;
-  uvec2 binned = cellPart(binRange(cell.y * binHeader.cellsX + cell.x), part, splits);
-  if (binned.y == 0u) return;  // the whole group: nothing of this cell is left for this part
   uvec2 tilesSize = frame.counts.zw;
   uvec2 tile = cell * 8u + gl_LocalInvocationID.xy;
   bool valid = tile.x < tilesSize.x && tile.y < tilesSize.y;
@@ -53,6 +50,9 @@ void main() {
   barrier();
   float groupFar = uintBitsToFloat(groupFarBits);
 
+  uvec2 binned = binRange(cell.y * binHeader.cellsX + cell.x);
+  uint partBegin = binned.y * part / splits;
+  binned = uvec2(binned.x + partBegin, binned.y * (part + 1u) / splits - partBegin);
   uint head = kLinkEnd;
   uint tail = kLinkEnd, tailLight = 0u;  // this part's first link, the end of its chain
   for (uint base = 0u; base < binned.y; base += 64u) {
