@@ -3,8 +3,8 @@
 // the distance from a light to a tile's volume (ternary search, independent of the closed form the
 // GPU uses) and sampled points of a light inside a tile's volume.
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
 

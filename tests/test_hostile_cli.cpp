@@ -46,7 +46,7 @@ TEST_F(HostileCli, EveryNumericOptionRejectsHostileValues) {
       {render, "--frames"},         {render, "--exposure"},
       {render, "--ambient"},        {render, "--light-range-scale"},
       {render, "--tile"},           {particles, "--particle-count"},
-      {render, "--lll-slices"},
+      {render, "--lll-slices"},     {{"lll-memory"}, "--lll-slices"},
       {render, "--cascades"},       {render, "--shadow-resolution"},
       {bench, "--frames"},          {bench, "--warmup"},
       {bench, "--particle-count"},  {{"lll-memory"}, "--width"},

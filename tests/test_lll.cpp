@@ -95,7 +95,8 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
           ++check.listed;
           // A link in a slice its depth bounds do not reach lights no point there.
           const glm::vec2 raw = gpu::depthSliceBounds(lists.tileRange[index], slice, split, zNear);
-          if (lists.slices > 1 && (link.maxDepth < raw.x * (1.0f - 1e-3f) || link.minDepth > raw.y * (1.0f + 1e-3f)))
+          if (lists.slices > 1 &&
+              (link.maxDepth < raw.x * (1.0f - 1e-3f) || link.minDepth > raw.y * (1.0f + 1e-3f)))
             ++check.outsideSlice;
         }
         for (uint32_t i = 0; i < lights.size(); ++i) {
@@ -114,14 +115,16 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
           // Shells: a front face overwritten in the bounds buffer by another light counts as clipped by
           // the near plane (Bezrati 1.3.2), so such a link ignores the tile's depth: measure to the
           // tile's whole frustum.
-          const float marginDistance = settings.lllFill == "shells"
-                                           ? std::sqrt(referenceDistanceSquared(l.center, slopes, zNear, 1e4f))
-                                           : dist;
+          const float marginDistance =
+              settings.lllFill == "shells"
+                  ? std::sqrt(referenceDistanceSquared(l.center, slopes, zNear, 1e4f))
+                  : dist;
           if (link && marginDistance > allowedDistance(settings.lllFill, l, settings, renderer))
             ++check.beyondMargin;
           // Every sampled point of the light in this tile lies within the link's depth bounds.
           for (const glm::vec3& p : link ? inside : std::vector<glm::vec3>{})
-            if (p.z < link->minDepth - 1e-3f * p.z || p.z > link->maxDepth + 1e-3f * p.z) ++check.depthOutside;
+            if (p.z < link->minDepth - 1e-3f * p.z || p.z > link->maxDepth + 1e-3f * p.z)
+              ++check.depthOutside;
         }
       }
     }
@@ -162,27 +165,22 @@ TEST_P(LllLists, MatchCpuReference) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Fills, LllLists,
-                         ::testing::Values(ListCase{"compute", 8, 333, 197}, ListCase{"ray", 8, 333, 197},
-                                           ListCase{"shells", 8, 333, 197}, ListCase{"compute", 16, 333, 197},
-                                           ListCase{"ray", 16, 333, 197}, ListCase{"shells", 16, 333, 197},
-                                           ListCase{"compute", 1, 111, 67}, ListCase{"ray", 1, 111, 67},
-                                           ListCase{"shells", 1, 111, 67},
-                                           ListCase{"compute", 8, 333, 197, 3},
-                                           ListCase{"compute", 1, 111, 67, 16},
-                                           ListCase{"compute", 8, 333, 197, 0, 16},
-                                           ListCase{"compute", 8, 333, 197, 3, 16},
-                                           ListCase{"compute", 1, 111, 67, 0, 32},
-                                           ListCase{"ray", 16, 333, 197, 0, 8},
-                                           ListCase{"shells", 8, 333, 197, 0, 4}),
-                         [](const auto& info) {
-                           return std::string(info.param.fill) + "_tile" + std::to_string(info.param.tile) +
-                                  "_" + std::to_string(info.param.width) + "x" +
-                                  std::to_string(info.param.height) +
-                                  (info.param.fillSplits ? "_splits" + std::to_string(info.param.fillSplits)
-                                                         : "") +
-                                  (info.param.slices > 1 ? "_slices" + std::to_string(info.param.slices) : "");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Fills, LllLists,
+    ::testing::Values(ListCase{"compute", 8, 333, 197}, ListCase{"ray", 8, 333, 197},
+                      ListCase{"shells", 8, 333, 197}, ListCase{"compute", 16, 333, 197},
+                      ListCase{"ray", 16, 333, 197}, ListCase{"shells", 16, 333, 197},
+                      ListCase{"compute", 1, 111, 67}, ListCase{"ray", 1, 111, 67},
+                      ListCase{"shells", 1, 111, 67}, ListCase{"compute", 8, 333, 197, 3},
+                      ListCase{"compute", 1, 111, 67, 16}, ListCase{"compute", 8, 333, 197, 0, 16},
+                      ListCase{"compute", 8, 333, 197, 3, 16}, ListCase{"compute", 1, 111, 67, 0, 32},
+                      ListCase{"ray", 16, 333, 197, 0, 8}, ListCase{"shells", 8, 333, 197, 0, 4}),
+    [](const auto& info) {
+      return std::string(info.param.fill) + "_tile" + std::to_string(info.param.tile) + "_" +
+             std::to_string(info.param.width) + "x" + std::to_string(info.param.height) +
+             (info.param.fillSplits ? "_splits" + std::to_string(info.param.fillSplits) : "") +
+             (info.param.slices > 1 ? "_slices" + std::to_string(info.param.slices) : "");
+    });
 
 // The compute fill reads the lights binned to its cell (lighting/light_bins.h). Many large lights
 // on a fine grid overflow the bins' first allocation: the frame must be drawn again with room for

@@ -49,7 +49,8 @@ uint listIndexOf(uint tileIndex, float viewDepth) {
   uint slices = listSlices();
   if (slices == 1u) return tileIndex;
   vec2 range = tileRange[tileIndex];
-  return tileIndex * slices + depthSliceOf(range, viewDepth, lllSliceSplit(range, slices), frame.depthParams.x);
+  return tileIndex * slices +
+         depthSliceOf(range, viewDepth, lllSliceSplit(range, slices), frame.depthParams.x);
 }
 
 // Clamped to the grid: helper invocations beyond the image's right or bottom edge must still read

@@ -202,13 +202,14 @@ int printLllMemory(const LllMemoryQuery& query) {
   // The technique's two link layouts (shaders/shared/lll_types.h): compact 8 bytes, wide 16.
   const uint32_t linkBytes = query.link == "wide" ? 16 : 8;
   const LllMemory m = estimateLllMemory(query.width, query.height, query.tile, query.linksPerTile, linkBytes,
-                                          std::max(query.slices, 1u));
+                                        std::max(query.slices, 1u));
   // MiB, two decimals: the chapter's "MB" (506.25 MB at 1920x1080 per pixel) are MiB.
   auto line = [](const char* what, uint64_t bytes) {
     fmt::print("{:<11} {} bytes ({:.2f} MiB)\n", what, bytes, double(bytes) / (1024.0 * 1024.0));
   };
   fmt::print(
-      "lll-memory: {} x {} pixels, {} x {} pixel tiles, {} links per tile, {} links of {} bytes, {} lists per tile\n",
+      "lll-memory: {} x {} pixels, {} x {} pixel tiles, {} links per tile, {} links of {} bytes, {} lists "
+      "per tile\n",
       query.width, query.height, query.tile, query.tile, query.linksPerTile, query.link, linkBytes,
       std::max(query.slices, 1u));
   fmt::print("{:<11} {} x {} = {}\n", "tiles", m.tilesX, m.tilesY, uint64_t(m.tilesX) * m.tilesY);

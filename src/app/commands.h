@@ -46,7 +46,7 @@ struct LllMemoryQuery {
   uint32_t height = 1080;
   uint32_t tile = 8;
   uint32_t linksPerTile = 32;
-  std::string link = "compact";  // compact (8-byte links) | wide (16-byte links)
+  std::string link = "compact";                  // compact (8-byte links) | wide (16-byte links)
   uint32_t slices = RenderSettings{}.lllSlices;  // lists (heads) per tile, as --lll-slices
 };
 int printLllMemory(const LllMemoryQuery& query);

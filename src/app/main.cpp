@@ -73,9 +73,10 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "compute fill: workgroups sharing each 8x8-tile cell's lights (1 to 64; 0: 1 per 1,024 "
                  "lights, 64 on a CPU device)")
       ->check(CLI::Range(0u, 64u));
-  cmd.add_option("--lll-slices", s.lllSlices,
-                 "lists per tile, one per depth slice: 1 (one list per tile) to 32; slices split the depth in "
-                 "front of the tile's nearest surface and, where deep, its surfaces' depth range")
+  cmd.add_option(
+         "--lll-slices", s.lllSlices,
+         "lists per tile, one per depth slice: 1 (one list per tile) to 32; slices split the depth in "
+         "front of the tile's nearest surface and, where deep, its surfaces' depth range")
       ->check(CLI::Range(0u, 32u));
   cmd.add_option("--lll-link", s.lllLink, "link format: compact (8 B, <=256 lights) | wide (16 B) | auto")
       ->check(CLI::IsMember({"compact", "wide", "auto"}));

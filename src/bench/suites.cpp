@@ -156,18 +156,17 @@ std::vector<Scenario> densitySuite(const SuiteOptions& options) {
 }
 
 // Depth-sliced lists (--lll-slices): lll's compute fill with one list per tile and with 2 to 32
-// lists (slices) per tile, on the density suite's lights (small, at constant density) and the scaling suite's (the
-// default scene's ranges, many lights along each tile's depth).
+// lists (slices) per tile, on the density suite's lights (small, at constant density) and the scaling suite's
+// (the default scene's ranges, many lights along each tile's depth).
 std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   const std::vector<uint32_t> slices =
       options.quick ? std::vector<uint32_t>{1, 4, 16} : std::vector<uint32_t>{1, 2, 4, 8, 16, 32};
   std::vector<Scenario> out;
   for (const bool dense : {true, false}) {
-    const std::vector<uint32_t> counts =
-        options.quick ? std::vector<uint32_t>{64, 256}
-        : dense       ? std::vector<uint32_t>{4096, 131072, 1048576}
-                      : std::vector<uint32_t>{1024, 16384, 65536};
+    const std::vector<uint32_t> counts = options.quick ? std::vector<uint32_t>{64, 256}
+                                         : dense       ? std::vector<uint32_t>{4096, 131072, 1048576}
+                                                       : std::vector<uint32_t>{1024, 16384, 65536};
     for (const uint32_t lights : counts) {
       SceneRequest scene{kDefaultSceneName, lights, 1};
       if (dense) {
@@ -175,8 +174,8 @@ std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
         scene.scaleIntensityWithRange = true;
       }
       for (const uint32_t n : slices) {
-        Scenario s = makeScenario("slices", fmt::format("{} {} lights", dense ? "density" : "scaling", lights),
-                                  scene, size);
+        Scenario s = makeScenario(
+            "slices", fmt::format("{} {} lights", dense ? "density" : "scaling", lights), scene, size);
         s.settings.technique = "lll";
         s.settings.lllSlices = n;
         out.push_back(s);
@@ -450,8 +449,8 @@ std::string techniqueLabel(const RenderSettings& settings) {
 }
 
 const std::vector<std::string>& suiteNames() {
-  static const std::vector<std::string> names = {"threel", "scaling",  "density", "slices", "tiles",
-                                                 "overdraw", "smoke", "gi",      "gi-error", "shadows"};
+  static const std::vector<std::string> names = {"threel",   "scaling", "density", "slices",   "tiles",
+                                                 "overdraw", "smoke",   "gi",      "gi-error", "shadows"};
   return names;
 }
 

@@ -25,8 +25,8 @@ struct LightLinkRecord {
 struct TileLightLists {
   uint32_t tilesX = 0;
   uint32_t tilesY = 0;
-  uint32_t slices = 1;                // lists per tile: 1, or its depth slices (--lll-slices)
-  std::vector<glm::vec2> tileRange;   // nearest and farthest linear depth of each tile's opaque surfaces
+  uint32_t slices = 1;               // lists per tile: 1, or its depth slices (--lll-slices)
+  std::vector<glm::vec2> tileRange;  // nearest and farthest linear depth of each tile's opaque surfaces
   std::vector<std::vector<LightLinkRecord>> lists;  // list tile * slices + slice, head first
 };
 

@@ -109,7 +109,7 @@ void main() {
     clipToCone(dir, center - axis * (inflation / sinAngle), axis, cosAngle * cosAngle, lo, hi);
   }
   if (hi < lo || hi <= 0.0) return;
-  lo = max(lo, 0.0);                      // the eye is inside the light
+  lo = max(lo, 0.0);                        // the eye is inside the light
   if (lo > tileRange[tileIndex].y) return;  // software depth test: behind the tile's farthest surface
   pushLink(tileIndex, inLight, lo, hi);
 }
