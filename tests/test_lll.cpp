@@ -133,6 +133,30 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
   return check;
 }
 
+// An lll render of `width` x `height` with `slices` lists per tile.
+RenderSettings listSettings(const char* fill, uint32_t tile, uint32_t width, uint32_t height, uint32_t slices,
+                            uint32_t fillSplits = 0) {
+  RenderSettings settings;
+  settings.technique = "lll";
+  settings.lllFill = fill;
+  settings.tileSize = tile;
+  settings.width = width;
+  settings.height = height;
+  settings.lllSlices = slices;
+  settings.lllFillSplits = fillSplits;
+  return settings;
+}
+
+// Every light the reference requires is listed; no link lies beyond the fill's documented margin,
+// misses a sampled point of its light, or sits in a depth slice its bounds do not reach.
+void expectListsHoldEveryLight(const ListCheck& check, const std::string& what) {
+  EXPECT_EQ(check.missing, 0u) << what << ": lights the reference requires but the fill did not list";
+  EXPECT_EQ(check.beyondMargin, 0u) << what
+                                    << ": lights listed farther away than the fill's documented margin";
+  EXPECT_EQ(check.depthOutside, 0u) << what << ": light points outside their link's depth bounds";
+  EXPECT_EQ(check.outsideSlice, 0u) << what << ": links in depth slices their bounds do not reach";
+}
+
 struct ListCase {
   const char* fill;
   uint32_t tile;
@@ -146,20 +170,10 @@ class LllLists : public ::testing::TestWithParam<ListCase> {};
 
 TEST_P(LllLists, MatchCpuReference) {
   const ListCase c = GetParam();
-  RenderSettings settings;
-  settings.technique = "lll";
-  settings.lllFill = c.fill;
-  settings.tileSize = c.tile;
-  settings.width = c.width;
-  settings.height = c.height;
-  settings.lllFillSplits = c.fillSplits;
-  settings.lllSlices = c.slices;
-  const ListCheck check = checkLists(test::awkwardLightsScene(40), settings);
+  const ListCheck check = checkLists(test::awkwardLightsScene(40),
+                                     listSettings(c.fill, c.tile, c.width, c.height, c.slices, c.fillSplits));
   EXPECT_GT(check.mustList, 100u);  // the scene really exercises the lists
-  EXPECT_EQ(check.missing, 0u) << "lights the reference requires but the fill did not list";
-  EXPECT_EQ(check.beyondMargin, 0u) << "lights listed farther away than the fill's documented margin";
-  EXPECT_EQ(check.depthOutside, 0u) << "light points outside their link's depth bounds";
-  EXPECT_EQ(check.outsideSlice, 0u) << "links in depth slices their bounds do not reach";
+  expectListsHoldEveryLight(check, c.fill);
   if (c.slices > 1) {
     EXPECT_GT(check.slicedOut, check.listed / 4) << "the slices should keep most lights out of most lists";
   }
@@ -182,24 +196,13 @@ INSTANTIATE_TEST_SUITE_P(
              (info.param.slices > 1 ? "_slices" + std::to_string(info.param.slices) : "");
     });
 
-// The compute fill reads the lights binned to its cell (lighting/light_bins.h). Many large lights
-// on a fine grid overflow the bins' first allocation: the frame must be drawn again with room for
-// every entry, and the lists must still hold every light the reference requires.
 // Depth-sliced lists where tiles are deep: the atrium's columns and arches in front of its walls
 // split the tiles' opaque depth ranges as well as the depth in front of them.
 TEST(LllLists, SlicedListsOfDeepTilesMatchCpuReference) {
-  RenderSettings settings;
-  settings.technique = "lll";
-  settings.tileSize = 16;
-  settings.width = 192;
-  settings.height = 108;
-  settings.lllSlices = 8;
-  const ListCheck check = checkLists(test::loadSceneWithLights({"atrium", 300}), settings);
+  const ListCheck check =
+      checkLists(test::loadSceneWithLights({"atrium", 300}), listSettings("compute", 16, 192, 108, 8));
   EXPECT_GT(check.mustList, 1000u);
-  EXPECT_EQ(check.missing, 0u) << "lights the reference requires but the fill did not list";
-  EXPECT_EQ(check.beyondMargin, 0u);
-  EXPECT_EQ(check.depthOutside, 0u);
-  EXPECT_EQ(check.outsideSlice, 0u);
+  expectListsHoldEveryLight(check, "atrium, 8 slices");
   EXPECT_GT(check.deepTiles, 10u) << "the atrium should have tiles with deep opaque ranges";
   EXPECT_GT(check.slicedOut, check.listed / 4);
 }
@@ -209,37 +212,25 @@ TEST(LllLists, SlicedListsOfDeepTilesMatchCpuReference) {
 // tile) or pushed at the slices' heads (sliced).
 TEST(LllLists, CellsSharedByWorkgroupsLoseNoLight) {
   for (const uint32_t slices : {1u, 4u}) {
-    RenderSettings settings;
-    settings.technique = "lll";
-    settings.tileSize = 16;
-    settings.width = 160;
-    settings.height = 90;
-    settings.lllFillSplits = 8;
-    settings.lllSlices = slices;
     std::vector<std::pair<std::string, double>> stats;
-    const Scene scene = test::awkwardLightsScene(1200);
-    const ListCheck check = checkLists(scene, settings, &stats);
+    const ListCheck check =
+        checkLists(test::awkwardLightsScene(1200), listSettings("compute", 16, 160, 90, slices, 8), &stats);
     double binned = 0.0;
     for (const auto& [name, value] : stats)
       if (name == "bin_entries_used") binned = value;
     EXPECT_GT(binned, 2.0 * 8.0 * 64.0) << "each part of the two cells should hold a batch of lights";
     EXPECT_GT(check.mustList, 1000u);
-    EXPECT_EQ(check.missing, 0u) << slices << " lists per tile";
-    EXPECT_EQ(check.beyondMargin, 0u);
-    EXPECT_EQ(check.depthOutside, 0u);
-    EXPECT_EQ(check.outsideSlice, 0u);
+    expectListsHoldEveryLight(check, std::to_string(slices) + " lists per tile");
   }
 }
 
+// The compute fill reads the lights binned to its cell (lighting/light_bins.h). Many large lights
+// on a fine grid overflow the bins' first allocation: the frame must be drawn again with room for
+// every entry, and the lists must still hold every light the reference requires.
 TEST(LllLists, OverflowingBinsGrowAndLoseNoLight) {
-  RenderSettings settings;
-  settings.technique = "lll";
-  settings.lllFill = "compute";
-  settings.tileSize = 2;
-  settings.width = 96;
-  settings.height = 54;
   std::vector<std::pair<std::string, double>> stats;
-  const ListCheck check = checkLists(test::awkwardLightsScene(400), settings, &stats);
+  const ListCheck check = checkLists(test::awkwardLightsScene(400),
+                                     listSettings("compute", 2, 96, 54, RenderSettings{}.lllSlices), &stats);
   double overflows = -1.0, used = 0.0, capacity = 0.0;
   for (const auto& [name, value] : stats) {
     if (name == "bin_overflows") overflows = value;
@@ -249,9 +240,7 @@ TEST(LllLists, OverflowingBinsGrowAndLoseNoLight) {
   EXPECT_GE(overflows, 1.0) << "the scene should overflow the bins' first allocation";
   EXPECT_GE(capacity, used);
   EXPECT_GT(check.mustList, 1000u);
-  EXPECT_EQ(check.missing, 0u) << "lights the reference requires but the fill did not list";
-  EXPECT_EQ(check.beyondMargin, 0u);
-  EXPECT_EQ(check.depthOutside, 0u);
+  expectListsHoldEveryLight(check, "after the bins grew");
 }
 
 // --- Images: lll must reproduce forward, the brute-force reference --------------------------------
