@@ -345,6 +345,27 @@ TEST(LllImages, MoreSlicesThanTheMostAreRefused) {
   }
 }
 
+// A list head per tile and slice: past the device's largest storage buffer the technique is
+// refused, naming the heads and the option, before it creates anything.
+TEST(LllImages, SliceHeadsPastTheDeviceLimitAreRefused) {
+  Context& context = test::gpuContext();
+  const uint64_t limit = context.properties().limits.maxStorageBufferRange;
+  RenderSettings settings;
+  settings.technique = "lll";
+  settings.tileSize = 1;
+  settings.lllSlices = gpu::kMaxLllSlices;
+  settings.width = 4096;  // one more row of tiles than 32 heads a tile fit in the limit
+  settings.height = uint32_t(limit / (4ull * gpu::kMaxLllSlices) / settings.width + 1);
+  try {
+    Renderer(context, *makeBuiltinScene("plane"), settings);
+    ADD_FAILURE() << settings.width << "x" << settings.height << " with 32 slices accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("heads"), std::string::npos) << message;
+    EXPECT_NE(message.find("--lll-slices"), std::string::npos) << message;
+  }
+}
+
 TEST(LllImages, CompactLinksRefuseTooManyLights) {
   Scene scene = test::awkwardLightsScene(300);
   RenderSettings settings;

@@ -212,6 +212,8 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   createPipelines();
   if (fill_ != LllFill::Compute) createShells(scene);
   allocatePool(uint64_t(tiles_) * std::max(1u, settings.linksPerTile) * std::min(slices_, 2u));
+  // Last: a raw handle, which a throw above would leak (the destructor does not run then).
+  depthSampler_ = createNearestClampSampler(context_);
 }
 
 LightLinkedList::~LightLinkedList() {
@@ -222,18 +224,21 @@ void LightLinkedList::createBuffers() {
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   uniformBuffer_ =
       Buffer(context_, sizeof(gpu::LllUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+  requireStorageBufferFits(context_, uint64_t(tiles_) * slices_, 4, "the light linked list's head array",
+                           "lists (heads)", "use fewer --lll-slices, a larger --tile or a lower resolution");
   heads_ = Buffer(context_, uint64_t(tiles_) * slices_ * 4, storage, MemoryUse::Device);
   tileRange_ = Buffer(context_, uint64_t(tiles_) * 8, storage, MemoryUse::Device);
   // Read by the CPU after each frame: link requests (overflow) and list statistics.
   counters_ = Buffer(context_, sizeof(gpu::LllCounters), storage, MemoryUse::Readback);
   if (fill_ == LllFill::Shells)
     bounds_ = Buffer(context_, uint64_t(tiles_) * 4 * kBoundsLayers, storage, MemoryUse::Device);
-  depthSampler_ = createNearestClampSampler(context_);
 }
 
 void LightLinkedList::allocatePool(uint64_t links) {
   requireStorageBufferFits(context_, links, linkBytes_, "the light linked list's pool", "links",
-                           "use a larger --tile, a lower resolution or fewer lights");
+                           slices_ > 1
+                               ? "use fewer --lll-slices, a larger --tile, a lower resolution or fewer lights"
+                               : "use a larger --tile, a lower resolution or fewer lights");
   if (links > maxPoolLinks_)  // what remains: compact links address at most 2^24 - 1
     throw InputError(fmt::format("{} links: compact links address at most {}: use --lll-link wide or auto",
                                  links, maxPoolLinks_));
