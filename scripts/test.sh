@@ -30,7 +30,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # The soak's 120 frames per technique ran in the release build; here its shortest run (70 frames)
 # checks AddressSanitizer's own heap count.
 export LLL_SOAK_FRAMES=70
-# Every test but the sweeps (388 of 795): every technique is drawn under the sanitizers.
+# Every test but the sweeps (389 of 796): every technique is drawn under the sanitizers.
 (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs" --timeout 900 -E "$sweeps")
 unset ASAN_OPTIONS UBSAN_OPTIONS LLL_SOAK_FRAMES
 
