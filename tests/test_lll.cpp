@@ -86,7 +86,8 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
       for (uint32_t slice = 0; slice < lists.slices; ++slice) {
         // The slice's volume; with slices, only points strictly inside it (a point on a boundary
         // belongs to either neighbour).
-        glm::vec2 b = gpu::depthSliceBounds(lists.tileRange[index], slice, split, zNear);
+        const glm::vec2 raw = gpu::depthSliceBounds(lists.tileRange[index], slice, split, zNear);
+        glm::vec2 b = raw;
         if (lists.slices > 1) b = {std::max(b.x * (1.0f + 1e-3f), zNear), b.y * (1.0f - 1e-3f)};
         std::vector<const LightLinkRecord*> byLight(lights.size(), nullptr);
         for (const LightLinkRecord& link : lists.lists[size_t(index) * lists.slices + slice]) {
@@ -94,7 +95,6 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
           if (link.light < lights.size()) byLight[link.light] = &link;
           ++check.listed;
           // A link in a slice its depth bounds do not reach lights no point there.
-          const glm::vec2 raw = gpu::depthSliceBounds(lists.tileRange[index], slice, split, zNear);
           if (lists.slices > 1 &&
               (link.maxDepth < raw.x * (1.0f - 1e-3f) || link.minDepth > raw.y * (1.0f + 1e-3f)))
             ++check.outsideSlice;

@@ -104,10 +104,8 @@ uvec2 listsOverlapping(uint tileIndex, float minDepth, float maxDepth) {
   uint slices = listSlices();
   if (slices == 1u) return uvec2(tileIndex);
   vec2 range = tileRange[tileIndex];
-  uvec2 split = lllSliceSplit(range, slices);
-  float zNear = frame.depthParams.x;
   return tileIndex * slices +
-         uvec2(depthSliceOf(range, minDepth, split, zNear), depthSliceOf(range, maxDepth, split, zNear));
+         depthSlicesOverlapping(range, minDepth, maxDepth, lllSliceSplit(range, slices), frame.depthParams.x);
 }
 
 // Allocates links and pushes one at the head of each of the tile's lists the light's depth bounds

@@ -39,6 +39,12 @@ LLL_FUNCTION uint depthSliceOf(vec2 range, float depth, uvec2 split, float zNear
   return split.x + uint(min(max(s, 0.0f), float(split.y - 1u)));
 }
 
+// The run of slices (first, last) that a depth interval [minDepth, maxDepth] overlaps.
+LLL_FUNCTION uvec2 depthSlicesOverlapping(vec2 range, float minDepth, float maxDepth, uvec2 split,
+                                          float zNear) {
+  return uvec2(depthSliceOf(range, minDepth, split, zNear), depthSliceOf(range, maxDepth, split, zNear));
+}
+
 // The depth bounds of slice `slice`.
 LLL_FUNCTION vec2 depthSliceBounds(vec2 range, uint slice, uvec2 split, float zNear) {
   if (slice < split.x) {

@@ -201,8 +201,9 @@ int printLllMemory(const LllMemoryQuery& query) {
     throw InputError(fmt::format("--link {}: expected compact or wide", query.link));
   // The technique's two link layouts (shaders/shared/lll_types.h): compact 8 bytes, wide 16.
   const uint32_t linkBytes = query.link == "wide" ? 16 : 8;
-  const LllMemory m = estimateLllMemory(query.width, query.height, query.tile, query.linksPerTile, linkBytes,
-                                        std::max(query.slices, 1u));
+  const uint32_t slices = std::max(query.slices, 1u);
+  const LllMemory m =
+      estimateLllMemory(query.width, query.height, query.tile, query.linksPerTile, linkBytes, slices);
   // MiB, two decimals: the chapter's "MB" (506.25 MB at 1920x1080 per pixel) are MiB.
   auto line = [](const char* what, uint64_t bytes) {
     fmt::print("{:<11} {} bytes ({:.2f} MiB)\n", what, bytes, double(bytes) / (1024.0 * 1024.0));
@@ -210,8 +211,7 @@ int printLllMemory(const LllMemoryQuery& query) {
   fmt::print(
       "lll-memory: {} x {} pixels, {} x {} pixel tiles, {} links per tile, {} links of {} bytes, {} lists "
       "per tile\n",
-      query.width, query.height, query.tile, query.tile, query.linksPerTile, query.link, linkBytes,
-      std::max(query.slices, 1u));
+      query.width, query.height, query.tile, query.tile, query.linksPerTile, query.link, linkBytes, slices);
   fmt::print("{:<11} {} x {} = {}\n", "tiles", m.tilesX, m.tilesY, uint64_t(m.tilesX) * m.tilesY);
   fmt::print("{:<11} {}\n", "links", m.links);
   line("link pool", m.poolBytes);

@@ -436,9 +436,9 @@ std::string seriesLabel(const Scenario& scenario) {
 std::string lllVariant(const RenderSettings& settings) {
   if (settings.technique != "lll") return "";
   // Lists per tile, named where they are not the default.
-  const uint32_t slices = std::max(settings.lllSlices, 1u);
+  const uint32_t slices = lllListsPerTile(settings);
   const std::string sliced =
-      slices != std::max(RenderSettings{}.lllSlices, 1u) ? fmt::format("/slices{}", slices) : "";
+      slices != lllListsPerTile(RenderSettings{}) ? fmt::format("/slices{}", slices) : "";
   if (settings.lllShade == "fragment") return settings.lllFill + "/fragment-shade" + sliced;
   if (settings.surfaces == "gbuffer") return settings.lllFill + "/gbuffer" + sliced;
   return (settings.raster == "hardware" ? settings.lllFill + "/hardware-raster" : settings.lllFill) + sliced;

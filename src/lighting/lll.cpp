@@ -196,7 +196,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   if (settings.lllSlices > gpu::kMaxLllSlices)
     throw InputError(fmt::format("--lll-slices {}: expected 1 (one list per tile) to {} lists per tile",
                                  settings.lllSlices, gpu::kMaxLllSlices));
-  slices_ = std::max(settings.lllSlices, 1u);
+  slices_ = lllListsPerTile(settings);
   uniforms_.slicing = glm::uvec4(slices_, 0, 0, 0);
   uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),

@@ -1,6 +1,7 @@
 #pragma once
 // Everything a user can set about a rendered frame. The CLI fills it; techniques read the fields
 // that concern them.
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -62,5 +63,10 @@ struct RenderSettings {
   // GPU where it fits, hardware on a CPU device).
   std::string shadowRaster = "auto";
 };
+
+// Lists per tile of lll's light lists (--lll-slices; 0 means 1).
+inline uint32_t lllListsPerTile(const RenderSettings& settings) {
+  return std::max(settings.lllSlices, 1u);
+}
 
 }  // namespace lll

@@ -89,8 +89,8 @@ void main() {
       for (uint bits = hits[word]; bits != 0u; bits &= bits - 1u) {
         GpuLight light = lights[candidates[word * 32u + uint(findLSB(bits))]];
         float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
-        own += depthSliceOf(range, z + halfDepth, split, zNear) -
-               depthSliceOf(range, z - halfDepth, split, zNear) + 1u;
+        uvec2 run = depthSlicesOverlapping(range, z - halfDepth, z + halfDepth, split, zNear);
+        own += run.y - run.x + 1u;
       }
     }
     uint offset = own > 0u ? atomicAdd(groupLinks, own) : 0u;
@@ -107,9 +107,9 @@ void main() {
         GpuLight light = lights[candidates[i]];
         float z = toViewDepthSpace(light.positionRange.xyz).z, halfDepth = depthHalfExtent(light);
         if (sliced) {
-          uint first = tileIndex * slices, last = first + depthSliceOf(range, z + halfDepth, split, zNear);
-          for (uint list = first + depthSliceOf(range, z - halfDepth, split, zNear);
-               list <= last && link < lll.params.x; ++list, ++link)
+          uvec2 lists =
+              tileIndex * slices + depthSlicesOverlapping(range, z - halfDepth, z + halfDepth, split, zNear);
+          for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
             writeLink(link, candidates[i], z - halfDepth, z + halfDepth,
                       atomicExchange(tileHeads[list], link));
           continue;
