@@ -7,8 +7,8 @@
 // fills exactly the counted ranges.
 // A light covering at most kSmallLightCells cells is one thread's work. A larger one would leave a
 // thread looping over hundreds of cells (a full-screen light at 1080p covers 510), so the count
-// pass lists it instead and kLargeLightGroups workgroups visit its cells 64 at a time: in the
-// large-light count pass, and in the scatter dispatch's groups past the lights'.
+// pass lists it instead and largeLightGroups() workgroups (light_bins.cpp) visit its cells 64 at a time: in
+// the large-light count pass, and in the scatter dispatch's groups past the lights'.
 #include "common/light_bins.glsl"
 #include "common/light_tile_test.glsl"
 
