@@ -111,24 +111,41 @@ TEST(BenchSuites, DensityKeepsLightsPerPixelAndSkipsTheSlowTechniquesBeyondTheir
 // The density scenes: a quarter the range and a sixteenth the intensity at 64x the lights.
 TEST(BenchSuites, SlicesIsLllWithAndWithoutDepthSlicesOnBothLightSets) {
   const auto full = buildSuite("slices", SuiteOptions{});
-  ASSERT_EQ(full.size(), 2u * 3u * 6u);
-  size_t dense = 0, sliced = 0;
+  // Per light count: 6 slice counts at tile 8; on the dense lights also at tile 16, and the two
+  // peers at tile 16.
+  ASSERT_EQ(full.size(), 3u * 6u + 3u * (6u + 6u + 2u));
+  size_t dense = 0, sliced = 0, peers = 0;
   std::set<std::string> labels;
   for (const Scenario& s : full) {
-    EXPECT_EQ(s.settings.technique, "lll");
-    EXPECT_EQ(s.settings.lllFill, "compute");
-    EXPECT_LE(s.settings.lllSlices, 32u);
     EXPECT_TRUE(s.skip.empty());
     dense += s.scene.scaleIntensityWithRange;
+    labels.insert(seriesLabel(s));
+    if (s.settings.technique != "lll") {
+      ++peers;
+      EXPECT_TRUE(s.settings.technique == "tiled" || s.settings.technique == "clustered");
+      EXPECT_EQ(s.settings.tileSize, 16u);
+      EXPECT_TRUE(s.scene.scaleIntensityWithRange);
+      EXPECT_EQ(seriesLabel(s), s.settings.technique + "/tile16");
+      continue;
+    }
+    EXPECT_EQ(s.settings.lllFill, "compute");
+    EXPECT_LE(s.settings.lllSlices, 32u);
     sliced += s.settings.lllSlices > 1;
+    EXPECT_TRUE(s.settings.tileSize == 8u || s.settings.tileSize == 16u);
+    if (s.settings.tileSize == 16u) {
+      EXPECT_TRUE(s.scene.scaleIntensityWithRange);
+      EXPECT_EQ(seriesLabel(s), techniqueLabel(s.settings) + "/tile16");
+      continue;
+    }
     // Every count but the default is named in the label.
     EXPECT_EQ(seriesLabel(s) == "lll/compute", s.settings.lllSlices == RenderSettings{}.lllSlices);
-    labels.insert(seriesLabel(s));
   }
-  EXPECT_EQ(dense, 18u);
-  EXPECT_EQ(sliced, 30u);
-  EXPECT_EQ(labels.size(), 6u);  // each slice count is its own series
+  EXPECT_EQ(dense, 3u * 14u);
+  EXPECT_EQ(sliced, 30u + 15u);
+  EXPECT_EQ(peers, 6u);
+  EXPECT_EQ(labels.size(), 6u + 6u + 2u);  // each slice count and tile size is its own series
   EXPECT_TRUE(labels.count("lll/compute/slices16")) << fmt::format("{}", fmt::join(labels, ", "));
+  EXPECT_TRUE(labels.count("lll/compute/slices32/tile16")) << fmt::format("{}", fmt::join(labels, ", "));
 }
 
 TEST(BenchSuites, DensityScalesIntensityWithTheSquareOfTheRange) {

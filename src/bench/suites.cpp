@@ -157,7 +157,8 @@ std::vector<Scenario> densitySuite(const SuiteOptions& options) {
 
 // Depth-sliced lists (--lll-slices): lll's compute fill with one list per tile and with 2 to 32
 // lists (slices) per tile, on the density suite's lights (small, at constant density) and the scaling suite's
-// (the default scene's ranges, many lights along each tile's depth).
+// (the default scene's ranges, many lights along each tile's depth); on the density suite's lights
+// also at tile 16, with tiled and clustered at tile 16.
 std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   const std::vector<uint32_t> slices =
@@ -173,11 +174,29 @@ std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
         scene.lightRangeScale = float(std::cbrt(1024.0 / double(lights)));
         scene.scaleIntensityWithRange = true;
       }
+      const std::string name = fmt::format("{} {} lights", dense ? "density" : "scaling", lights);
       for (const uint32_t n : slices) {
-        Scenario s = makeScenario(
-            "slices", fmt::format("{} {} lights", dense ? "density" : "scaling", lights), scene, size);
+        Scenario s = makeScenario("slices", name, scene, size);
         s.settings.technique = "lll";
         s.settings.lllSlices = n;
+        out.push_back(s);
+      }
+      if (!dense) continue;
+      // Small dense lights cover few 16-pixel tiles: every slice count again at tile 16, and the
+      // peers at tile 16 too, so that lll's best is set against theirs at the same tile size.
+      for (const uint32_t n : slices) {
+        Scenario s = makeScenario("slices", name, scene, size);
+        s.settings.technique = "lll";
+        s.settings.lllSlices = n;
+        s.settings.tileSize = 16;
+        s.series = techniqueLabel(s.settings) + "/tile16";
+        out.push_back(s);
+      }
+      for (const char* peer : {"tiled", "clustered"}) {
+        Scenario s = makeScenario("slices", name, scene, size);
+        s.settings.technique = peer;
+        s.settings.tileSize = 16;
+        s.series = std::string(peer) + "/tile16";
         out.push_back(s);
       }
     }
