@@ -51,7 +51,7 @@ TEST_F(HostileCli, EveryNumericOptionRejectsHostileValues) {
       {bench, "--frames"},          {bench, "--warmup"},
       {bench, "--particle-count"},  {{"lll-memory"}, "--width"},
       {{"lll-memory"}, "--height"}, {{"lll-memory"}, "--links-per-tile"},
-      {{"lll-memory"}, "--tile"},
+      {{"lll-memory"}, "--tile"},   {render, "--time"},
   };
   for (const OptionCase& c : cases) {
     for (const std::string& value : kHostileNumbers) {

@@ -24,6 +24,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/camera.h"
 #include "scene/errors.h"
+#include "scene/light_animation.h"
 
 namespace lll {
 
@@ -102,7 +103,7 @@ int runRender(const RenderJob& job) {
   IndirectLightReport gi;
   SlowWorkProgress photonProgress("tracing photons");
   if (job.scene.gi.mode != "none") gi.progress = [&](double f) { photonProgress.update(f); };
-  const Scene scene = loadScene(job.scene, &warnings, &gi);
+  Scene scene = loadScene(job.scene, &warnings, &gi);  // not const: --animate moves its lights
   photonProgress.finish();
   for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
   if (job.scene.gi.mode != "none") printIndirectLight(job.scene.gi, gi.stats);
@@ -110,14 +111,23 @@ int runRender(const RenderJob& job) {
   Context context(job.device);
   Renderer renderer(context, scene, job.settings);
   std::vector<FrameResult> frames;
+  // --animate: frame i shows the moving lights at --time + i / 60 s.
+  auto moveLightsTo = [&](uint32_t frame) {
+    if (!job.settings.animateLights || frame == 0 || scene.lightAnimation.empty()) return;
+    placeLightsAt(scene.lights, scene.lightAnimation, job.scene.time + float(frame) * kAnimationFrameSeconds);
+    renderer.updateLights();
+  };
   if (renderer.particles()) {
     // --frames N: N fixed simulation steps, the last one in the drawn frame. Drawing the others
     // would change nothing in the image and costs minutes on a CPU device.
     renderer.advanceParticles(job.settings.frames - 1);
+    moveLightsTo(job.settings.frames - 1);
     frames.push_back(renderer.renderFrame(true));
   } else {
-    for (uint32_t i = 0; i < job.settings.frames; ++i)
+    for (uint32_t i = 0; i < job.settings.frames; ++i) {
+      moveLightsTo(i);
       frames.push_back(renderer.renderFrame(i + 1 == job.settings.frames));
+    }
   }
   if (job.outPng) outputs.write(*job.outPng, [&](const auto& file) { writePng(file, renderer.ldrImage()); });
   if (job.outHdr) outputs.write(*job.outHdr, [&](const auto& file) { writeHdr(file, renderer.hdrImage()); });

@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "bench/bench.h"
 #include "scene/errors.h"
+#include "scene/light_animation.h"
 #include "shared/limits.h"
 
 namespace {
@@ -59,6 +60,11 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "frames to render (timings are medians over them); with --particles: fixed 1/60 s "
                  "simulation steps, only the last frame is drawn")
       ->check(CLI::Range(1u, 100000u));
+  cmd.add_option("--time", job.scene.time,
+                 "seconds: the --lights lights orbit and bob (seeded), drawn where they are at this time")
+      ->check(finiteIn(0.0, lll::kMaxAnimationSeconds));
+  cmd.add_flag("--animate", s.animateLights,
+               "the --lights lights move 1/60 s each frame, from --time (0 unless given)");
   cmd.add_option("--exposure", s.exposure, "exposure multiplier before tonemapping")
       ->check(finiteIn(1e-6, 1e6));
   cmd.add_option("--ambient", s.ambient, "constant ambient radiance")->check(finiteIn(0.0, 1e3));
@@ -292,6 +298,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   job.settings.seed = job.scene.seed;
+  job.scene.movingLights = render->count("--time") > 0 || job.settings.animateLights;
   if (app.get_subcommands().empty()) {
     fmt::print(stderr, "lll: error: a command is required\n{}", app.help());
     return 2;

@@ -49,6 +49,10 @@ class GpuScene {
   VkDescriptorSetLayout materialSetLayout() const { return materialSetLayout_; }
   const Buffer& materialBuffer() const { return materials_; }
   const Buffer& lightBuffer() const { return lights_; }
+  // Writes the light array: at load, and again between frames when lights moved (the same lights,
+  // same types: passes specialize on which light types the scene has, lightTypeConstants in
+  // render/frame.h). Shadow views set in it by LocalShadows are cleared (Renderer::updateLights).
+  void uploadLights(const std::vector<Light>& lights);
   uint32_t lightCount() const { return lightCount_; }
   // Whether local lights cast shadows this run (--shadows all): set by the renderer before any pass
   // specializes its light evaluation on it (lightTypeConstants, render/frame.h).
@@ -101,9 +105,6 @@ class GpuScene {
   void uploadGeometry();
   void uploadInstances();
   void uploadMaterials();
-  // The scene's lights, once: passes specialize on which light types the scene has
-  // (lightTypeConstants, render/frame.h).
-  void uploadLights(const std::vector<Light>& lights);
   void uploadTextures();
   void createMaterialSets();
   void createTextureTable();

@@ -233,6 +233,11 @@ FrameResult Renderer::renderFrame(bool capture) {
   return result;
 }
 
+void Renderer::updateLights() {
+  gpuScene_->uploadLights(scene_.lights);
+  lightShadows_->lightsRewritten();
+}
+
 void Renderer::advanceParticles(uint32_t steps) {
   if (!particles_) return;
   for (uint32_t done = 0; done < steps; done += kParticleStepsPerSubmission) {

@@ -62,6 +62,9 @@ class Renderer {
   // Renders one frame; with `capture` the HDR and display images are read back afterwards. With
   // particles, each frame advances the simulation one fixed step (1 / kParticleStepsPerSecond).
   FrameResult renderFrame(bool capture);
+  // The scene's lights moved (their positions changed between frames, scene/light_animation.h):
+  // writes the light array again; every technique rebuilds its light data each frame anyway.
+  void updateLights();
   // Advances the particle simulation `steps` fixed steps without drawing (no-op without particles):
   // `lll render --frames N` simulates N - 1 steps this way, then draws the N-th frame.
   void advanceParticles(uint32_t steps);

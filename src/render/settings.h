@@ -13,6 +13,8 @@ struct RenderSettings {
   std::string technique = "forward";
   std::string camera;  // a camera name, "eye,target" as six numbers, or empty for the scene's first
   uint32_t frames = 1;
+  // --animate: the moving lights advance kAnimationFrameSeconds each frame (scene/light_animation.h).
+  bool animateLights = false;
   float exposure = 1.0f;
   float ambient = 0.02f;  // constant ambient radiance, so unlit corners are not pitch black
   // Light Linked List options (technique "lll").

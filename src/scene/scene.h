@@ -106,6 +106,27 @@ struct DirectionalLight {
   float illuminance = 1.0f;
 };
 
+// Moving lights (scene/light_animation.h). One light's motion, seconds t:
+// position(t) = center + (r cos(w t + a), h sin(2 pi f t + b), r sin(w t + a)), computed as
+// origin + (offset(t) - offset(0)) so that position(0) is exactly `origin`.
+struct LightMotion {
+  glm::vec3 origin{0.0f};     // where the light is at time 0
+  glm::vec3 center{0.0f};     // of its orbit
+  float radius = 0.0f;        // of the orbit, metres
+  float angularSpeed = 0.0f;  // radians per second, either sign
+  float phase = 0.0f;         // radians
+  float bobAmplitude = 0.0f;  // metres
+  float bobFrequency = 0.0f;  // hertz
+  float bobPhase = 0.0f;      // radians
+};
+
+// Lights first .. first + motions.size() - 1 of a scene move.
+struct LightAnimation {
+  uint32_t first = 0;
+  std::vector<LightMotion> motions;
+  bool empty() const { return motions.empty(); }
+};
+
 struct Camera {
   std::string name;
   glm::vec3 eye{0.0f};
@@ -142,6 +163,7 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Texture> textures;
   std::vector<Light> lights;
+  LightAnimation lightAnimation;  // which lights move, and how (--time, --animate); empty: none
   std::vector<DirectionalLight> directionalLights;  // at most gpu::kMaxDirectionalLights
   std::vector<Camera> cameras;                      // the first one is the default
   // Where a particle emitter sits, when the scene has one (the default scene's smoke source).

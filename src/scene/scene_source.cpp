@@ -9,6 +9,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/errors.h"
 #include "scene/gltf_loader.h"
+#include "scene/light_animation.h"
 #include "scene/lights.h"
 #include "shared/limits.h"
 
@@ -153,6 +154,14 @@ Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings,
       scene.lights[i].range *= request.lightRangeScale;
       scene.lights[i].intensity *= intensityScale;
     }
+    if (request.movingLights)
+      scene.lightAnimation =
+          makeLightAnimation(scene.lights, uint32_t(first), request.extraLights, bounds, request.seed);
+  }
+  if (request.movingLights) {
+    placeLightsAt(scene.lights, scene.lightAnimation, request.time);  // checks the time
+    if (scene.lightAnimation.empty() && warnings)
+      warnings->push_back("--time/--animate move the --lights lights, and there are none: nothing moves");
   }
   addSuns(scene, request.suns);
   if (request.gi.mode != "none") addIndirectLight(scene, request, warnings, gi);

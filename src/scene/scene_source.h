@@ -33,6 +33,10 @@ struct SceneRequest {
   // Also multiply their intensities by lightRangeScale^2, so a light's radiance at a given fraction
   // of its range is unchanged (the density study: more, smaller lights, the same exposure).
   bool scaleIntensityWithRange = false;
+  // --time T / --animate: the --lights lights move (scene/light_animation.h), placed where they
+  // are at `time` seconds.
+  bool movingLights = false;
+  float time = 0.0f;
   GiRequest gi;
   // --sun "x,y,z,lux[,r,g,b]": directional lights added to the scene's own; x,y,z point towards the
   // sun (the light travels the other way), lux its illuminance, r,g,b its linear colour (white).

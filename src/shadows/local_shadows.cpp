@@ -243,6 +243,10 @@ void LocalShadows::record(FrameContext& frame) {
   atlas_.record(frame);
 }
 
+void LocalShadows::lightsRewritten() {
+  for (const auto& [light, slot] : slots_) changes_.push_back({light, recordValue(slot)});
+}
+
 void LocalShadows::bind(DescriptorWriter& writer) const {
   writer.storage(28, viewBuffer_.handle());
   atlas_.bind(writer, 29);

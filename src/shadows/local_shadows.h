@@ -99,6 +99,9 @@ class LocalShadows {
   void record(FrameContext& frame);
   // Bindings 28 (the views) and 29 (the atlas) of a pass that evaluates lights.
   void bind(DescriptorWriter& writer) const;
+  // The light array was written again (moved lights): the casting lights' views go back into it
+  // with the next frame.
+  void lightsRewritten();
 
   // The lights casting this frame, by light index, in no particular order.
   std::vector<uint32_t> shadowed() const;

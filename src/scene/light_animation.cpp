@@ -1,0 +1,76 @@
+#include "scene/light_animation.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "scene/errors.h"
+
+namespace lll {
+
+namespace {
+
+constexpr float kTwoPi = 6.28318530718f;
+
+// A value in [0, 1) from (seed, light, stream): a stateless integer hash (the lowbias32
+// finaliser), so that a light's motion does not depend on how many lights came before it.
+float hash01(uint32_t seed, uint32_t light, uint32_t stream) {
+  uint32_t h = seed * 0x9e3779b9u ^ light * 0x85ebca6bu ^ stream * 0xc2b2ae35u;
+  h ^= h >> 16;
+  h *= 0x7feb352du;
+  h ^= h >> 15;
+  h *= 0x846ca68bu;
+  h ^= h >> 16;
+  return float(h >> 8) * (1.0f / 16777216.0f);
+}
+
+// Where the light is against its orbit's centre. The angles are reduced in double: w t reaches
+// 86,400 rad at the largest time, where a float angle would keep only about 8 ms of the period.
+glm::vec3 offsetAt(const LightMotion& m, float seconds) {
+  const double t = seconds;
+  const float orbit = float(std::fmod(double(m.angularSpeed) * t + m.phase, double(kTwoPi)));
+  const float bob = float(std::fmod(double(kTwoPi) * m.bobFrequency * t + m.bobPhase, double(kTwoPi)));
+  return {m.radius * std::cos(orbit), m.bobAmplitude * std::sin(bob), m.radius * std::sin(orbit)};
+}
+
+}  // namespace
+
+LightAnimation makeLightAnimation(const std::vector<Light>& lights, uint32_t first, uint32_t count,
+                                  const Bounds& bounds, uint32_t seed) {
+  LightAnimation animation;
+  animation.first = first;
+  animation.motions.reserve(count);
+  const float diagonal = glm::length(bounds.extent());
+  for (uint32_t i = 0; i < count; ++i) {
+    auto uniform = [&](uint32_t stream, float lo, float hi) {
+      return lo + (hi - lo) * hash01(seed, i, stream);
+    };
+    LightMotion m;
+    m.radius = diagonal * uniform(0, 0.01f, 0.04f);
+    m.angularSpeed = uniform(1, 0.25f, 1.0f) * (hash01(seed, i, 2) < 0.5f ? -1.0f : 1.0f);
+    m.phase = uniform(3, 0.0f, kTwoPi);
+    m.bobAmplitude = diagonal * uniform(4, 0.005f, 0.02f);
+    m.bobFrequency = uniform(5, 0.1f, 0.4f);
+    m.bobPhase = uniform(6, 0.0f, kTwoPi);
+    m.origin = lights[first + i].position;
+    m.center = m.origin - offsetAt(m, 0.0f);
+    animation.motions.push_back(m);
+  }
+  return animation;
+}
+
+glm::vec3 positionAt(const LightMotion& m, float seconds) {
+  return m.origin + (offsetAt(m, seconds) - offsetAt(m, 0.0f));
+}
+
+void placeLightsAt(std::vector<Light>& lights, const LightAnimation& animation, float seconds) {
+  if (!std::isfinite(seconds) || seconds < 0.0f || seconds > kMaxAnimationSeconds)
+    throw InputError(fmt::format("--time {}: expected seconds from 0 to {}", seconds, kMaxAnimationSeconds));
+  if (uint64_t(animation.first) + animation.motions.size() > lights.size())
+    throw InputError(fmt::format("light animation: {} moving lights from light {}, but the scene has {}",
+                                 animation.motions.size(), animation.first, lights.size()));
+  for (size_t i = 0; i < animation.motions.size(); ++i)
+    lights[animation.first + i].position = positionAt(animation.motions[i], seconds);
+}
+
+}  // namespace lll
