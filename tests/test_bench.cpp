@@ -148,6 +148,31 @@ TEST(BenchSuites, SlicesIsLllWithAndWithoutDepthSlicesOnBothLightSets) {
   EXPECT_TRUE(labels.count("lll/compute/slices32/tile16")) << fmt::format("{}", fmt::join(labels, ", "));
 }
 
+// Moving lights: every technique with the dense lights moving (the light-volume ones and forward
+// only where they finish, as in the density suite), and lll standing still as the control.
+TEST(BenchSuites, MovingIsEveryTechniqueWithMovingLightsAndLllStill) {
+  const auto full = buildSuite("moving", SuiteOptions{});
+  size_t still = 0;
+  for (const Scenario& s : full) {
+    EXPECT_TRUE(s.scene.scaleIntensityWithRange) << s.name;
+    EXPECT_TRUE(s.scene.extraLights == 4096u || s.scene.extraLights == 131072u) << s.name;
+    if (!s.settings.animateLights) {
+      ++still;
+      EXPECT_FALSE(s.scene.movingLights);
+      EXPECT_EQ(s.settings.technique, "lll");
+      EXPECT_EQ(seriesLabel(s), "lll/compute/static");
+      continue;
+    }
+    EXPECT_TRUE(s.scene.movingLights) << s.name;
+    EXPECT_EQ(s.skip.empty(), s.scene.extraLights <= kDensityVolumeLimit ||
+                                  (s.settings.technique != "forward" && s.settings.technique != "deferred" &&
+                                   s.settings.technique != "prepass"))
+        << seriesLabel(s) << " " << s.name;
+  }
+  EXPECT_EQ(still, 2u);
+  EXPECT_EQ(full.size(), 2u * (techniques().size() + 1u));
+}
+
 TEST(BenchSuites, DensityScalesIntensityWithTheSquareOfTheRange) {
   SceneRequest plain{"atrium", 16, 1};
   SceneRequest scaled = plain;

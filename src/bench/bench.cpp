@@ -21,6 +21,7 @@
 #include "render/image_compare.h"
 #include "render/renderer.h"
 #include "scene/errors.h"
+#include "scene/light_animation.h"
 
 namespace lll::bench {
 
@@ -141,12 +142,23 @@ struct Measured {
 };
 
 Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCounts counts) {
-  const Scene& scene = caches.scenes.get(s.scene);
+  const Scene& cached = caches.scenes.get(s.scene);
+  // Moving lights move in a copy: the cache's scene is shared by the scenarios.
+  std::optional<Scene> moving;
+  if (s.settings.animateLights) moving.emplace(cached);
+  const Scene& scene = moving ? *moving : cached;
   Measured m;
   ScenarioResult& r = m.result;
   r.scenario = s;
   r.lightCount = scene.lights.size();
   Renderer renderer(context, scene, s.settings);
+  // Frame i shows the lights at i / 60 s; the untimed frame compared with forward's at 0 s. The
+  // light array's upload happens between frames, outside every timed pass.
+  auto moveLightsTo = [&](float seconds) {
+    if (!moving || moving->lightAnimation.empty()) return;
+    placeLightsAt(moving->lights, moving->lightAnimation, seconds);
+    renderer.updateLights();
+  };
   // Particles start with none alive: time the plume at its steady state.
   if (renderer.particles()) renderer.advanceParticles(stepsToSteadyState(renderer.particles()->preset()));
   std::optional<AluProbe> probe;
@@ -156,6 +168,7 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
   uint32_t warmup = counts.warmup;
   for (uint32_t i = 0; i < warmup + counts.timed; ++i) {
     stopIfRequested();
+    if (i > 0) moveLightsTo(float(i) * kAnimationFrameSeconds);
     FrameResult frame = renderer.renderFrame(false);
     if (i == 0) requireParticlePass(s, frame);
     if (probe) frame.passes.push_back(probe->run(uint32_t(scene.lights.size())));
@@ -175,6 +188,7 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
                                                      {"gi-merge-ms", g.mergeMs},
                                                      {"gi-cell-m", g.cellSize}});
   }
+  moveLightsTo(0.0f);
   renderer.renderFrame(true);  // untimed: the image every technique's is compared on
   m.image = renderer.ldrImage();
   if (s.compareWithReference)

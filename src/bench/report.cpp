@@ -52,6 +52,7 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"surfaces", s.settings.surfaces},
       {"raster", s.settings.raster},
       {"tile", s.settings.tileSize},
+      {"moving_lights", s.settings.animateLights},
       {"particles", s.settings.particles},
       {"particle_count", s.settings.particleCount},
       {"particle_lighting", s.settings.particles.empty() ? "" : s.settings.particleLighting},
@@ -207,6 +208,8 @@ BenchReport readResultsJson(const std::filesystem::path& path) {
       s.settings.surfaces = r.at("surfaces").get<std::string>();
       s.settings.raster = r.at("raster").get<std::string>();
       s.settings.tileSize = r.at("tile").get<uint32_t>();
+      s.settings.animateLights = r.value("moving_lights", false);
+      s.scene.movingLights = s.settings.animateLights;
       if (const std::string series = r.value("series", ""); series != techniqueLabel(s.settings))
         s.series = series;
       result.lightCount = r.at("lights").get<uint64_t>();

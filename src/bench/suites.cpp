@@ -204,6 +204,34 @@ std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
   return out;
 }
 
+// Moving lights: the density suite's small lights at 4,096 and 131,072 orbiting and bobbing
+// (--animate), 1/60 s a frame, for every technique that finishes in reasonable time, and lll with
+// the same lights standing still ("lll/compute/static"): every technique rebuilds its light data
+// each frame, so moving lights should cost the same GPU time.
+std::vector<Scenario> movingSuite(const SuiteOptions& options) {
+  const std::vector<uint32_t> counts =
+      options.quick ? std::vector<uint32_t>{64} : std::vector<uint32_t>{4096, 131072};
+  const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
+  std::vector<Scenario> out;
+  for (const uint32_t lights : counts) {
+    SceneRequest scene{kDefaultSceneName, lights, 1};
+    scene.lightRangeScale = float(std::cbrt(1024.0 / double(lights)));
+    scene.scaleIntensityWithRange = true;
+    Scenario still = makeScenario("moving", fmt::format("{} lights", lights), scene, size);
+    scene.movingLights = true;
+    Scenario base = makeScenario("moving", fmt::format("{} lights", lights), scene, size);
+    base.settings.animateLights = true;
+    for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
+      skipWhereTooSlow(s, lights, options);
+      out.push_back(s);
+    }
+    still.settings.technique = "lll";
+    still.series = techniqueLabel(still.settings) + "/static";
+    out.push_back(still);
+  }
+  return out;
+}
+
 // What the tile size costs and saves: time and light-list memory of the LLL, tile 1 to 16.
 std::vector<Scenario> tilesSuite(const SuiteOptions& options) {
   const uint32_t lights = options.quick ? 64 : 1024;
@@ -468,8 +496,9 @@ std::string techniqueLabel(const RenderSettings& settings) {
 }
 
 const std::vector<std::string>& suiteNames() {
-  static const std::vector<std::string> names = {"threel",   "scaling", "density", "slices",   "tiles",
-                                                 "overdraw", "smoke",   "gi",      "gi-error", "shadows"};
+  static const std::vector<std::string> names = {"threel", "scaling",  "density",  "slices",
+                                                 "moving", "tiles",    "overdraw", "smoke",
+                                                 "gi",     "gi-error", "shadows"};
   return names;
 }
 
@@ -478,6 +507,7 @@ std::vector<Scenario> buildSuite(const std::string& suite, const SuiteOptions& o
   if (suite == "scaling") return scalingSuite(options);
   if (suite == "density") return densitySuite(options);
   if (suite == "slices") return slicesSuite(options);
+  if (suite == "moving") return movingSuite(options);
   if (suite == "tiles") return tilesSuite(options);
   if (suite == "overdraw") return overdrawSuite(options);
   if (suite == "smoke") return smokeSuite(options);
