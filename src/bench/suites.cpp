@@ -132,6 +132,15 @@ void skipWhereTooSlow(Scenario& s, uint32_t lights, const SuiteOptions& options)
                          kForwardLightLimitOnCpu);
 }
 
+// N random lights in the default scene at the density suite's constant density: ranges scaled by
+// (1024 / N)^(1/3), intensities by its square.
+SceneRequest denseLights(uint32_t lights) {
+  SceneRequest scene{kDefaultSceneName, lights, 1};
+  scene.lightRangeScale = float(std::cbrt(1024.0 / double(lights)));
+  scene.scaleIntensityWithRange = true;
+  return scene;
+}
+
 // The million-light question (issue 13): N random lights at constant density, their ranges scaled
 // by (1024 / N)^(1/3) and intensities by its square, so each pixel meets about as many lights, as
 // bright, at every N. Every technique runs where it finishes in reasonable time: brute force and the
@@ -143,10 +152,8 @@ std::vector<Scenario> densitySuite(const SuiteOptions& options) {
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   std::vector<Scenario> out;
   for (const uint32_t lights : counts) {
-    SceneRequest scene{kDefaultSceneName, lights, 1};
-    scene.lightRangeScale = float(std::cbrt(1024.0 / double(lights)));
-    scene.scaleIntensityWithRange = true;
-    const Scenario base = makeScenario("density", fmt::format("{} lights", lights), scene, size);
+    const Scenario base =
+        makeScenario("density", fmt::format("{} lights", lights), denseLights(lights), size);
     for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
       skipWhereTooSlow(s, lights, options);
       out.push_back(s);
@@ -169,11 +176,7 @@ std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
                                          : dense       ? std::vector<uint32_t>{4096, 131072, 1048576}
                                                        : std::vector<uint32_t>{1024, 16384, 65536};
     for (const uint32_t lights : counts) {
-      SceneRequest scene{kDefaultSceneName, lights, 1};
-      if (dense) {
-        scene.lightRangeScale = float(std::cbrt(1024.0 / double(lights)));
-        scene.scaleIntensityWithRange = true;
-      }
+      const SceneRequest scene = dense ? denseLights(lights) : SceneRequest{kDefaultSceneName, lights, 1};
       const std::string name = fmt::format("{} {} lights", dense ? "density" : "scaling", lights);
       for (const uint32_t n : slices) {
         Scenario s = makeScenario("slices", name, scene, size);
@@ -214,9 +217,7 @@ std::vector<Scenario> movingSuite(const SuiteOptions& options) {
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   std::vector<Scenario> out;
   for (const uint32_t lights : counts) {
-    SceneRequest scene{kDefaultSceneName, lights, 1};
-    scene.lightRangeScale = float(std::cbrt(1024.0 / double(lights)));
-    scene.scaleIntensityWithRange = true;
+    SceneRequest scene = denseLights(lights);
     Scenario still = makeScenario("moving", fmt::format("{} lights", lights), scene, size);
     scene.movingLights = true;
     Scenario base = makeScenario("moving", fmt::format("{} lights", lights), scene, size);
