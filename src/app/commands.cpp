@@ -113,9 +113,8 @@ int runRender(const RenderJob& job) {
   std::vector<FrameResult> frames;
   // --animate: frame i shows the moving lights at --time + i / 60 s.
   auto moveLightsTo = [&](uint32_t frame) {
-    if (!job.settings.animateLights || frame == 0 || scene.lightAnimation.empty()) return;
-    placeLightsAt(scene.lights, scene.lightAnimation, job.scene.time + float(frame) * kAnimationFrameSeconds);
-    renderer.updateLights();
+    if (job.settings.animateLights && frame > 0)
+      renderer.moveLightsTo(scene, job.scene.time + float(frame) * kAnimationFrameSeconds);
   };
   if (renderer.particles()) {
     // --frames N: N fixed simulation steps, the last one in the drawn frame. Drawing the others

@@ -155,9 +155,7 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
   // Frame i shows the lights at i / 60 s; the untimed frame compared with forward's at 0 s. The
   // light array's upload happens between frames, outside every timed pass.
   auto moveLightsTo = [&](float seconds) {
-    if (!moving || moving->lightAnimation.empty()) return;
-    placeLightsAt(moving->lights, moving->lightAnimation, seconds);
-    renderer.updateLights();
+    if (moving) renderer.moveLightsTo(*moving, seconds);
   };
   // Particles start with none alive: time the plume at its steady state.
   if (renderer.particles()) renderer.advanceParticles(stepsToSteadyState(renderer.particles()->preset()));

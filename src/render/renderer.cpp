@@ -14,6 +14,7 @@
 #include "gpu/context.h"
 #include "particles/particle_setup.h"
 #include "scene/errors.h"
+#include "scene/light_animation.h"
 #include "scene/lights.h"
 
 namespace lll {
@@ -236,6 +237,12 @@ FrameResult Renderer::renderFrame(bool capture) {
 void Renderer::updateLights() {
   gpuScene_->uploadLights(scene_.lights);
   lightShadows_->lightsRewritten();
+}
+
+void Renderer::moveLightsTo(Scene& scene, float seconds) {
+  if (scene.lightAnimation.empty()) return;
+  placeLightsAt(scene.lights, scene.lightAnimation, seconds);
+  updateLights();
 }
 
 void Renderer::advanceParticles(uint32_t steps) {
