@@ -12,6 +12,7 @@
 #include "scene/errors.h"
 #include "scene/light_animation.h"
 #include "shared/limits.h"
+#include "view/viewer.h"
 
 namespace {
 
@@ -276,6 +277,18 @@ int main(int argc, char** argv) {
   render->add_option("--hdr", job.outHdr, "linear HDR image, .exr or .pfm");
   render->add_option("--stats", job.outStats,
                      "JSON with per-pass GPU times, device, driver, resolution, lights");
+  lll::RenderJob viewRender;
+  lll::view::ViewJob view;
+  CLI::App* viewCmd = app.add_subcommand(
+      "view", "an interactive window: fly through a scene, change any render option live, GPU timings");
+  addRenderOptions(*viewCmd, viewRender);
+  viewCmd->add_option("--screenshot", view.screenshot,
+                      "with --frames N: write the N-th frame's image (.png, or .exr radiance), then exit");
+  viewCmd->add_option("--script", view.script,
+                      "replay input from a file: \"FRAME key w down\", \"FRAME look DX DY\", resize, drop, set, "
+                      "preset-save, print-camera (see src/view/input_script.h)");
+  viewCmd->add_option("--resolution-scale", view.resolutionScale, "render resolution over window resolution")
+      ->check(finiteIn(0.1, 4.0));
   lll::ReferenceJob reference;
   CLI::App* referenceCmd = app.add_subcommand(
       "reference", "path-trace a reference image of direct and indirect light on the CPU (.exr/.pfm/.png)");
@@ -299,12 +312,23 @@ int main(int argc, char** argv) {
   }
   job.settings.seed = job.scene.seed;
   job.scene.movingLights = render->count("--time") > 0 || job.settings.animateLights;
+  viewRender.settings.seed = viewRender.scene.seed;
+  viewRender.scene.movingLights = viewCmd->count("--time") > 0 || viewRender.settings.animateLights;
+  view.scene = viewRender.scene;
+  view.settings = viewRender.settings;
+  view.device = viewRender.device;
+  view.frames = viewCmd->count("--frames") > 0 ? viewRender.settings.frames : 0;
+  if (view.screenshot && view.frames == 0) {
+    fmt::print(stderr, "lll: error: view --screenshot needs --frames N (the frame it writes)\n");
+    return 2;
+  }
   if (app.get_subcommands().empty()) {
     fmt::print(stderr, "lll: error: a command is required\n{}", app.help());
     return 2;
   }
   try {
     if (*render) return lll::runRender(job);
+    if (*viewCmd) return lll::view::runView(view);
     if (*referenceCmd) return lll::runReference(reference);
     if (*scenes) return lll::printScenes();
     if (*techniques) return lll::printTechniques();

@@ -32,6 +32,10 @@ const char* vkResultName(VkResult result) {
     LLL_RESULT(VK_ERROR_TOO_MANY_OBJECTS)
     LLL_RESULT(VK_ERROR_FORMAT_NOT_SUPPORTED)
     LLL_RESULT(VK_ERROR_OUT_OF_POOL_MEMORY)
+    LLL_RESULT(VK_SUBOPTIMAL_KHR)
+    LLL_RESULT(VK_ERROR_OUT_OF_DATE_KHR)
+    LLL_RESULT(VK_ERROR_SURFACE_LOST_KHR)
+    LLL_RESULT(VK_ERROR_NATIVE_WINDOW_IN_USE_KHR)
 #undef LLL_RESULT
     default:
       return "VK_ERROR_(unknown)";
@@ -145,8 +149,8 @@ struct ValidationFeatures {
   VkValidationFeaturesEXT info{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
 };
 
-VkInstance createBareInstance(bool validation, bool debugUtils,
-                              const ValidationFeatures* features = nullptr) {
+VkInstance createBareInstance(bool validation, bool debugUtils, const ValidationFeatures* features = nullptr,
+                              const std::vector<std::string>& wanted = {}) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "lll";
   app.apiVersion = VK_API_VERSION_1_3;
@@ -154,6 +158,12 @@ VkInstance createBareInstance(bool validation, bool debugUtils,
   std::vector<const char*> extensions;
   if (validation) layers.push_back(kValidationLayer);
   if (debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  for (const std::string& name : wanted) {
+    if (!hasInstanceExtension(nullptr, name.c_str()))
+      throw InputError(fmt::format("the Vulkan loader lacks the instance extension {}, which a window needs",
+                                   name));
+    extensions.push_back(name.c_str());
+  }
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   if (features != nullptr) {
     extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
@@ -194,9 +204,9 @@ std::vector<DeviceInfo> listDevices() {
 }
 
 Context::Context(const ContextOptions& options) {
-  createInstance(options.validation, options.gpuAssisted);
+  createInstance(options);
   pickPhysicalDevice(options.device);
-  createDevice();
+  createDevice(options.swapchain);
   if (!options.quiet)
     fmt::print(stderr, "lll: device {} ({}, {}, Vulkan {})\n", info_.name, info_.type, info_.driver,
                info_.apiVersion);
@@ -244,7 +254,8 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onValidationMessage(VkDebugUtilsMessageS
   return VK_FALSE;
 }
 
-void Context::createInstance(bool validation, bool gpuAssisted) {
+void Context::createInstance(const ContextOptions& options) {
+  const bool validation = options.validation;
   validation_ = validation;
   if (validation) {
     uint32_t count = 0;
@@ -260,7 +271,7 @@ void Context::createInstance(bool validation, bool gpuAssisted) {
           "(on Debian: apt-get install vulkan-validationlayers)");
   }
   if (!validation) {
-    instance_ = createBareInstance(false, false);
+    instance_ = createBareInstance(false, false, nullptr, options.instanceExtensions);
     return;
   }
   if (!hasInstanceExtension(kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME))
@@ -269,13 +280,13 @@ void Context::createInstance(bool validation, bool gpuAssisted) {
         ", which synchronization validation needs; update vulkan-validationlayers");
   ValidationFeatures features;
   features.enabled.push_back(VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT);
-  if (gpuAssisted) {
+  if (options.gpuAssisted) {
     features.enabled.push_back(VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_EXT);
     features.enabled.push_back(VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_RESERVE_BINDING_SLOT_EXT);
   }
   features.info.enabledValidationFeatureCount = uint32_t(features.enabled.size());
   features.info.pEnabledValidationFeatures = features.enabled.data();
-  instance_ = createBareInstance(true, true, &features);
+  instance_ = createBareInstance(true, true, &features, options.instanceExtensions);
   VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
   info.messageSeverity =
       VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
@@ -334,7 +345,7 @@ void Context::pickPhysicalDevice(const std::string& selector) {
   queueFamily_ = uint32_t(graphicsComputeQueue(physical_));
 }
 
-void Context::createDevice() {
+void Context::createDevice(bool swapchain) {
   uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
@@ -381,12 +392,18 @@ void Context::createDevice() {
   features.features.pipelineStatisticsQuery = supported.pipelineStatisticsQuery;
   pipelineStatistics_ = supported.pipelineStatisticsQuery == VK_TRUE;
 
-  const char* extensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  if (swapchain) {
+    if (!hasExtension(physical_, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+      throw InputError(fmt::format("device {} cannot present to a window (no {})", info_.name,
+                                   VK_KHR_SWAPCHAIN_EXTENSION_NAME));
+    extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  }
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
-  info.enabledExtensionCount = 1;
-  info.ppEnabledExtensionNames = extensions;
+  info.enabledExtensionCount = uint32_t(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   VK_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
   cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(

@@ -17,6 +17,10 @@ struct ContextOptions {
   bool gpuAssisted = false;     // with validation: GPU-assisted validation (out-of-bounds
                                 // descriptor and buffer accesses inside shaders) as well
   bool quiet = false;           // do not print the chosen device
+  // For a window (lll view): the instance extensions its surface needs (glfwGetRequiredInstanceExtensions)
+  // and VK_KHR_swapchain on the device. Off-screen rendering needs neither.
+  std::vector<std::string> instanceExtensions;
+  bool swapchain = false;
 };
 
 struct DeviceInfo {
@@ -75,9 +79,9 @@ class Context {
                                                             VkDebugUtilsMessageTypeFlagsEXT types,
                                                             const VkDebugUtilsMessengerCallbackDataEXT* data,
                                                             void* user);
-  void createInstance(bool validation, bool gpuAssisted);
+  void createInstance(const ContextOptions& options);
   void pickPhysicalDevice(const std::string& selector);
-  void createDevice();
+  void createDevice(bool swapchain);
 
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;

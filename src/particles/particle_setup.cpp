@@ -22,7 +22,9 @@ glm::vec3 parseEmitterPosition(const std::string& text) {
 std::optional<ParticleSystemOptions> particleOptions(const Scene& scene, const RenderSettings& settings) {
   if (settings.particles.empty()) return std::nullopt;
   ParticleSystemOptions options;
-  options.preset = loadParticlePreset(settings.particles);
+  options.preset = settings.particlePresetJson.empty()
+                       ? loadParticlePreset(settings.particles)
+                       : parseParticlePreset(settings.particlePresetJson, settings.particles);
   options.lighting = parseParticleLighting(settings.particleLighting);
   options.render = parseParticleRender(settings.particleRender);
   options.resolutionScale = parseParticleResolution(settings.particleResolution);

@@ -242,6 +242,39 @@ ParticlePreset loadParticlePreset(const std::string& nameOrPath) {
   return parseParticlePreset(readTextFile(path), path.string());
 }
 
+std::string particlePresetJson(const ParticlePreset& p, const std::string& description) {
+  const auto vec3 = [](const glm::vec3& v) { return json::array({v.x, v.y, v.z}); };
+  json colors = json::array();
+  for (const glm::vec3& c : p.color) colors.push_back(vec3(c));
+  const char* shapes[] = {"point", "disc", "sphere"};
+  const char* floors[] = {"none", "bounce", "kill"};
+  // Members in the order the built-in presets list them (nlohmann's ordered_json keeps it).
+  nlohmann::ordered_json doc;
+  doc["description"] = description;
+  doc["count"] = p.count;
+  doc["lifetime"] = {p.lifetimeMin, p.lifetimeMax};
+  doc["emitter"] = {{"shape", shapes[int(p.shape)]}, {"radius", p.emitterRadius}, {"offset", vec3(p.emitterOffset)}};
+  doc["velocity"] = {
+      {"direction", vec3(p.direction)}, {"spread", p.spreadDegrees}, {"speed", {p.speedMin, p.speedMax}}};
+  doc["gravity"] = vec3(p.gravity);
+  doc["buoyancy"] = p.buoyancy;
+  doc["drag"] = p.drag;
+  doc["turbulence"] = {
+      {"strength", p.turbulenceStrength}, {"size", p.turbulenceSize}, {"speed", p.turbulenceSpeed}};
+  doc["spin"] = p.spin;
+  doc["floor"] = {{"mode", floors[int(p.floor)]}, {"restitution", p.restitution}};
+  doc["size"] = p.size;
+  doc["sizeVariation"] = p.sizeVariation;
+  doc["color"] = colors;
+  doc["colorVariation"] = p.colorVariation;
+  doc["opacity"] = p.opacity;
+  doc["emission"] = p.emission;
+  doc["scattering"] = {{"wrap", p.wrap}, {"back", p.back}, {"focus", p.focus}};
+  doc["softness"] = p.softness;
+  doc["additive"] = p.additive;
+  return doc.dump(2) + "\n";
+}
+
 uint32_t stepsToSteadyState(const ParticlePreset& preset) {
   return uint32_t(std::ceil(double(preset.lifetimeMax) * gpu::kParticleStepsPerSecond)) + 1;
 }

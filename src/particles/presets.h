@@ -54,6 +54,10 @@ ParticlePreset loadParticlePreset(const std::string& nameOrPath);
 // Parses and checks preset JSON text; `source` names it in messages.
 ParticlePreset parseParticlePreset(const std::string& text, const std::string& source);
 
+// The preset as JSON text that parseParticlePreset reads back to the same preset (the viewer's
+// preset editor saves with it; `description` goes into the file's description field).
+std::string particlePresetJson(const ParticlePreset& preset, const std::string& description);
+
 // Steps (1 / kParticleStepsPerSecond each) after which the emitter has filled its slots (every slot has
 // been spawned once and the oldest particles have started dying): the plume's steady state.
 uint32_t stepsToSteadyState(const ParticlePreset& preset);

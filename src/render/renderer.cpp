@@ -218,6 +218,7 @@ void Renderer::updateUniforms() {
 
 FrameResult Renderer::renderFrame(bool capture) {
   FrameResult result;
+  lastCaptured_ = capture;
   updateUniforms();
   // A frame recorded again (the technique asked for it) must not advance the particles twice.
   for (bool advance = true;; advance = false) {

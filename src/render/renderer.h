@@ -75,6 +75,22 @@ class Renderer {
   LdrImage ldrImage() const;
 
   const Camera& camera() const { return camera_; }
+  // Draws the next frames from `camera` (an interactive camera); the far plane still comes from
+  // the scene's bounds. Throws InputError when the projection would not be finite.
+  void setCamera(const Camera& camera) { camera_ = camera; }
+  const RenderSettings& settings() const { return settings_; }
+  // Exposure and ambient for the next frames: the only settings that need no new renderer.
+  void setExposure(float exposure, float ambient) {
+    settings_.exposure = exposure;
+    settings_.ambient = ambient;
+  }
+  // The display image (kLdrFormat, sRGB-encoded) of the last frame, for a window to copy to its
+  // swapchain: after renderFrame() it is in displayLayout(), last written by a compute shader
+  // (GENERAL) or, after a captured frame, last read by a copy (TRANSFER_SRC_OPTIMAL).
+  const Image& displayImage() const { return targets_.ldr; }
+  VkImageLayout displayLayout() const {
+    return lastCaptured_ ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_GENERAL;
+  }
   const gpu::FrameUniforms& uniforms() const { return uniforms_; }
   Technique& technique() { return *technique_; }
   GpuScene& gpuScene() { return *gpuScene_; }
@@ -120,6 +136,7 @@ class Renderer {
   std::string surfacesFallback_;                  // why --surfaces visibility fell back to gbuffer, if it did
   std::unique_ptr<Technique> technique_;
   std::unique_ptr<LitPasses> lit_;  // the shared passes, with the technique's lighting interface
+  bool lastCaptured_ = false;       // the last frame was read back (displayLayout())
 };
 
 }  // namespace lll

@@ -44,6 +44,9 @@ struct RenderSettings {
   std::string antiAliasing = "none";            // none | edge
   // Particles: a preset name or JSON path; empty for none.
   std::string particles;
+  // Non-empty: the preset's JSON text itself, read instead of loading `particles` (which then only
+  // names it in messages): the viewer's preset editor hands its edits over this way.
+  std::string particlePresetJson;
   std::string particleLighting = "pixel";   // pixel | atlas | vertex
   std::string particleRender = "auto";      // auto | raster | compute
   std::string particleResolution = "full";  // full | half | quarter
@@ -64,6 +67,7 @@ struct RenderSettings {
   // Who draws the shadow casters: hardware | compute (shadows/shadow_raster.h) | auto (compute on a
   // GPU where it fits, hardware on a CPU device).
   std::string shadowRaster = "auto";
+  bool operator==(const RenderSettings&) const = default;
 };
 
 // Lists per tile of lll's light lists (--lll-slices; 0 means 1).

@@ -50,13 +50,21 @@ Camera resolveCamera(const Scene& scene, const std::string& spec) {
   if (spec == "overview" && scene.cameras.empty()) return overviewCamera(scene.worldBounds());
   if (spec.find(',') != std::string::npos) {
     const std::vector<float> n = parseNumbers(spec);
-    if (n.size() != 6)
-      throw InputError(
-          fmt::format("--camera {}: expected six numbers \"ex,ey,ez,tx,ty,tz\" (eye, target)", spec));
+    if (n.size() != 6 && n.size() != 7)
+      throw InputError(fmt::format(
+          "--camera {}: expected six numbers \"ex,ey,ez,tx,ty,tz\" (eye, target), or seven with the vertical "
+          "field of view in degrees last",
+          spec));
     Camera camera;
     camera.name = "custom";
     camera.eye = {n[0], n[1], n[2]};
     camera.target = {n[3], n[4], n[5]};
+    if (n.size() == 7) {
+      if (!(n[6] > 0.0f && n[6] < 180.0f))
+        throw InputError(
+            fmt::format("--camera {}: the field of view {} is not between 0 and 180 degrees", spec, n[6]));
+      camera.yfov = glm::radians(n[6]);
+    }
     if (glm::length(camera.target - camera.eye) < 1e-6f)
       throw InputError(fmt::format("--camera {}: eye and target are the same point", spec));
     return camera;
