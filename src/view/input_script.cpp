@@ -87,6 +87,8 @@ std::vector<ScriptEvent> parseInputScript(const std::string& text, const std::st
     if (!firsts.empty() && std::find(firsts.begin(), firsts.end(), e.args[0]) == firsts.end())
       throw InputError(fmt::format("{}: {} '{}': expected one of {}", e.where, e.verb, e.args[0],
                                    fmt::join(firsts, ", ")));
+    if (e.verb == "key" && e.args[1] != "down" && e.args[1] != "up")
+      throw InputError(fmt::format("{}: key {} '{}': expected down or up", e.where, e.args[0], e.args[1]));
     if (e.verb == "look" || e.verb == "wheel" || e.verb == "resize")
       for (size_t i = 0; i < e.args.size(); ++i) scriptNumber(e, i);
     if (e.verb == "resize" && (scriptNumber(e, 0) < 1 || scriptNumber(e, 1) < 1 || scriptNumber(e, 0) > 8192 ||
