@@ -7,10 +7,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "gpu/context.h"
-#include "gpu/resources.h"
-#include "gpu/vk_check.h"
-#include "scene/errors.h"
+#include "lll.h"  // the viewer uses the library's public API only
 
 namespace lll::view {
 
