@@ -23,6 +23,8 @@ sweeps+='|BenchQuick\.|HostileCli\.InterruptedBench'
 # The same for the command line's 31-frame moving-light render (45 s under the sanitizers); the
 # moved-lights path itself is sanitized by LightAnimation.LightsMovedBetweenFramesDrawWhatTheirTimeDraws.
 sweeps+='|LightAnimationCli\.'
+# Installing the package and building the example against it tests the packaging, not memory: once.
+sweeps+='|InstalledPackage\.'
 # The soak runs every technique case in the release build; under the sanitizers one case (lll, 95 s
 # there where the release build takes 12) checks AddressSanitizer's own heap count.
 soakReleaseOnly='Soak\.MemoryStaysFlatOverFrames/(forward|deferred|prepass|lll_ray_fragment_vertexlit)( |$)'
@@ -46,7 +48,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # The soak's 120 frames per technique ran in the release build; here its shortest run (70 frames)
 # checks AddressSanitizer's own heap count.
 export LLL_SOAK_FRAMES=70
-# Every test but the sweeps and four soak cases (386 of 802): every technique is drawn under the
+# Every test but the sweeps and four soak cases (398 of 815): every technique is drawn under the
 # sanitizers.
 (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs" --timeout 900 -E "$sweeps|$soakReleaseOnly")
 unset ASAN_OPTIONS UBSAN_OPTIONS LLL_SOAK_FRAMES
