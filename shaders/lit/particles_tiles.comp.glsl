@@ -22,6 +22,11 @@
 layout(local_size_x = kParticleTileSize, local_size_y = kParticleTileSize) in;
 layout(constant_id = 0) const uint kLightSource = 1u;
 layout(set = 0, binding = 16) uniform sampler2D sceneDepth;
+// The composite before the glass (Renderer::recordFrame) blends only the particles behind the
+// nearest glass at the pixel (glassDepth: the opaque depth with the glass drawn into it); the one
+// after the glass gets glassDepth as its sceneDepth.
+layout(constant_id = 50) const bool kBehindGlass = false;
+layout(set = 0, binding = 25) uniform sampler2D glassDepth;
 // The view depth each particle pixel was blended against (the nearest of its block of frame pixels),
 // for particles-resolve below full resolution.
 layout(set = 0, binding = 24, r32f) uniform writeonly image2D particleLayerDepth;
@@ -94,8 +99,8 @@ void sortKeys(bool inShared, uint first, uint count) {
 
 // Blends cell `cell`'s particles into the pixel, nearest first (barriers: call it uniformly).
 // `pixel` is in particle pixels, `framePixel` the frame pixel at its centre (for the lights).
-void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, uint visible,
-               inout vec3 colour, inout float transmittance, inout bool finished) {
+void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, float glassViewDepth,
+               uint visible, inout vec3 colour, inout float transmittance, inout bool finished) {
   uvec2 range = particleTileRange(cell);
   uint count = range.y;
   if (count == 0u) return;
@@ -125,6 +130,7 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, u
       // The shape first: most of a tile's particles miss most of its pixels.
       ParticleShape shape = stagedShape[j];
       if (shape.centre.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
+      if (kBehindGlass && shape.centre.z < glassViewDepth) continue;  // blended after the glass
       vec2 offset = (pixelCentre - shape.centre.xy) * shape.axes.xy;
       float r2 = dot(offset, offset);
       if (r2 >= 1.0) continue;
@@ -158,15 +164,15 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, u
 // The view depth a particle pixel blends against: the frame's, or below full resolution the
 // nearest in its block (no particle shows over geometry nearer than it; the upsample sorts out the
 // pixels behind).
-float particlePixelDepth(ivec2 pixel) {
+float particlePixelDepth(sampler2D depthImage, ivec2 pixel) {
   int scale = int(tileHeader.scale);
-  if (scale == 1) return linearizeDepth(texelFetch(sceneDepth, pixel, 0).r);
+  if (scale == 1) return linearizeDepth(texelFetch(depthImage, pixel, 0).r);
   ivec2 last = ivec2(frame.viewport.xy) - 1;
   float nearest = 3.4e38;
   for (int y = 0; y < scale; ++y)
     for (int x = 0; x < scale; ++x) {
       ivec2 p = min(pixel * scale + ivec2(x, y), last);
-      nearest = min(nearest, linearizeDepth(texelFetch(sceneDepth, p, 0).r));
+      nearest = min(nearest, linearizeDepth(texelFetch(depthImage, p, 0).r));
     }
   return nearest;
 }
@@ -177,22 +183,25 @@ void main() {
   uint scale = tileHeader.scale;
   bool inside = all(lessThan(pixel, ivec2(tileHeader.layerWidth, tileHeader.layerHeight)));
   uvec2 framePixel = min(uvec2(pixel) * scale + scale / 2u, uvec2(frame.viewport.xy) - 1u);
-  float sceneViewDepth = inside ? particlePixelDepth(pixel) : 0.0;
+  float sceneViewDepth = inside ? particlePixelDepth(sceneDepth, pixel) : 0.0;
+  float glassViewDepth = inside && kBehindGlass ? particlePixelDepth(glassDepth, pixel) : 0.0;
   if (gl_LocalInvocationIndex == 0u) finishedPixels = 0u;
   barrier();
-  if (!inside) atomicAdd(finishedPixels, 1u);
+  // Before the glass, a pixel with no glass in front of its surface has nothing to blend: a tile
+  // without glass skips its particles altogether.
+  bool finished = !inside || (kBehindGlass && glassViewDepth >= sceneViewDepth);
+  if (finished) atomicAdd(finishedPixels, 1u);
+  barrier();
   uint visible = particleCounters.dispatch.w;
   vec3 colour = vec3(0.0);
   float transmittance = 1.0;
-  bool finished = !inside;
   uint slabs = tileHeader.cellsX;
   uint group = gl_WorkGroupID.z;
   uint firstSlab = group * slabs / tileHeader.groups, endSlab = (group + 1u) * slabs / tileHeader.groups;
-  for (uint slab = firstSlab; slab < endSlab; ++slab) {
-    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, visible, colour, transmittance,
-              finished);
+  for (uint slab = firstSlab; slab < endSlab && finishedPixels < kThreads; ++slab) {
+    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, colour,
+              transmittance, finished);
     barrier();
-    if (finishedPixels == kThreads) break;
   }
   if (!inside) return;
   particleLayers[particleLayerIndex(group, pixel)] =

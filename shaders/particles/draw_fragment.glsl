@@ -16,11 +16,17 @@ layout(location = 0) out vec4 outColor;
 layout(set = 0, binding = 16) uniform sampler2D sceneDepth;
 // Depth is only tested, never written: fragments behind the scene never run.
 layout(early_fragment_tests) in;
+// The draw before the glass (Renderer::recordFrame): only what lies behind the nearest glass at
+// the pixel (glassDepth: the opaque depth with the glass drawn into it); the rest is drawn after
+// the glass, against glassDepth.
+layout(constant_id = 50) const bool kBehindGlass = false;
+layout(set = 0, binding = 25) uniform sampler2D glassDepth;
 
 void main() {
   float r2 = dot(inOffset, inOffset);
   if (r2 >= 1.0) discard;
   float depth = linearizeDepth(gl_FragCoord.z);
+  if (kBehindGlass && depth < linearizeDepth(texelFetch(glassDepth, ivec2(gl_FragCoord.xy), 0).r)) discard;
   float sceneLinearDepth = linearizeDepth(texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r);
   float alpha = inAlbedoOpacity.a * puffDensity(r2, inPattern) * softFade(sceneLinearDepth, depth);
   vec3 radiance = inBaseRadiance;

@@ -42,6 +42,8 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
   const bool atlas = lighting_ == ParticleLighting::Atlas;
   const SpecializationConstants constants = lightTypeConstants(frame.scene);
   DrawPipelines pipelines;
+  // With glass, the variant that blends only what lies behind it (kBehindGlass in the shaders).
+  const bool glass = frame.scene.hasBlendDraws();
   if (render_ == ParticleRender::Raster) {
     GraphicsPipelineDesc desc;
     desc.vertexShader = vertex ? "particles/draw_vertex_lit.vert" : "particles/draw.vert";
@@ -57,12 +59,20 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
     desc.constants = constants;
     pipelines.drawLayout = PipelineLayout(context_, {desc.vertexShader, desc.fragmentShader});
     pipelines.draw = Pipeline(context_, pipelines.drawLayout, desc);
+    if (glass) {
+      desc.constants[kBehindGlassConstant] = 1;
+      pipelines.drawBehindGlass = Pipeline(context_, pipelines.drawLayout, desc);
+    }
   } else {
     const std::string shader = litShader(lighting, "particles_tiles.comp");
     pipelines.compositeLayout = PipelineLayout(context_, {shader});
     SpecializationConstants compositeConstants = constants;
     compositeConstants[0] = vertex ? 0 : atlas ? 2 : 1;  // the light's source (particles_tiles.comp)
     pipelines.composite = Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
+    if (glass) {
+      compositeConstants[kBehindGlassConstant] = 1;
+      pipelines.compositeBehindGlass = Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
+    }
   }
   if (vertex || atlas) {
     const std::string shader = litShader(lighting, vertex ? "particles_vertex.comp" : "particles_atlas.comp");
@@ -113,26 +123,41 @@ void ParticleSystem::lightParticles(FrameContext& frame, const DrawPipelines& pi
       });
 }
 
-void ParticleSystem::draw(FrameContext& frame, const LightingInterface& lighting) {
+const Image& particleSceneDepth(const FrameTargets& targets, ParticleLayer layer) {
+  return layer == ParticleLayer::InFrontOfGlass ? targets.glassDepth : targets.depth;
+}
+
+const char* particlePassSuffix(ParticleLayer layer) {
+  return layer == ParticleLayer::BehindGlass ? "-behind-glass" : "";
+}
+
+void ParticleSystem::draw(FrameContext& frame, const LightingInterface& lighting, ParticleLayer layer) {
   const DrawPipelines& pipelines = pipelinesFor(frame, lighting);
-  if (pipelines.light) lightParticles(frame, pipelines, lighting);
+  if (layer != ParticleLayer::All && !frame.targets.glassDepth)
+    throw std::logic_error("particles drawn about the glass without the glass depth");
+  // Lighting and binning are the frame's, whichever layers are drawn.
+  const bool first = layer != ParticleLayer::InFrontOfGlass;
+  if (first && pipelines.light) lightParticles(frame, pipelines, lighting);
   if (render_ == ParticleRender::Raster) {
-    drawRaster(frame, pipelines, lighting);
+    drawRaster(frame, pipelines, lighting, layer);
   } else {
-    binTiles(frame);
-    composite(frame, pipelines, lighting);
-    resolve(frame);
+    if (first) binTiles(frame);
+    composite(frame, pipelines, lighting, layer);
+    resolve(frame, layer);
   }
 }
 
 void ParticleSystem::drawRaster(FrameContext& frame, const DrawPipelines& pipelines,
-                                const LightingInterface& lighting) {
+                                const LightingInterface& lighting, ParticleLayer layer) {
   const FrameTargets& t = frame.targets;
+  const Image& depth = particleSceneDepth(t, layer);
+  // The glass depth, read before the glass; a stand-in (never read) otherwise.
+  const Image& glass = layer == ParticleLayer::BehindGlass ? t.glassDepth : depth;
   constexpr VkPipelineStageFlags2 kShaders =
       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
   std::vector<ResourceUse> reads{uses(t.hdr, Use::ColorBlend),
-                                 uses(t.depth, Use::DepthTest),
-                                 uses(t.depth, Use::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT),
+                                 uses(depth, Use::DepthTest),
+                                 uses(depth, Use::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT),
                                  uses(counters_, Use::IndirectRead),
                                  uses(counters_, Use::StorageRead, kShaders),
                                  uses(uniforms_, Use::StorageRead, kShaders),
@@ -140,13 +165,18 @@ void ParticleSystem::drawRaster(FrameContext& frame, const DrawPipelines& pipeli
                                  uses(drawOrder_, Use::StorageRead, kShaders)};
   if (radiance_) reads.push_back(uses(radiance_, Use::StorageRead, kShaders));
   if (atlas_) reads.push_back(uses(atlas_, Use::StorageRead, kShaders));
+  if (layer == ParticleLayer::BehindGlass)
+    reads.push_back(uses(glass, Use::Sampled, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT));
   // Blends over what the technique drew last, in whichever pass that was.
-  frame.graph.pass("particles-draw", reads + lighting.reads(kShaders), [&](VkCommandBuffer cmd) {
-    beginRendering(cmd, t.width, t.height, {{t.hdr.view(), false}}, t.depth.view(),
+  const std::string name = std::string("particles-draw") + particlePassSuffix(layer);
+  frame.graph.pass(name, reads + lighting.reads(kShaders), [&](VkCommandBuffer cmd) {
+    beginRendering(cmd, t.width, t.height, {{t.hdr.view(), false}}, depth.view(),
                    VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
-    pipelines.draw.bind(cmd);
+    (layer == ParticleLayer::BehindGlass ? pipelines.drawBehindGlass : pipelines.draw).bind(cmd);
     descriptors(frame, lighting)
-        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(),
+        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(),
+               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+        .image(25, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, glass.view(),
                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
         .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.drawLayout);
     vkCmdDrawIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, draw), 1,

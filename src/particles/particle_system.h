@@ -44,6 +44,18 @@ enum class ParticleLighting {
 // Throws InputError for anything but "pixel", "atlas" or "vertex".
 ParticleLighting parseParticleLighting(const std::string& name);
 
+// Which particles a draw blends, by depth against the scene's glass (ParticleSystem::draw).
+enum class ParticleLayer {
+  All,             // no glass in the scene: every particle, after the glass pass (which draws nothing)
+  BehindGlass,     // before the glass: particles behind the nearest glass at their pixel
+  InFrontOfGlass,  // after the glass: the rest, depth-tested and faded against the glass
+};
+// constant_id of kBehindGlass in particles/draw_fragment.glsl and lit/particles_tiles.comp.glsl.
+inline constexpr uint32_t kBehindGlassConstant = 50;
+// The depth image a layer tests and fades against, and the suffix of its pass names.
+const Image& particleSceneDepth(const FrameTargets& targets, ParticleLayer layer);
+const char* particlePassSuffix(ParticleLayer layer);
+
 // How the particles reach the frame (--particle-render).
 enum class ParticleRender {
   Auto,     // compute on a GPU, raster on a CPU device (see ParticleSystem's constructor)
@@ -82,10 +94,12 @@ class ParticleSystem {
   // the renderer records the same frame again), then sort for the frame's camera and build the
   // indirect arguments.
   void update(FrameContext& frame, bool advance);
-  // The particle passes after the glass, lit by the technique's lighting interface (per particle in
-  // particles-light with --particle-lighting vertex, per pixel in particles-draw otherwise); hdr
-  // stays a colour attachment.
-  void draw(FrameContext& frame, const LightingInterface& lighting);
+  // The particle passes, lit by the technique's lighting interface (per particle in particles-light
+  // with --particle-lighting vertex or atlas, per pixel in particles-draw otherwise). `layer`:
+  // All after the glass in a scene without glass; with glass BehindGlass before the glass (only
+  // what lies behind the nearest glass at each pixel, FrameTargets::glassDepth) and InFrontOfGlass
+  // after it (tested against glassDepth). The first call of a frame lights and bins the particles.
+  void draw(FrameContext& frame, const LightingInterface& lighting, ParticleLayer layer = ParticleLayer::All);
 
   // Once the frame completed: true when the compute renderer's tile entries did not fit, with a
   // larger array allocated; the frame must then be drawn again (without advancing).
@@ -107,10 +121,12 @@ class ParticleSystem {
   struct DrawPipelines {
     PipelineLayout drawLayout;
     Pipeline draw;
+    Pipeline drawBehindGlass;  // with glass in the scene: the draw before it (constant 50)
     PipelineLayout lightLayout;
     Pipeline light;                  // the per-particle lighting pass (vertex lighting); empty otherwise
     PipelineLayout compositeLayout;  // --particle-render compute: particles-composite
     Pipeline composite;
+    Pipeline compositeBehindGlass;
   };
   // The compute renderer's tiles (particle_tiles.cpp), made for the frame's size on first use.
   struct Tiles {
@@ -147,13 +163,15 @@ class ParticleSystem {
   // ... and the lighting interface's light data.
   DescriptorWriter descriptors(const FrameContext& frame, const LightingInterface& lighting) const;
   void lightParticles(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
-  void drawRaster(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
+  void drawRaster(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting,
+                  ParticleLayer layer);
   // particle_tiles.cpp
   void prepareTiles(const FrameContext& frame);
   void allocateTileEntries(uint64_t entries);
   void binTiles(FrameContext& frame);
-  void composite(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
-  void resolve(FrameContext& frame);
+  void composite(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting,
+                 ParticleLayer layer);
+  void resolve(FrameContext& frame, ParticleLayer layer);
 
   Context& context_;
   ParticlePreset preset_;

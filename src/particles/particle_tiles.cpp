@@ -164,25 +164,32 @@ void ParticleSystem::binTiles(FrameContext& frame) {
 }
 
 void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelines,
-                               const LightingInterface& lighting) {
+                               const LightingInterface& lighting, ParticleLayer layer) {
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
+  const Image& depth = particleSceneDepth(targets, layer);
+  const bool behind = layer == ParticleLayer::BehindGlass;
+  const Image& glass = behind ? targets.glassDepth : depth;  // a stand-in, never read, after the glass
   std::vector<ResourceUse> used{
-      uses(targets.depth, Use::Sampled, kCompute),    uses(counters_, Use::StorageRead, kCompute),
+      uses(depth, Use::Sampled, kCompute),    uses(counters_, Use::StorageRead, kCompute),
       uses(uniforms_, Use::StorageRead, kCompute),    uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
       uses(t.cells, Use::StorageRead, kCompute),      uses(t.entries, Use::StorageReadWrite, kCompute),
       uses(t.screen, Use::StorageRead, kCompute),     uses(t.layers, Use::StorageWrite, kCompute),
       uses(t.layerDepth, Use::StorageWrite, kCompute)};
   if (atlas_) used.push_back(uses(atlas_, Use::StorageRead, kCompute));
-  frame.graph.pass("particles-composite", used + lighting.reads(kCompute), [&](VkCommandBuffer cmd) {
-    pipelines.composite.bind(cmd);
+  if (behind) used.push_back(uses(glass, Use::Sampled, kCompute));
+  const std::string name = std::string("particles-composite") + particlePassSuffix(layer);
+  frame.graph.pass(name, used + lighting.reads(kCompute), [&](VkCommandBuffer cmd) {
+    (behind ? pipelines.compositeBehindGlass : pipelines.composite).bind(cmd);
     DescriptorWriter writer = descriptors(frame, lighting);
     writer.storage(17, t.headerBuffer.handle())
         .storage(18, t.cells.handle())
         .storage(19, t.entries.handle())
         .storage(20, t.screen.handle())
         .storage(23, t.layers.handle())
-        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, targets.depth.view(),
+        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(),
+               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+        .image(25, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, glass.view(),
                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
         .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL);
     // Read only with atlas lighting (specialization constant 0 == 2); a stand-in otherwise.
@@ -192,12 +199,13 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
   });
 }
 
-void ParticleSystem::resolve(FrameContext& frame) {
+void ParticleSystem::resolve(FrameContext& frame, ParticleLayer layer) {
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
+  const Image& depth = particleSceneDepth(targets, layer);
   frame.graph.pass(
-      "particles-resolve",
-      {uses(targets.hdr, Use::StorageReadWrite, kCompute), uses(targets.depth, Use::Sampled, kCompute),
+      std::string("particles-resolve") + particlePassSuffix(layer),
+      {uses(targets.hdr, Use::StorageReadWrite, kCompute), uses(depth, Use::Sampled, kCompute),
        uses(t.headerBuffer, Use::StorageRead, kCompute), uses(t.layers, Use::StorageRead, kCompute),
        uses(t.layerDepth, Use::StorageRead, kCompute)},
       [&](VkCommandBuffer cmd) {
@@ -206,7 +214,7 @@ void ParticleSystem::resolve(FrameContext& frame) {
             .storage(0, frame.uniformBuffer.handle())
             .storage(17, t.headerBuffer.handle())
             .storage(23, t.layers.handle())
-            .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, targets.depth.view(),
+            .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(),
                    VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
             .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
             .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)

@@ -29,6 +29,10 @@ struct FrameTargets {
   Image depth;  // D32 reverse-Z
   Image hdr;    // RGBA16F linear radiance
   Image ldr;    // RGBA8 display-encoded
+  // D32 reverse-Z, with particles in a scene with glass: the opaque depth with the glass drawn into
+  // it (Renderer's glass-depth pass), so particles can be drawn behind the nearest glass before it
+  // and in front of it after it (ParticleLayer). Null otherwise.
+  Image glassDepth;
   // R32UI, with --surfaces visibility: each pixel's surface id (render/visibility.h) or kNoSurface;
   // GENERAL layout after the visibility pass. Null with --surfaces gbuffer.
   Image visibility;

@@ -85,6 +85,12 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   tonemap_ = Pipeline(context, tonemapLayout_, "post/tonemap.comp");
   if (auto options = particleOptions(scene, settings))
     particles_ = std::make_unique<ParticleSystem>(context, *options);
+  // Particles and glass drawn in depth order: the particles behind the nearest glass before it.
+  if (particles_ && gpuScene_->hasBlendDraws())
+    targets_.glassDepth = Image(context, settings_.width, settings_.height, kDepthFormat,
+                                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                "glass depth");
   technique_ =
       findTechnique(settings.technique).create(context, *gpuScene_, settings_, targets_, visibility_.get());
   lit_ = std::make_unique<LitPasses>(context, *gpuScene_, targets_, visibility_.get(),
@@ -137,7 +143,8 @@ void Renderer::createTargets() {
   targets_.height = h;
   targets_.depth = Image(context_, w, h, kDepthFormat,
                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                             VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // the compute rasterizer's copy
+                             VK_IMAGE_USAGE_TRANSFER_DST_BIT |  // the compute rasterizer's copy
+                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT,   // the glass depth's start
                          "depth");
   targets_.hdr = Image(context_, w, h, kHdrFormat,
                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
@@ -299,8 +306,16 @@ void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advancePartic
     technique_->shadeOpaque(frame);
   else
     lit_->shadeOpaque(frame);
-  lit_->shadeGlass(frame);
-  if (particles_) particles_->draw(frame, technique_->lighting());
+  if (particles_ && targets_.glassDepth) {
+    // Particles behind the nearest glass, then the glass over them, then the particles in front.
+    glassDepth(frame);
+    particles_->draw(frame, technique_->lighting(), ParticleLayer::BehindGlass);
+    lit_->shadeGlass(frame);
+    particles_->draw(frame, technique_->lighting(), ParticleLayer::InFrontOfGlass);
+  } else {
+    lit_->shadeGlass(frame);
+    if (particles_) particles_->draw(frame, technique_->lighting());
+  }
   tonemap(frame);
   if (capture) captureImages(graph);
 }
@@ -314,6 +329,28 @@ void Renderer::depthPrepass(FrameContext& frame) {
     gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::OpaqueOnly);
     depthMask_.bind(cmd);
     gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::MaskOnly);
+    vkCmdEndRendering(cmd);
+  });
+}
+
+// The nearest surface, opaque or glass, at each pixel: the opaque depth copied, the glass drawn
+// into it (every pixel a pane covers counts, whatever its alpha).
+void Renderer::glassDepth(FrameContext& frame) {
+  frame.graph.step({uses(targets_.depth, Use::TransferRead), uses(targets_.glassDepth, Use::TransferWrite)},
+                   [&](VkCommandBuffer cmd) {
+                     VkImageCopy copy{};
+                     copy.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+                     copy.dstSubresource = copy.srcSubresource;
+                     copy.extent = {targets_.width, targets_.height, 1};
+                     vkCmdCopyImage(cmd, targets_.depth.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                    targets_.glassDepth.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+                   });
+  frame.graph.pass("glass-depth", {uses(targets_.glassDepth, Use::DepthReadWrite)}, [&](VkCommandBuffer cmd) {
+    beginRendering(cmd, targets_.width, targets_.height, {}, targets_.glassDepth.view(),
+                   VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, false);
+    depthOpaque_.bind(cmd);
+    meshPassDescriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depthLayout_);
+    gpuScene_->draw(cmd, depthLayout_.handle(), DrawFilter::Blend);
     vkCmdEndRendering(cmd);
   });
 }

@@ -109,6 +109,7 @@ class Renderer {
   void updateUniforms();
   void recordFrame(VkCommandBuffer cmd, bool capture, bool advanceParticles);
   void depthPrepass(FrameContext& frame);
+  void glassDepth(FrameContext& frame);
   void tonemap(FrameContext& frame);
   void captureImages(FrameGraph& graph);
 
