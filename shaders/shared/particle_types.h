@@ -95,6 +95,10 @@ LLL_CONST(uint, kParticleMaxGroups, 8u);
 // sampled bilinearly by every pixel. Texel (i, j) of the particle at draw order k is
 // particleAtlas[k * kParticleAtlasSide^2 + j * kParticleAtlasSide + i], rgb as halves.
 LLL_CONST(uint, kParticleAtlasSide, 4u);
+// The puffs' noise texture (particles/puff.glsl, src/particles/puff_noise.h): value noise over a
+// lattice of kPuffNoisePeriod^2 points that repeats, kPuffNoiseTexelsPerCell texels per cell.
+LLL_CONST(uint, kPuffNoisePeriod, 64u);
+LLL_CONST(uint, kPuffNoiseTexelsPerCell, 4u);
 
 // The tiled renderer's header. It works in particle pixels: the frame's with
 // --particle-resolution full, 2 x 2 or 4 x 4 of them (`scale`) at half or quarter resolution. Each tile's

@@ -9,6 +9,7 @@
 
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
+#include "particles/puff_noise.h"
 #include "render/frame.h"
 #include "scene/errors.h"
 
@@ -69,6 +70,7 @@ ParticleSystem::ParticleSystem(Context& context, const ParticleSystemOptions& op
 
 ParticleSystem::~ParticleSystem() {
   vkDestroySampler(context_.device(), depthSampler_, nullptr);
+  vkDestroySampler(context_.device(), noiseSampler_, nullptr);
 }
 
 void ParticleSystem::createBuffers() {
@@ -101,6 +103,32 @@ void ParticleSystem::createBuffers() {
     vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
   });
   depthSampler_ = createNearestClampSampler(context_);
+  createNoise();
+}
+
+void ParticleSystem::createNoise() {
+  const uint32_t side = puffNoiseSide();
+  const std::vector<uint8_t> texels = bakePuffNoise();
+  noise_ = Image(context_, side, side, VK_FORMAT_R8_UNORM, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                 "puff noise");
+  Buffer staging(context_, texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+  staging.upload(texels.data(), texels.size());
+  context_.submitAndWait([&](VkCommandBuffer cmd) {
+    noise_.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE,
+                      0, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {side, side, 1};
+    vkCmdCopyBufferToImage(cmd, staging.handle(), noise_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+    noise_.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+  });
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = VK_FILTER_LINEAR;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &noiseSampler_));
 }
 
 void ParticleSystem::uploadUniforms(const glm::vec3& source, uint32_t seed) {

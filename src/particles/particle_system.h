@@ -151,6 +151,7 @@ class ParticleSystem {
     Pipeline resolve;
   };
   void createBuffers();
+  void createNoise();
   void uploadUniforms(const glm::vec3& source, uint32_t seed);
   uint64_t spawnedBefore(uint64_t step) const;
   gpu::ParticleStepPush stepPush(uint64_t step) const;
@@ -158,7 +159,8 @@ class ParticleSystem {
   void sort(FrameContext& frame);
   void buildIndirect(VkCommandBuffer cmd);
   const DrawPipelines& pipelinesFor(const FrameContext& frame, const LightingInterface& lighting);
-  // Set 0 of the particle passes: the frame, the lights and the system's buffers (11 to 15, 22)...
+  // Set 0 of the particle passes: the frame, the lights, the system's buffers (11 to 15, 22) and the
+  // puffs' noise (31)...
   DescriptorWriter systemDescriptors(const FrameContext& frame) const;
   // ... and the lighting interface's light data.
   DescriptorWriter descriptors(const FrameContext& frame, const LightingInterface& lighting) const;
@@ -190,6 +192,9 @@ class ParticleSystem {
   Buffer radiance_;  // --particle-lighting vertex: each visible particle's light
   Buffer atlas_;     // --particle-lighting atlas: each visible particle's light atlas
   VkSampler depthSampler_ = VK_NULL_HANDLE;
+  // The puffs' noise (puff_noise.h): sampled, in SHADER_READ_ONLY_OPTIMAL from creation on.
+  Image noise_;
+  VkSampler noiseSampler_ = VK_NULL_HANDLE;
   PipelineLayout layout_;
   Pipeline simulate_;
   Pipeline keys_;
