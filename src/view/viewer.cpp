@@ -603,6 +603,7 @@ void Viewer::drawControls() {
     choice("tile", settings_.tileSize, {1, 2, 4, 8, 16});
     if (settings_.technique == "lll") {
       choice("fill", settings_.lllFill, {"compute", "shells", "ray"});
+      if (settings_.lllFill == "compute") committedUint("fill splits (0: auto)", settings_.lllFillSplits, 0, 64);
       choice("slices", settings_.lllSlices, {1, 2, 4, 8, 16, 32});
       choice("link", settings_.lllLink, {"auto", "compact", "wide"});
       choice("shade", settings_.lllShade, {"compute", "fragment"});
@@ -624,18 +625,50 @@ void Viewer::drawControls() {
     if (ImGui::Checkbox("animate (orbit and bob)", &animate_) && animate_) request_.movingLights = true;
     ImGui::Text("time %.2f s", time_);
   }
+  if (ImGui::CollapsingHeader("Suns")) {
+    // As --sun: "x,y,z,lux[,r,g,b]", x,y,z towards the sun; a bad value keeps the scene as it was.
+    std::vector<std::string> suns = request_.suns;
+    bool edited = false;
+    for (size_t i = 0; i < suns.size(); ++i) {
+      ImGui::PushID(int(i));
+      ImGui::InputText("sun", &suns[i]);
+      edited |= ImGui::IsItemDeactivatedAfterEdit();
+      ImGui::PopID();
+    }
+    if (suns.size() < 4 && ImGui::Button("add a sun")) {
+      suns.push_back("0.3,1,0.2,20000");
+      edited = true;
+    }
+    if (!suns.empty()) {
+      ImGui::SameLine();
+      if (ImGui::Button("remove the last")) {
+        suns.pop_back();
+        edited = true;
+      }
+    }
+    if (edited) request_.suns = suns;
+  }
   if (ImGui::CollapsingHeader("Shadows")) {
     choice("shadows", settings_.shadows, {"sun", "all", "none"});
     if (settings_.shadows == "all") committedUint("shadow lights", settings_.shadowLights, 0, 1024);
     choice("cascades", settings_.cascades, {1, 2, 3, 4});
     choice("cascade texels", settings_.shadowResolution, {512, 1024, 2048, 4096});
     choice("filter", settings_.shadowFilter, {"pcf", "none"});
+    if (settings_.shadows == "all")
+      choice("light shadow texels", settings_.shadowLightResolution, {128, 256, 512, 1024, 2048});
+    choice("shadow raster", settings_.shadowRaster, {"auto", "hardware", "compute"});
   }
   if (ImGui::CollapsingHeader("Indirect light")) {
     choice("gi", request_.gi.mode, {"none", "vpl", "vpl-only"});
     committedUint("photons", request_.gi.photons, 1, gi::kMaxPhotons);
     committedUint("bounces", request_.gi.bounces, 1, gi::kMaxBounces);
     committedUint("VPL count", request_.gi.vplCount, 0, gpu::kMaxLights);
+    float cutoff = request_.gi.vplCutoff;
+    ImGui::DragFloat("VPL cutoff", &cutoff, 1e-5f, 1e-9f, 1.0f, "%.2e", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemDeactivatedAfterEdit()) request_.gi.vplCutoff = std::clamp(cutoff, 1e-9f, 1.0f);
+    float range = request_.gi.vplRange;
+    ImGui::DragFloat("VPL range m (0: cutoff)", &range, 0.05f, 0.0f, 1e6f);
+    if (ImGui::IsItemDeactivatedAfterEdit()) request_.gi.vplRange = std::clamp(range, 0.0f, 1e6f);
   }
   if (ImGui::CollapsingHeader("Particles")) {
     std::vector<std::string> presets = {"none"};
