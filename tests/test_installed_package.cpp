@@ -32,9 +32,9 @@ TEST_F(InstalledPackage, BuildsAndRunsTheExampleProgram) {
   const fs::path project = dir_ / "render_gltf";
   fs::copy(fs::path(LLL_SOURCE_DIR) / "examples/render_gltf", project);
   const std::string flags = LLL_EXAMPLE_FLAGS;
-  ASSERT_EQ(shell("cmake -S '" + project.string() + "' -B '" + build.string() + "' -G Ninja -DCMAKE_BUILD_TYPE=Release" +
-                      " -DCMAKE_PREFIX_PATH='" + prefix.string() + "' -DCMAKE_CXX_FLAGS='" + flags +
-                      "' -DCMAKE_EXE_LINKER_FLAGS='" + flags + "'",
+  ASSERT_EQ(shell("cmake -S '" + project.string() + "' -B '" + build.string() +
+                      "' -G Ninja -DCMAKE_BUILD_TYPE=Release" + " -DCMAKE_PREFIX_PATH='" + prefix.string() +
+                      "' -DCMAKE_CXX_FLAGS='" + flags + "' -DCMAKE_EXE_LINKER_FLAGS='" + flags + "'",
                   log),
             0)
       << test::readFile(log);
@@ -48,10 +48,11 @@ TEST_F(InstalledPackage, BuildsAndRunsTheExampleProgram) {
             0)
       << test::readFile(log);
   EXPECT_TRUE(test::contains(test::readFile(log), "frame")) << "the example prints its pass timings";
-  const auto rendered = test::runLll({"render", scene, "--technique", "lll", "--device", "cpu", "--width", "96",
-                                      "--height", "64", "--out", outPng()});
+  const auto rendered = test::runLll({"render", scene, "--technique", "lll", "--device", "cpu", "--width",
+                                      "96", "--height", "64", "--out", outPng()});
   ASSERT_EQ(rendered.exitCode, 0) << rendered;
-  test::expectWithinBound(readPng(example), readPng(outPng()), test::kSameImage, "installed example vs lll render");
+  test::expectWithinBound(readPng(example), readPng(outPng()), test::kSameImage,
+                          "installed example vs lll render");
 
   // Bad input through the library: exit 2 and the file named, as the lll command does.
   EXPECT_EQ(shell("'" + (build / "render_gltf").string() + "' '" + (dir_ / "missing.gltf").string() + "' '" +

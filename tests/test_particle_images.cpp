@@ -272,13 +272,15 @@ TEST(GlassAndParticles, AParticleBehindAPaneIsSeenThroughIt) {
     const ParticleFrame withPuff[2] = {renderParticles(paneScene(false), settings, 2),
                                        renderParticles(paneScene(true), settings, 2)};
     ASSERT_EQ(withPuff[1].counters.dispatch.w, 1u);
-    const glm::vec3 open = meanColor(withPuff[0].image.hdr, 78, 43, 4) - meanColor(withoutPuff[0].hdr, 78, 43, 4);
+    const glm::vec3 open =
+        meanColor(withPuff[0].image.hdr, 78, 43, 4) - meanColor(withoutPuff[0].hdr, 78, 43, 4);
     const glm::vec3 throughGlass =
         meanColor(withPuff[1].image.hdr, 78, 43, 4) - meanColor(withoutPuff[1].hdr, 78, 43, 4);
     ASSERT_GT(open.g, 0.5f) << "the puff does not show";
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(throughGlass[i] / open[i], 0.6f, 0.02f) << "channel " << i;
     // Beside the pane (x = 1.3 m) there is neither puff nor glass: no change at all.
-    const glm::vec3 beside = meanColor(withPuff[1].image.hdr, 125, 43, 4) - meanColor(withoutPuff[1].hdr, 125, 43, 4);
+    const glm::vec3 beside =
+        meanColor(withPuff[1].image.hdr, 125, 43, 4) - meanColor(withoutPuff[1].hdr, 125, 43, 4);
     EXPECT_LT(glm::length(beside), 1e-3f);
   }
 }

@@ -10,9 +10,9 @@
 #include "image_bound.h"
 #include "particles/presets.h"
 #include "render/image_io.h"
-#include "scene/scene_source.h"
 #include "scene/camera.h"
 #include "scene/errors.h"
+#include "scene/scene_source.h"
 #include "view/input_script.h"
 #include "view/view_camera.h"
 
@@ -193,11 +193,13 @@ std::vector<std::string> operator+(std::vector<std::string> a, const std::vector
 
 TEST_F(ViewerCli, ItsScreenshotIsWhatLllRenderDraws) {
   for (const std::string technique : {"forward", "lll"}) {
-    const std::vector<std::string> options = kSmall + std::vector<std::string>{"--technique", technique,
-                                                                                "--lights", "64", "--frames", "3"};
-    const auto viewed = lll(std::vector<std::string>{"view", "atrium", "--screenshot", path("view.png")} + options);
+    const std::vector<std::string> options =
+        kSmall + std::vector<std::string>{"--technique", technique, "--lights", "64", "--frames", "3"};
+    const auto viewed =
+        lll(std::vector<std::string>{"view", "atrium", "--screenshot", path("view.png")} + options);
     ASSERT_EQ(viewed.exitCode, 0) << viewed;
-    const auto rendered = lll(std::vector<std::string>{"render", "atrium", "--out", path("render.png")} + options);
+    const auto rendered =
+        lll(std::vector<std::string>{"render", "atrium", "--out", path("render.png")} + options);
     ASSERT_EQ(rendered.exitCode, 0) << rendered;
     test::expectWithinBound(readPng(path("view.png")), readPng(path("render.png")), test::kSameImage,
                             "lll view vs lll render, " + technique);
@@ -206,7 +208,8 @@ TEST_F(ViewerCli, ItsScreenshotIsWhatLllRenderDraws) {
 
 TEST_F(ViewerCli, ScriptedKeysAndMouseMoveTheCameraAndPrintIt) {
   // Forward for 20 frames (1/60 s each), a turn to the right, then the camera printed.
-  const std::string input = script("0 key w down\n0 key shift down\n20 key w up\n20 look 60 -20\n22 print-camera\n");
+  const std::string input =
+      script("0 key w down\n0 key shift down\n20 key w up\n20 look 60 -20\n22 print-camera\n");
   const auto moved = lll(std::vector<std::string>{"view", "atrium", "--script", input, "--frames", "23",
                                                   "--screenshot", path("moved.png")} +
                          kSmall);
@@ -220,12 +223,13 @@ TEST_F(ViewerCli, ScriptedKeysAndMouseMoveTheCameraAndPrintIt) {
   const glm::vec3 ahead = glm::normalize(start.target - start.eye);
   EXPECT_GT(glm::dot(flown.eye - start.eye, ahead), 0.5f) << cameraText;
   const glm::vec3 turned = glm::normalize(flown.target - flown.eye);
-  EXPECT_LT(glm::dot(glm::cross(ahead, turned), glm::vec3(0, 1, 0)), 0.0f) << "turned right (clockwise from above)";
+  EXPECT_LT(glm::dot(glm::cross(ahead, turned), glm::vec3(0, 1, 0)), 0.0f)
+      << "turned right (clockwise from above)";
   EXPECT_GT(turned.y, ahead.y) << "looked up";
   // `lll render --camera` with the printed value draws what the window showed.
-  const auto rendered = lll(std::vector<std::string>{"render", "atrium", "--camera=" + cameraText, "--out",
-                                                     path("render.png")} +
-                            kSmall);
+  const auto rendered = lll(
+      std::vector<std::string>{"render", "atrium", "--camera=" + cameraText, "--out", path("render.png")} +
+      kSmall);
   ASSERT_EQ(rendered.exitCode, 0) << rendered;
   test::expectWithinBound(readPng(path("moved.png")), readPng(path("render.png")), test::kSameImage,
                           "flown camera vs lll render --camera");
@@ -233,16 +237,16 @@ TEST_F(ViewerCli, ScriptedKeysAndMouseMoveTheCameraAndPrintIt) {
 
 TEST_F(ViewerCli, KeepsRenderingThroughAResizeAndATechniqueChange) {
   const std::string input = script("1 resize 80 48\n2 set technique lll\n3 set exposure 2\n");
-  const auto r = lll(std::vector<std::string>{"view", "atrium", "--script", input, "--frames", "5", "--screenshot",
-                                              path("resized.png")} +
+  const auto r = lll(std::vector<std::string>{"view", "atrium", "--script", input, "--frames", "5",
+                                              "--screenshot", path("resized.png")} +
                      kSmall);
   ASSERT_EQ(r.exitCode, 0) << r;
   const LdrImage image = readPng(path("resized.png"));
   EXPECT_EQ(image.width, 80u);
   EXPECT_EQ(image.height, 48u);
-  const auto rendered = lll(std::vector<std::string>{"render", "atrium", "--technique", "lll", "--exposure", "2",
-                                                     "--width", "80", "--height", "48", "--device", "cpu", "--out",
-                                                     path("render.png")});
+  const auto rendered =
+      lll(std::vector<std::string>{"render", "atrium", "--technique", "lll", "--exposure", "2", "--width",
+                                   "80", "--height", "48", "--device", "cpu", "--out", path("render.png")});
   ASSERT_EQ(rendered.exitCode, 0) << rendered;
   test::expectWithinBound(image, readPng(path("render.png")), test::kSameImage, "resized, lll, exposure 2");
 }
@@ -267,7 +271,8 @@ TEST_F(ViewerCli, ABrokenDroppedFileKeepsTheSceneAndAGoodOneReplacesIt) {
                                                      "--screenshot", path("quad-view.png")} +
                             kSmall);
   ASSERT_EQ(replaced.exitCode, 0) << replaced;
-  const auto quadRender = lll(std::vector<std::string>{"render", quad.string(), "--out", path("quad.png")} + kSmall);
+  const auto quadRender =
+      lll(std::vector<std::string>{"render", quad.string(), "--out", path("quad.png")} + kSmall);
   ASSERT_EQ(quadRender.exitCode, 0) << quadRender;
   test::expectWithinBound(readPng(path("quad-view.png")), readPng(path("quad.png")), test::kSameImage,
                           "after dropping a glTF");
@@ -276,13 +281,14 @@ TEST_F(ViewerCli, ABrokenDroppedFileKeepsTheSceneAndAGoodOneReplacesIt) {
 TEST_F(ViewerCli, ThePresetEditorSavesAFileLllRenderDrawsTheSame) {
   const std::string input = script("0 preset-save " + path("saved.json") + "\n");
   const std::vector<std::string> particles = {"--particles", "sparks", "--particle-count", "512"};
-  const auto saved = lll(std::vector<std::string>{"view", "atrium", "--script", input, "--frames", "1"} + particles +
-                         kSmall);
+  const auto saved = lll(std::vector<std::string>{"view", "atrium", "--script", input, "--frames", "1"} +
+                         particles + kSmall);
   ASSERT_EQ(saved.exitCode, 0) << saved;
   ASSERT_TRUE(fs::exists(path("saved.json"))) << saved;
   const std::vector<std::string> render = {"render", "atrium", "--frames", "20", "--particle-count", "512"};
   const auto fromFile =
-      lll(render + kSmall + std::vector<std::string>{"--particles", path("saved.json"), "--out", path("file.png")});
+      lll(render + kSmall +
+          std::vector<std::string>{"--particles", path("saved.json"), "--out", path("file.png")});
   ASSERT_EQ(fromFile.exitCode, 0) << fromFile;
   const auto builtin =
       lll(render + kSmall + std::vector<std::string>{"--particles", "sparks", "--out", path("builtin.png")});
@@ -307,10 +313,11 @@ TEST_F(ViewerCli, BadInputExitsTwoAndNamesIt) {
   };
   const std::map<std::string, std::string> display = {{"DISPLAY", display_}};
   expectBad({"view", "--screenshot", path("shot.png")}, "--screenshot needs --frames", display);
-  expectBad({"view", "--frames", "1", "--screenshot", path("shot.txt")}, "expected a name ending in .png or .exr",
-            display);
-  expectBad({"view", "--frames", "1", "--script", script("0 key w sideways\n"), "--screenshot", path("shot.png")},
-            "input.txt:1", display);
+  expectBad({"view", "--frames", "1", "--screenshot", path("shot.txt")},
+            "expected a name ending in .png or .exr", display);
+  expectBad(
+      {"view", "--frames", "1", "--script", script("0 key w sideways\n"), "--screenshot", path("shot.png")},
+      "input.txt:1", display);
   expectBad({"view", "--frames", "1", "--script", path("missing.txt")}, "missing.txt", display);
   expectBad({"view", "--frames", "1", "--device", "cpu", "--screenshot", path("shot.png")}, "needs a display",
             {{"DISPLAY", ":99999"}, {"WAYLAND_DISPLAY", ""}});

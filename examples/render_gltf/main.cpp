@@ -32,7 +32,8 @@ int main(int argc, char** argv) {
     lll::Renderer renderer(context, scene, settings);
     const lll::FrameResult frame = renderer.renderFrame(/*capture=*/true);
     lll::writePng(argv[2], renderer.ldrImage());
-    for (const lll::PassTime& pass : frame.passes) std::printf("%-24s %9.3f ms\n", pass.name.c_str(), pass.ms);
+    for (const lll::PassTime& pass : frame.passes)
+      std::printf("%-24s %9.3f ms\n", pass.name.c_str(), pass.ms);
     return 0;
   } catch (const lll::InputError& e) {
     std::fprintf(stderr, "render_gltf: error: %s\n", e.what());

@@ -129,7 +129,7 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
     for (uint j = 0u; j < n && !finished; ++j) {
       // The shape first: most of a tile's particles miss most of its pixels.
       ParticleShape shape = stagedShape[j];
-      if (shape.centre.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
+      if (shape.centre.z >= sceneViewDepth) continue;                 // behind the scene: faded out entirely
       if (kBehindGlass && shape.centre.z < glassViewDepth) continue;  // blended after the glass
       vec2 offset = (pixelCentre - shape.centre.xy) * shape.axes.xy;
       float r2 = dot(offset, offset);

@@ -284,9 +284,10 @@ int main(int argc, char** argv) {
   addRenderOptions(*viewCmd, viewRender);
   viewCmd->add_option("--screenshot", view.screenshot,
                       "with --frames N: write the N-th frame's image (.png, or .exr radiance), then exit");
-  viewCmd->add_option("--script", view.script,
-                      "replay input from a file: \"FRAME key w down\", \"FRAME look DX DY\", resize, drop, set, "
-                      "preset-save, print-camera (see src/view/input_script.h)");
+  viewCmd->add_option(
+      "--script", view.script,
+      "replay input from a file: \"FRAME key w down\", \"FRAME look DX DY\", resize, drop, set, "
+      "preset-save, print-camera (see src/view/input_script.h)");
   viewCmd->add_option("--resolution-scale", view.resolutionScale, "render resolution over window resolution")
       ->check(finiteIn(0.1, 4.0));
   lll::ReferenceJob reference;

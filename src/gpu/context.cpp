@@ -160,8 +160,8 @@ VkInstance createBareInstance(bool validation, bool debugUtils, const Validation
   if (debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   for (const std::string& name : wanted) {
     if (!hasInstanceExtension(nullptr, name.c_str()))
-      throw InputError(fmt::format("the Vulkan loader lacks the instance extension {}, which a window needs",
-                                   name));
+      throw InputError(
+          fmt::format("the Vulkan loader lacks the instance extension {}, which a window needs", name));
     extensions.push_back(name.c_str());
   }
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};

@@ -71,7 +71,8 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
     pipelines.composite = Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
     if (glass) {
       compositeConstants[kBehindGlassConstant] = 1;
-      pipelines.compositeBehindGlass = Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
+      pipelines.compositeBehindGlass =
+          Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
     }
   }
   if (vertex || atlas) {
@@ -92,8 +93,8 @@ DescriptorWriter ParticleSystem::systemDescriptors(const FrameContext& frame) co
       .storage(14, counters_.handle());
   if (radiance_) writer.storage(15, radiance_.handle());
   if (atlas_) writer.storage(22, atlas_.handle());
-  writer.image(31, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, noise_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-               noiseSampler_);
+  writer.image(31, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, noise_.view(),
+               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, noiseSampler_);
   if (frame.shadows) frame.shadows->bind(writer);
   if (frame.lightShadows) frame.lightShadows->bind(writer);
   return writer;

@@ -170,12 +170,15 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
   const Image& depth = particleSceneDepth(targets, layer);
   const bool behind = layer == ParticleLayer::BehindGlass;
   const Image& glass = behind ? targets.glassDepth : depth;  // a stand-in, never read, after the glass
-  std::vector<ResourceUse> used{
-      uses(depth, Use::Sampled, kCompute),    uses(counters_, Use::StorageRead, kCompute),
-      uses(uniforms_, Use::StorageRead, kCompute),    uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
-      uses(t.cells, Use::StorageRead, kCompute),      uses(t.entries, Use::StorageReadWrite, kCompute),
-      uses(t.screen, Use::StorageRead, kCompute),     uses(t.layers, Use::StorageWrite, kCompute),
-      uses(t.layerDepth, Use::StorageWrite, kCompute)};
+  std::vector<ResourceUse> used{uses(depth, Use::Sampled, kCompute),
+                                uses(counters_, Use::StorageRead, kCompute),
+                                uses(uniforms_, Use::StorageRead, kCompute),
+                                uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
+                                uses(t.cells, Use::StorageRead, kCompute),
+                                uses(t.entries, Use::StorageReadWrite, kCompute),
+                                uses(t.screen, Use::StorageRead, kCompute),
+                                uses(t.layers, Use::StorageWrite, kCompute),
+                                uses(t.layerDepth, Use::StorageWrite, kCompute)};
   if (atlas_) used.push_back(uses(atlas_, Use::StorageRead, kCompute));
   if (behind) used.push_back(uses(glass, Use::Sampled, kCompute));
   const std::string name = std::string("particles-composite") + particlePassSuffix(layer);

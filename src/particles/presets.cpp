@@ -253,7 +253,8 @@ std::string particlePresetJson(const ParticlePreset& p, const std::string& descr
   doc["description"] = description;
   doc["count"] = p.count;
   doc["lifetime"] = {p.lifetimeMin, p.lifetimeMax};
-  doc["emitter"] = {{"shape", shapes[int(p.shape)]}, {"radius", p.emitterRadius}, {"offset", vec3(p.emitterOffset)}};
+  doc["emitter"] = {
+      {"shape", shapes[int(p.shape)]}, {"radius", p.emitterRadius}, {"offset", vec3(p.emitterOffset)}};
   doc["velocity"] = {
       {"direction", vec3(p.direction)}, {"spread", p.spreadDegrees}, {"speed", {p.speedMin, p.speedMax}}};
   doc["gravity"] = vec3(p.gravity);

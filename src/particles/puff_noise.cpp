@@ -8,7 +8,8 @@ namespace lll {
 
 float puffLatticeValue(int x, int y) {
   const int period = int(gpu::kPuffNoisePeriod);
-  const uint32_t px = uint32_t(((x % period) + period) % period), py = uint32_t(((y % period) + period) % period);
+  const uint32_t px = uint32_t(((x % period) + period) % period),
+                 py = uint32_t(((y % period) + period) % period);
   // One multiply-xorshift round: the shaders hashed this per pixel before the noise was baked.
   uint32_t h = px * 0x8da6b343u ^ py * 0xd8163841u;
   h = (h ^ (h >> 15u)) * 0x2c1b3c6du;
@@ -26,7 +27,9 @@ float puffValueNoise(glm::vec2 p) {
   return glm::mix(glm::mix(a, b, u.x), glm::mix(c, d, u.x), u.y);
 }
 
-uint32_t puffNoiseSide() { return gpu::kPuffNoisePeriod * gpu::kPuffNoiseTexelsPerCell; }
+uint32_t puffNoiseSide() {
+  return gpu::kPuffNoisePeriod * gpu::kPuffNoiseTexelsPerCell;
+}
 
 std::vector<uint8_t> bakePuffNoise() {
   const uint32_t side = puffNoiseSide();

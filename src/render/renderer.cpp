@@ -343,7 +343,8 @@ void Renderer::glassDepth(FrameContext& frame) {
                      copy.dstSubresource = copy.srcSubresource;
                      copy.extent = {targets_.width, targets_.height, 1};
                      vkCmdCopyImage(cmd, targets_.depth.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                    targets_.glassDepth.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+                                    targets_.glassDepth.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                                    &copy);
                    });
   frame.graph.pass("glass-depth", {uses(targets_.glassDepth, Use::DepthReadWrite)}, [&](VkCommandBuffer cmd) {
     beginRendering(cmd, targets_.width, targets_.height, {}, targets_.glassDepth.view(),

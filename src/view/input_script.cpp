@@ -64,20 +64,23 @@ std::vector<ScriptEvent> parseInputScript(const std::string& text, const std::st
     if (ec != std::errc() || ptr != w[0].data() + w[0].size() || frame > 10'000'000)
       throw InputError(fmt::format("{}: expected a frame number first (got '{}')", e.where, w[0]));
     e.frame = uint32_t(frame);
-    if (w.size() < 2) throw InputError(fmt::format("{}: an event is missing after the frame number", e.where));
+    if (w.size() < 2)
+      throw InputError(fmt::format("{}: an event is missing after the frame number", e.where));
     e.verb = w[1];
     const auto verb = verbs().find(e.verb);
     if (verb == verbs().end()) {
       std::vector<std::string> names;
       for (const auto& [name, _] : verbs()) names.push_back(name);
-      throw InputError(fmt::format("{}: unknown event '{}' (events: {})", e.where, e.verb, fmt::join(names, ", ")));
+      throw InputError(
+          fmt::format("{}: unknown event '{}' (events: {})", e.where, e.verb, fmt::join(names, ", ")));
     }
     e.args.assign(w.begin() + 2, w.end());
     if (e.verb == "drop" || e.verb == "preset-save") {
       // A path may contain spaces: the rest of the line after the verb.
       const size_t at = line.find(e.verb) + e.verb.size();
       const size_t start = line.find_first_not_of(" \t", at);
-      e.args = {start == std::string::npos ? "" : line.substr(start, line.find_last_not_of(" \t\r") + 1 - start)};
+      e.args = {start == std::string::npos ? ""
+                                           : line.substr(start, line.find_last_not_of(" \t\r") + 1 - start)};
       if (e.args[0].empty()) throw InputError(fmt::format("{}: {} needs a path", e.where, e.verb));
     }
     if (e.args.size() != verb->second.args)
@@ -91,8 +94,8 @@ std::vector<ScriptEvent> parseInputScript(const std::string& text, const std::st
       throw InputError(fmt::format("{}: key {} '{}': expected down or up", e.where, e.args[0], e.args[1]));
     if (e.verb == "look" || e.verb == "wheel" || e.verb == "resize")
       for (size_t i = 0; i < e.args.size(); ++i) scriptNumber(e, i);
-    if (e.verb == "resize" && (scriptNumber(e, 0) < 1 || scriptNumber(e, 1) < 1 || scriptNumber(e, 0) > 8192 ||
-                               scriptNumber(e, 1) > 8192))
+    if (e.verb == "resize" && (scriptNumber(e, 0) < 1 || scriptNumber(e, 1) < 1 ||
+                               scriptNumber(e, 0) > 8192 || scriptNumber(e, 1) > 8192))
       throw InputError(fmt::format("{}: resize: sizes must be 1 to 8192 pixels", e.where));
     events.push_back(std::move(e));
   }

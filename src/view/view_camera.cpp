@@ -34,7 +34,9 @@ glm::vec3 ViewCamera::forward() const {
   return {std::sin(yaw_) * std::cos(pitch_), std::sin(pitch_), -std::cos(yaw_) * std::cos(pitch_)};
 }
 
-void ViewCamera::setMode(CameraMode mode) { mode_ = mode; }
+void ViewCamera::setMode(CameraMode mode) {
+  mode_ = mode;
+}
 
 void ViewCamera::update(const CameraInput& in, float seconds) {
   if (!in.any()) return;

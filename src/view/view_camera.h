@@ -12,10 +12,12 @@ namespace lll::view {
 // One frame's input, gathered from GLFW or from a replay script.
 struct CameraInput {
   bool forward = false, back = false, left = false, right = false, up = false, down = false;
-  bool fast = false;            // shift: 4x the speed
-  glm::vec2 look{0.0f};         // mouse movement in pixels while the right button is held
-  float wheel = 0.0f;           // scroll steps: fly speed (fly) or distance to the target (orbit)
-  bool any() const { return forward || back || left || right || up || down || look != glm::vec2(0.0f) || wheel != 0.0f; }
+  bool fast = false;     // shift: 4x the speed
+  glm::vec2 look{0.0f};  // mouse movement in pixels while the right button is held
+  float wheel = 0.0f;    // scroll steps: fly speed (fly) or distance to the target (orbit)
+  bool any() const {
+    return forward || back || left || right || up || down || look != glm::vec2(0.0f) || wheel != 0.0f;
+  }
 };
 
 enum class CameraMode { Fly, Orbit };
@@ -49,8 +51,8 @@ class ViewCamera {
   bool moved_ = false;  // camera() returns start_ untouched until the first input
   CameraMode mode_ = CameraMode::Fly;
   glm::vec3 eye_{0.0f};
-  float yaw_ = 0.0f;    // about +y; 0 looks down -z
-  float pitch_ = 0.0f;  // up from the horizon, within +-89 degrees
+  float yaw_ = 0.0f;       // about +y; 0 looks down -z
+  float pitch_ = 0.0f;     // up from the horizon, within +-89 degrees
   float distance_ = 1.0f;  // eye to target: the orbit's radius, the target the fly camera looks at
   float speed_ = 1.0f;     // fly speed, m/s
 };

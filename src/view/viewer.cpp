@@ -1,11 +1,11 @@
 #include "view/viewer.h"
 
 #include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
 #include <fmt/format.h>
 #include <imgui.h>
 #include <imgui_stdlib.h>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_vulkan.h>
 
 #include <algorithm>
 #include <chrono>
@@ -178,10 +178,10 @@ class Viewer {
   void drawPresetEditor();
 
   ViewJob job_;
-  SceneRequest request_;          // as edited
-  SceneRequest appliedRequest_;   // as loaded
-  RenderSettings settings_;       // as edited
-  RenderSettings applied_;        // as the renderer was made
+  SceneRequest request_;         // as edited
+  SceneRequest appliedRequest_;  // as loaded
+  RenderSettings settings_;      // as edited
+  RenderSettings applied_;       // as the renderer was made
   float scale_ = 1.0f;
   bool animate_ = false;
   float time_ = 0.0f;
@@ -226,7 +226,8 @@ Viewer::Viewer(const ViewJob& job) : job_(job), request_(job.scene), settings_(j
   if (job.screenshot) {
     const std::string ext = lowercaseExtension(*job.screenshot);
     if (ext != ".png" && ext != ".exr")
-      throw InputError(fmt::format("--screenshot {}: expected a name ending in .png or .exr", *job.screenshot));
+      throw InputError(
+          fmt::format("--screenshot {}: expected a name ending in .png or .exr", *job.screenshot));
     checkOutputPath("--screenshot", *job.screenshot);
   }
   findTechnique(settings_.technique);
@@ -283,9 +284,8 @@ int Viewer::run() {
     applyPendingChanges();
 
     const auto now = std::chrono::steady_clock::now();
-    const float seconds =
-        fixedSteps ? kAnimationFrameSeconds
-                   : std::min(std::chrono::duration<float>(now - last).count(), 0.1f);
+    const float seconds = fixedSteps ? kAnimationFrameSeconds
+                                     : std::min(std::chrono::duration<float>(now - last).count(), 0.1f);
     last = now;
     camera_->update(gatherInput(), seconds);
     renderer_->setCamera(camera_->camera());
@@ -321,9 +321,8 @@ int Viewer::run() {
     ImGui::NewFrame();
     if (showUi_) drawUi();
     ImGui::Render();
-    window_->present(renderer_->displayImage(), renderer_->displayLayout(), [](VkCommandBuffer cmd) {
-      ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
-    });
+    window_->present(renderer_->displayImage(), renderer_->displayLayout(),
+                     [](VkCommandBuffer cmd) { ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd); });
     ++frame_;
     if (lastFrame) break;
   }
@@ -490,7 +489,8 @@ CameraInput Viewer::gatherInput() {
     in.down |= down(GLFW_KEY_Q);
     in.fast |= down(GLFW_KEY_LEFT_SHIFT) || down(GLFW_KEY_RIGHT_SHIFT);
     // Dear ImGui 1.86 (Debian 12) indexes keys by the backend's codes: GLFW's.
-    if (ImGui::IsKeyPressed(GLFW_KEY_F12, false) || ImGui::IsKeyPressed(GLFW_KEY_P, false)) screenshotKey_ = true;
+    if (ImGui::IsKeyPressed(GLFW_KEY_F12, false) || ImGui::IsKeyPressed(GLFW_KEY_P, false))
+      screenshotKey_ = true;
     if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) showUi_ = !showUi_;
     if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) glfwSetWindowShouldClose(w, GLFW_TRUE);
   }
@@ -603,7 +603,8 @@ void Viewer::drawControls() {
     choice("tile", settings_.tileSize, {1, 2, 4, 8, 16});
     if (settings_.technique == "lll") {
       choice("fill", settings_.lllFill, {"compute", "shells", "ray"});
-      if (settings_.lllFill == "compute") committedUint("fill splits (0: auto)", settings_.lllFillSplits, 0, 64);
+      if (settings_.lllFill == "compute")
+        committedUint("fill splits (0: auto)", settings_.lllFillSplits, 0, 64);
       choice("slices", settings_.lllSlices, {1, 2, 4, 8, 16, 32});
       choice("link", settings_.lllLink, {"auto", "compact", "wide"});
       choice("shade", settings_.lllShade, {"compute", "fragment"});
@@ -691,7 +692,8 @@ void Viewer::drawControls() {
     }
   }
   if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
-    ImGui::DragFloat("exposure", &settings_.exposure, 0.01f, 1e-3f, 1e3f, "%.3g", ImGuiSliderFlags_Logarithmic);
+    ImGui::DragFloat("exposure", &settings_.exposure, 0.01f, 1e-3f, 1e3f, "%.3g",
+                     ImGuiSliderFlags_Logarithmic);
     ImGui::DragFloat("ambient", &settings_.ambient, 0.001f, 0.0f, 10.0f);
     float scale = scale_;
     ImGui::SliderFloat("resolution scale", &scale, 0.25f, 2.0f);
@@ -709,7 +711,8 @@ void Viewer::drawTimings() {
   std::vector<float> history(history_.begin(), history_.end());
   const float frameMs = history.empty() ? 0.0f : history.back();
   ImGui::Text("frame %.3f ms", frameMs);
-  ImGui::PlotLines("##frames", history.data(), int(history.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(-1, 60));
+  ImGui::PlotLines("##frames", history.data(), int(history.size()), 0, nullptr, 0.0f, FLT_MAX,
+                   ImVec2(-1, 60));
   if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg)) {
     for (const PassTime& p : lastFrame_.passes) {
       ImGui::TableNextRow();
@@ -796,8 +799,8 @@ void Viewer::drawPresetEditor() {
   changed |= curve("colour over life", p.color, [](glm::vec3& v) { ImGui::ColorEdit3("##k", &v.x); });
   ImGui::DragFloat("colour variation", &p.colorVariation, 0.01f, 0.0f, 1.0f);
   done();
-  changed |= curve("opacity over life", p.opacity,
-                   [](float& v) { ImGui::DragFloat("##k", &v, 0.01f, 0.0f, 1.0f); });
+  changed |=
+      curve("opacity over life", p.opacity, [](float& v) { ImGui::DragFloat("##k", &v, 0.01f, 0.0f, 1.0f); });
   changed |= curve("emission over life", p.emission,
                    [](float& v) { ImGui::DragFloat("##k", &v, 0.01f, 0.0f, 1000.0f); });
   ImGui::DragFloat("wrap", &p.wrap, 0.01f, 0.0f, 1.0f);

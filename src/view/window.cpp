@@ -50,7 +50,8 @@ Window::Window(const std::string& title, uint32_t width, uint32_t height) {
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
   window_ = glfwCreateWindow(int(width), int(height), title.c_str(), nullptr, nullptr);
   if (window_ == nullptr)
-    throw InputError(fmt::format("lll view: cannot create a {} x {} window ({})", width, height, lastGlfwError()));
+    throw InputError(
+        fmt::format("lll view: cannot create a {} x {} window ({})", width, height, lastGlfwError()));
 }
 
 Window::~Window() {
@@ -67,7 +68,9 @@ Window::~Window() {
   if (window_) glfwDestroyWindow(window_);
 }
 
-bool Window::shouldClose() const { return glfwWindowShouldClose(window_); }
+bool Window::shouldClose() const {
+  return glfwWindowShouldClose(window_);
+}
 
 void Window::framebufferSize(uint32_t& width, uint32_t& height) const {
   int w = 0, h = 0;
@@ -76,7 +79,9 @@ void Window::framebufferSize(uint32_t& width, uint32_t& height) const {
   height = uint32_t(std::max(h, 0));
 }
 
-void Window::resize(uint32_t width, uint32_t height) { glfwSetWindowSize(window_, int(width), int(height)); }
+void Window::resize(uint32_t width, uint32_t height) {
+  glfwSetWindowSize(window_, int(width), int(height));
+}
 
 void Window::attach(Context& context) {
   context_ = &context;
@@ -175,10 +180,10 @@ void Window::createSwapchain() {
   info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.preTransform = caps.currentTransform;
-  info.compositeAlpha = (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
-                            ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
-                            : VkCompositeAlphaFlagBitsKHR(caps.supportedCompositeAlpha &
-                                                          -caps.supportedCompositeAlpha);
+  info.compositeAlpha =
+      (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
+          ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
+          : VkCompositeAlphaFlagBitsKHR(caps.supportedCompositeAlpha & -caps.supportedCompositeAlpha);
   info.presentMode = VK_PRESENT_MODE_FIFO_KHR;  // always supported; the frame itself is the bottleneck
   info.clipped = VK_TRUE;
   VK_CHECK(vkCreateSwapchainKHR(device, &info, nullptr, &swapchain_));
@@ -280,7 +285,8 @@ bool Window::present(const Image& source, VkImageLayout sourceLayout,
   blit.dstOffsets[1] = {int32_t(extent_.width), int32_t(extent_.height), 1};
   const bool sameSize = source.width() == extent_.width && source.height() == extent_.height;
   vkCmdBlitImage(cmd_, source.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, images_[index],
-                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, sameSize ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
+                 sameSize ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
   // Back to the layout the renderer's next frame finds it in (its tonemap writes it as storage).
   VkImageMemoryBarrier2 back = barriers[0];
   back.srcStageMask = VK_PIPELINE_STAGE_2_BLIT_BIT;
