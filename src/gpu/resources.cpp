@@ -220,6 +220,23 @@ std::vector<uint8_t> readBack(Context& context, const Buffer& buffer, VkDeviceSi
   return out;
 }
 
+void uploadImage(Context& context, const Image& image, const void* texels, VkDeviceSize bytes,
+                 const std::function<void(VkCommandBuffer)>& after) {
+  Buffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+  staging.upload(texels, bytes);
+  context.submitAndWait([&](VkCommandBuffer cmd) {
+    image.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {image.width(), image.height(), 1};
+    vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &copy);
+    if (after) after(cmd);
+  });
+}
+
 VkSampler createNearestClampSampler(Context& context) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = info.minFilter = VK_FILTER_NEAREST;

@@ -5,6 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -96,6 +97,11 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccess
 // writing it (a barrier from every command's writes, then one to the host: a fence alone does not
 // make another submission's writes visible to the copy).
 std::vector<uint8_t> readBack(Context& context, const Buffer& buffer, VkDeviceSize bytes);
+// Uploads `bytes` of tightly packed texels to mip level 0 of `image` (its contents before are
+// dropped) through a staging buffer, leaving it in TRANSFER_DST_OPTIMAL, then records `after` in the
+// same submission (mip levels, the move to shader reads) and waits for it.
+void uploadImage(Context& context, const Image& image, const void* texels, VkDeviceSize bytes,
+                 const std::function<void(VkCommandBuffer)>& after);
 // A nearest-filtering, clamp-to-edge sampler (for texel-exact reads of depth and G-buffers); the
 // caller destroys it.
 VkSampler createNearestClampSampler(Context& context);

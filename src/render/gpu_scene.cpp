@@ -60,17 +60,7 @@ Image makeTexture(Context& context, const Texture& texture) {
   Image image(context, texture.width, texture.height, format,
               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
               texture.name, levels);
-  Buffer staging(context, texture.rgba.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
-  staging.upload(texture.rgba.data(), texture.rgba.size());
-  context.submitAndWait([&](VkCommandBuffer cmd) {
-    image.transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                     VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    VkBufferImageCopy copy{};
-    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.imageExtent = {texture.width, texture.height, 1};
-    vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                           &copy);
+  uploadImage(context, image, texture.rgba.data(), texture.rgba.size(), [&](VkCommandBuffer cmd) {
     int32_t w = int32_t(texture.width), h = int32_t(texture.height);
     for (uint32_t level = 1; level < levels; ++level) {
       VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
