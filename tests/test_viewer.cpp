@@ -2,6 +2,8 @@
 // X server of its own (Xvfb), driven through --frames, --screenshot and --script, its images
 // compared with `lll render`'s.
 #include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <sys/un.h>
 
 #include <cmath>
 #include <glm/gtc/constants.hpp>
@@ -138,28 +140,54 @@ TEST(InputScript, NamesTheFileAndLineOfABadEvent) {
 // An X server of this test's own: Xvfb picks a free display and writes its number to a pipe.
 class ViewerCli : public test::CliTest {
  protected:
+  // Xvfb's -displayfd is not safe to run twice at once (ctest runs these tests in parallel): a
+  // second server probing a number replaces the first one's socket before finding the number
+  // locked, and the first server's clients then fail to connect. Each test process picks numbers
+  // at random instead, skips those in use, and waits until its server accepts connections.
   static void SetUpTestSuite() {
-    int fds[2];
-    ASSERT_EQ(pipe(fds), 0);
-    xvfb_ = fork();
-    ASSERT_GE(xvfb_, 0);
-    if (xvfb_ == 0) {
-      close(fds[0]);
-      const int null = open("/dev/null", O_WRONLY);
-      dup2(null, STDOUT_FILENO);
-      dup2(null, STDERR_FILENO);
-      const std::string fd = std::to_string(fds[1]);
-      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1024x768x24", "-nolisten", "tcp",
-             static_cast<char*>(nullptr));
-      _exit(127);
+    std::mt19937 rng(std::random_device{}() ^ uint32_t(getpid()));
+    for (int attempt = 0; attempt < 20 && display_.empty(); ++attempt) {
+      const std::string number = std::to_string(200 + rng() % 5000);
+      const std::string socketPath = "/tmp/.X11-unix/X" + number;
+      if (fs::exists(socketPath) || fs::exists("/tmp/.X" + number + "-lock")) continue;
+      const std::string display = ":" + number;
+      const pid_t pid = fork();
+      ASSERT_GE(pid, 0);
+      if (pid == 0) {
+        const int null = open("/dev/null", O_WRONLY);
+        dup2(null, STDOUT_FILENO);
+        dup2(null, STDERR_FILENO);
+        execlp("Xvfb", "Xvfb", display.c_str(), "-screen", "0", "1024x768x24", "-nolisten", "tcp",
+               static_cast<char*>(nullptr));
+        _exit(127);
+      }
+      for (int wait = 0; wait < 500; ++wait) {             // 10 s
+        if (waitpid(pid, nullptr, WNOHANG) == pid) break;  // it exited: the number was taken, or no Xvfb
+        if (acceptsConnections(socketPath)) {
+          xvfb_ = pid;
+          display_ = display;
+          break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
+      if (display_.empty()) {
+        kill(pid, SIGKILL);
+        waitpid(pid, nullptr, 0);
+      }
     }
-    close(fds[1]);
-    char number[16] = {};
-    const ssize_t n = read(fds[0], number, sizeof(number) - 1);
-    close(fds[0]);
-    ASSERT_GT(n, 0) << "Xvfb did not start: the viewer's tests need it (Debian: apt-get install xvfb; "
-                       "scripts/setup-debian.sh installs it)";
-    display_ = ":" + std::string(number, size_t(n - (number[n - 1] == '\n' ? 1 : 0)));
+    ASSERT_FALSE(display_.empty())
+        << "Xvfb did not start: the viewer's tests need it (Debian: apt-get install "
+           "xvfb; scripts/setup-debian.sh installs it)";
+  }
+  static bool acceptsConnections(const std::string& socketPath) {
+    const int fd = socket(AF_UNIX, SOCK_STREAM, 0);
+    if (fd < 0) return false;
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    std::strncpy(address.sun_path, socketPath.c_str(), sizeof(address.sun_path) - 1);
+    const bool ok = connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof(address)) == 0;
+    close(fd);
+    return ok;
   }
   static void TearDownTestSuite() {
     if (xvfb_ > 0) {
