@@ -50,8 +50,8 @@ TEST(LightAnimation, LightsOrbitAndBobFromWhereTheyWereScattered) {
     EXPECT_LE(std::abs(m.angularSpeed), 1.0f * 1.001f);
     for (const float t : {0.7f, 3.1f, 250.0f}) {
       const glm::vec3 p = positionAt(m, t);
-      EXPECT_NEAR(horizontalDistance(p, m.center), m.radius, 1e-4f * diagonal) << "t " << t;
-      EXPECT_LE(std::abs(p.y - m.center.y), m.bobAmplitude * 1.0001f + 1e-5f) << "t " << t;
+      EXPECT_NEAR(horizontalDistance(p, orbitCenter(m)), m.radius, 1e-4f * diagonal) << "t " << t;
+      EXPECT_LE(std::abs(p.y - orbitCenter(m).y), m.bobAmplitude * 1.0001f + 1e-5f) << "t " << t;
       const float period = 6.2831853f / std::abs(m.angularSpeed);
       const glm::vec3 later = positionAt(m, t + period);
       EXPECT_NEAR(horizontalDistance(p, later), 0.0f, 1e-3f * m.radius) << "one orbit later, t " << t;

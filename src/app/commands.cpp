@@ -38,12 +38,6 @@ int validationExitCode(const Context& context) {
   return 1;
 }
 
-std::string lowercaseExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
 // The image writers would reject a bad output path only after the render; checking the extension,
 // the folder and that a file can be created there first makes a typo fail at once instead of after
 // minutes of work.

@@ -130,6 +130,10 @@ const Image& particleSceneDepth(const FrameTargets& targets, ParticleLayer layer
   return layer == ParticleLayer::InFrontOfGlass ? targets.glassDepth : targets.depth;
 }
 
+const Image& particleGlassDepth(const FrameTargets& targets, ParticleLayer layer) {
+  return layer == ParticleLayer::BehindGlass ? targets.glassDepth : particleSceneDepth(targets, layer);
+}
+
 const char* particlePassSuffix(ParticleLayer layer) {
   return layer == ParticleLayer::BehindGlass ? "-behind-glass" : "";
 }
@@ -154,8 +158,7 @@ void ParticleSystem::drawRaster(FrameContext& frame, const DrawPipelines& pipeli
                                 const LightingInterface& lighting, ParticleLayer layer) {
   const FrameTargets& t = frame.targets;
   const Image& depth = particleSceneDepth(t, layer);
-  // The glass depth, read before the glass; a stand-in (never read) otherwise.
-  const Image& glass = layer == ParticleLayer::BehindGlass ? t.glassDepth : depth;
+  const Image& glass = particleGlassDepth(t, layer);
   constexpr VkPipelineStageFlags2 kShaders =
       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
   std::vector<ResourceUse> reads{uses(t.hdr, Use::ColorBlend),

@@ -19,12 +19,16 @@ glm::vec3 parseEmitterPosition(const std::string& text) {
   return p;
 }
 
+ParticlePreset settingsParticlePreset(const RenderSettings& settings) {
+  return settings.particlePresetJson.empty()
+             ? loadParticlePreset(settings.particles)
+             : parseParticlePreset(settings.particlePresetJson, settings.particles);
+}
+
 std::optional<ParticleSystemOptions> particleOptions(const Scene& scene, const RenderSettings& settings) {
   if (settings.particles.empty()) return std::nullopt;
   ParticleSystemOptions options;
-  options.preset = settings.particlePresetJson.empty()
-                       ? loadParticlePreset(settings.particles)
-                       : parseParticlePreset(settings.particlePresetJson, settings.particles);
+  options.preset = settingsParticlePreset(settings);
   options.lighting = parseParticleLighting(settings.particleLighting);
   options.render = parseParticleRender(settings.particleRender);
   options.resolutionScale = parseParticleResolution(settings.particleResolution);

@@ -15,6 +15,10 @@ namespace lll {
 // starting Vulkan so bad input fails at once.
 std::optional<ParticleSystemOptions> particleOptions(const Scene& scene, const RenderSettings& settings);
 
+// The preset the settings name: their particlePresetJson when set (the viewer's editor), else the
+// built-in or file `particles` names. Throws InputError as loadParticlePreset does.
+ParticlePreset settingsParticlePreset(const RenderSettings& settings);
+
 // "x,y,z" (three finite numbers); throws InputError naming --particle-emitter.
 glm::vec3 parseEmitterPosition(const std::string& text);
 

@@ -52,8 +52,11 @@ enum class ParticleLayer {
 };
 // constant_id of kBehindGlass in particles/draw_fragment.glsl and lit/particles_tiles.comp.glsl.
 inline constexpr uint32_t kBehindGlassConstant = 50;
-// The depth image a layer tests and fades against, and the suffix of its pass names.
+// The depth image a layer tests and fades against, the one it clips against (binding 25: the glass
+// depth before the glass; the scene depth as a stand-in the shaders never read otherwise), and the
+// suffix of its pass names.
 const Image& particleSceneDepth(const FrameTargets& targets, ParticleLayer layer);
+const Image& particleGlassDepth(const FrameTargets& targets, ParticleLayer layer);
 const char* particlePassSuffix(ParticleLayer layer);
 
 // How the particles reach the frame (--particle-render).

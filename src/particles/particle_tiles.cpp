@@ -169,7 +169,7 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
   const FrameTargets& targets = frame.targets;
   const Image& depth = particleSceneDepth(targets, layer);
   const bool behind = layer == ParticleLayer::BehindGlass;
-  const Image& glass = behind ? targets.glassDepth : depth;  // a stand-in, never read, after the glass
+  const Image& glass = particleGlassDepth(targets, layer);
   std::vector<ResourceUse> used{uses(depth, Use::Sampled, kCompute),
                                 uses(counters_, Use::StorageRead, kCompute),
                                 uses(uniforms_, Use::StorageRead, kCompute),

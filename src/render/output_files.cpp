@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <random>
@@ -36,6 +38,12 @@ fs::path createTemporaryBeside(const fs::path& path, std::string& error) {
 }
 
 }  // namespace
+
+std::string lowercaseExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
 
 void checkOutputPath(const std::string& option, const fs::path& path) {
   if (path.empty()) throw InputError(fmt::format("{}: the path is empty", option));

@@ -13,6 +13,9 @@ namespace lll {
 // folder that exists and takes a new file (checked by creating and removing one).
 void checkOutputPath(const std::string& option, const std::filesystem::path& path);
 
+// The file name's extension in lower case, with its dot (".png"), or "" when it has none.
+std::string lowercaseExtension(const std::string& path);
+
 // Writes `path` through `write`, which is given a temporary path in the same folder; the
 // temporary is renamed over `path` when `write` returns, and removed when it throws.
 void writeAtomically(const std::filesystem::path& path,

@@ -306,16 +306,17 @@ void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advancePartic
     technique_->shadeOpaque(frame);
   else
     lit_->shadeOpaque(frame);
-  if (particles_ && targets_.glassDepth) {
-    // Particles behind the nearest glass, then the glass over them, then the particles in front.
+  // With glass (glassDepth exists only with particles): the particles behind the nearest glass,
+  // then the glass over them, then the particles in front.
+  const bool aboutGlass = bool(targets_.glassDepth);
+  if (aboutGlass) {
     glassDepth(frame);
     particles_->draw(frame, technique_->lighting(), ParticleLayer::BehindGlass);
-    lit_->shadeGlass(frame);
-    particles_->draw(frame, technique_->lighting(), ParticleLayer::InFrontOfGlass);
-  } else {
-    lit_->shadeGlass(frame);
-    if (particles_) particles_->draw(frame, technique_->lighting());
   }
+  lit_->shadeGlass(frame);
+  if (particles_)
+    particles_->draw(frame, technique_->lighting(),
+                     aboutGlass ? ParticleLayer::InFrontOfGlass : ParticleLayer::All);
   tonemap(frame);
   if (capture) captureImages(graph);
 }

@@ -76,9 +76,8 @@ class Renderer {
 
   const Camera& camera() const { return camera_; }
   // Draws the next frames from `camera` (an interactive camera); the far plane still comes from
-  // the scene's bounds. Throws InputError when the projection would not be finite.
+  // the scene's bounds. renderFrame throws InputError when the projection would not be finite.
   void setCamera(const Camera& camera) { camera_ = camera; }
-  const RenderSettings& settings() const { return settings_; }
   // Exposure and ambient for the next frames: the only settings that need no new renderer.
   void setExposure(float exposure, float ambient) {
     settings_.exposure = exposure;

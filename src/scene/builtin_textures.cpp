@@ -4,6 +4,7 @@
 #include <functional>
 #include <glm/gtc/constants.hpp>
 
+#include "scene/hash.h"
 #include "scene/srgb.h"
 
 namespace lll::builtin {
@@ -13,13 +14,7 @@ namespace {
 constexpr uint32_t kSize = 256;
 
 uint32_t hash(uint32_t x, uint32_t y, uint32_t seed) {
-  uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ seed * 0xcb1ab31fu;
-  h ^= h >> 16;
-  h *= 0x7feb352du;
-  h ^= h >> 15;
-  h *= 0x846ca68bu;
-  h ^= h >> 16;
-  return h;
+  return lowbias32(x * 0x8da6b343u ^ y * 0xd8163841u ^ seed * 0xcb1ab31fu);
 }
 
 float hash01(uint32_t x, uint32_t y, uint32_t seed) {

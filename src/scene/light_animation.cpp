@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scene/errors.h"
+#include "scene/hash.h"
 
 namespace lll {
 
@@ -15,12 +16,7 @@ constexpr float kTwoPi = 6.28318530718f;
 // A value in [0, 1) from (seed, light, stream): a stateless integer hash (the lowbias32
 // finaliser), so that a light's motion does not depend on how many lights came before it.
 float hash01(uint32_t seed, uint32_t light, uint32_t stream) {
-  uint32_t h = seed * 0x9e3779b9u ^ light * 0x85ebca6bu ^ stream * 0xc2b2ae35u;
-  h ^= h >> 16;
-  h *= 0x7feb352du;
-  h ^= h >> 15;
-  h *= 0x846ca68bu;
-  h ^= h >> 16;
+  const uint32_t h = lowbias32(seed * 0x9e3779b9u ^ light * 0x85ebca6bu ^ stream * 0xc2b2ae35u);
   return float(h >> 8) * (1.0f / 16777216.0f);
 }
 
@@ -53,10 +49,13 @@ LightAnimation makeLightAnimation(const std::vector<Light>& lights, uint32_t fir
     m.bobFrequency = uniform(5, 0.1f, 0.4f);
     m.bobPhase = uniform(6, 0.0f, kTwoPi);
     m.origin = lights[first + i].position;
-    m.center = m.origin - offsetAt(m, 0.0f);
     animation.motions.push_back(m);
   }
   return animation;
+}
+
+glm::vec3 orbitCenter(const LightMotion& m) {
+  return m.origin - offsetAt(m, 0.0f);
 }
 
 glm::vec3 positionAt(const LightMotion& m, float seconds) {

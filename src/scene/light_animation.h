@@ -24,6 +24,8 @@ LightAnimation makeLightAnimation(const std::vector<Light>& lights, uint32_t fir
                                   const Bounds& bounds, uint32_t seed);
 
 glm::vec3 positionAt(const LightMotion& motion, float seconds);
+// The centre of the light's orbit (at the height its bobbing swings about).
+glm::vec3 orbitCenter(const LightMotion& motion);
 
 // Moves the animated lights to where they are at `seconds`; throws InputError for a time that is
 // negative, not finite or past kMaxAnimationSeconds.

@@ -107,11 +107,10 @@ struct DirectionalLight {
 };
 
 // Moving lights (scene/light_animation.h). One light's motion, seconds t:
-// position(t) = center + (r cos(w t + a), h sin(2 pi f t + b), r sin(w t + a)), computed as
+// position(t) = centre + (r cos(w t + a), h sin(2 pi f t + b), r sin(w t + a)), computed as
 // origin + (offset(t) - offset(0)) so that position(0) is exactly `origin`.
 struct LightMotion {
-  glm::vec3 origin{0.0f};     // where the light is at time 0
-  glm::vec3 center{0.0f};     // of its orbit
+  glm::vec3 origin{0.0f};     // where the light is at time 0 (orbitCenter() gives the centre)
   float radius = 0.0f;        // of the orbit, metres
   float angularSpeed = 0.0f;  // radians per second, either sign
   float phase = 0.0f;         // radians
