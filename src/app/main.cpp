@@ -152,6 +152,10 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "--gi: every virtual point light's range in metres instead of --vpl-cutoff's (a range that "
                  "does not shrink as --vpl-count grows)")
       ->check(finiteIn(0.0, 1e6));
+  cmd.add_option("--vpl-retrace", job.scene.gi.retrace,
+                 "--gi with moving lights (--animate): photons of the moving lights traced again each frame, "
+                 "so that their indirect light follows them (0: it stays where it was first traced)")
+      ->check(CLI::Range(0u, lll::gi::kMaxPhotons));
   cmd.add_option("--debug-view", s.debugView,
                  "none | heatmap | bounds | tiles (lll; heatmap and tiles: tiled, clustered)")
       ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));

@@ -41,6 +41,10 @@ inline constexpr uint32_t kMaxPhotons = 100000000;
 // truncation it costs is measured against the path-traced reference (bench/README.md).
 inline constexpr float kDefaultVplCutoff = 1e-3f;
 
+// Photons of the moving lights traced again per frame by default (--vpl-retrace,
+// gi/moving_vpls.h).
+inline constexpr uint32_t kDefaultRetracePhotons = 8192;
+
 struct VplOptions {
   uint32_t photons = kDefaultPhotons;
   uint32_t bounces = kDefaultBounces;    // deposits per photon at most (1: one-bounce indirect light)

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "gi/moving_vpls.h"
 #include "gpu/context.h"
 #include "particles/particle_setup.h"
 #include "scene/errors.h"
@@ -248,8 +249,10 @@ void Renderer::updateLights() {
 }
 
 void Renderer::moveLightsTo(Scene& scene, float seconds) {
-  if (scene.lightAnimation.empty()) return;
-  placeLightsAt(scene.lights, scene.lightAnimation, seconds);
+  if (scene.lightAnimation.empty() && !scene.movingIndirect) return;
+  if (!scene.lightAnimation.empty()) placeLightsAt(scene.lights, scene.lightAnimation, seconds);
+  if (scene.movingIndirect)
+    scene.movingIndirect.vpls->moveTo(seconds, scene.lights, scene.movingIndirect.first);
   updateLights();
 }
 
@@ -269,6 +272,15 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
   s.insert(s.end(), shadows.begin(), shadows.end());
   const auto lightShadows = lightShadows_->stats();
   s.insert(s.end(), lightShadows.begin(), lightShadows.end());
+  if (scene_.movingIndirect) {  // the CPU's share of a frame with moving lights and --gi
+    const gi::MovingVplStats& g = scene_.movingIndirect.vpls->stats();
+    s.insert(s.end(), {{"vpl-moving-photons", double(g.movingPhotons)},
+                       {"vpl-retraced-photons", double(g.retraced)},
+                       {"vpl-retrace-ms", g.retraceMs},
+                       {"vpl-slots", double(g.slots)},
+                       {"vpl-lit-slots", double(g.litSlots)},
+                       {"vpl-dropped-cells", double(g.droppedCells)}});
+  }
   s.push_back({"instances", double(scene_.instances.size())});
   s.push_back({"visible_instances", double(gpuScene_->visibleInstances())});
   // 1 when opaque surfaces came from the visibility buffer (its ids are lighting memory too).

@@ -65,8 +65,9 @@ class Renderer {
   // The scene's lights moved (their positions changed between frames, scene/light_animation.h):
   // writes the light array again; every technique rebuilds its light data each frame anyway.
   void updateLights();
-  // Places `scene`'s moving lights (the scene this renderer draws) at `seconds` and updates the
-  // light array; nothing when none move.
+  // Places `scene`'s moving lights (the scene this renderer draws) at `seconds`, lets its VPLs
+  // follow them (a share of their photons traced again, on the CPU: gi/moving_vpls.h) and updates
+  // the light array; nothing when none move.
   void moveLightsTo(Scene& scene, float seconds);
   // Advances the particle simulation `steps` fixed steps without drawing (no-op without particles):
   // `lll render --frames N` simulates N - 1 steps this way, then draws the N-th frame.

@@ -5,6 +5,7 @@
 // layer uploads it; techniques only read it.
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -126,6 +127,25 @@ struct LightAnimation {
   bool empty() const { return motions.empty(); }
 };
 
+namespace gi {
+class MovingVpls;
+}
+
+// --gi with moving lights: the virtual point lights that follow them (gi/moving_vpls.h), a block
+// of the scene's lights from `first`. A copy of the scene copies it (deeply: a scene's copy moves
+// its lights on its own).
+struct MovingIndirectLight {
+  std::unique_ptr<gi::MovingVpls> vpls;
+  uint32_t first = 0;
+  MovingIndirectLight();
+  MovingIndirectLight(const MovingIndirectLight& other);
+  MovingIndirectLight(MovingIndirectLight&& other) noexcept;
+  MovingIndirectLight& operator=(const MovingIndirectLight& other);
+  MovingIndirectLight& operator=(MovingIndirectLight&& other) noexcept;
+  ~MovingIndirectLight();
+  explicit operator bool() const { return vpls != nullptr; }
+};
+
 struct Camera {
   std::string name;
   glm::vec3 eye{0.0f};
@@ -162,7 +182,8 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Texture> textures;
   std::vector<Light> lights;
-  LightAnimation lightAnimation;  // which lights move, and how (--time, --animate); empty: none
+  LightAnimation lightAnimation;       // which lights move, and how (--time, --animate); empty: none
+  MovingIndirectLight movingIndirect;  // their VPLs, when --gi follows them
   std::vector<DirectionalLight> directionalLights;  // at most gpu::kMaxDirectionalLights
   std::vector<Camera> cameras;                      // the first one is the default
   // Where a particle emitter sits, when the scene has one (the default scene's smoke source).

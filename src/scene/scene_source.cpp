@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "gi/moving_vpls.h"
 #include "scene/builtin_scenes.h"
 #include "scene/errors.h"
 #include "scene/gltf_loader.h"
@@ -31,13 +32,17 @@ void validateGi(const GiRequest& gi) {
         fmt::format("--vpl-count {}: expected 0 (no merging) or 6 to {}", gi.vplCount, gpu::kMaxLights));
   if (!(gi.vplCutoff >= 1e-9f && gi.vplCutoff <= 1.0f))
     throw InputError(fmt::format("--vpl-cutoff {}: expected a fraction in [1e-9, 1]", gi.vplCutoff));
+  if (gi.retrace > gi::kMaxPhotons)
+    throw InputError(
+        fmt::format("--vpl-retrace {}: expected 0 to {} photons a frame", gi.retrace, gi::kMaxPhotons));
   if (!(gi.vplRange >= 0.0f && gi.vplRange <= 1e6f))
     throw InputError(
         fmt::format("--vpl-range {}: expected metres in [0, 1e6] (0: from --vpl-cutoff)", gi.vplRange));
 }
 
 // Traces the photons from the scene's lights and adds the VPLs they leave (vpl-only: instead of
-// the lights).
+// the lights). With moving lights the VPLs follow them (the scene's movingIndirect), unless
+// --vpl-retrace is 0.
 void addIndirectLight(Scene& scene, const SceneRequest& request, std::vector<std::string>* warnings,
                       IndirectLightReport* report) {
   gi::VplOptions options;
@@ -49,14 +54,29 @@ void addIndirectLight(Scene& scene, const SceneRequest& request, std::vector<std
   options.seed = request.seed;
   if (report) options.progress = report->progress;
   gi::PhotonStats stats;
-  std::vector<Light> vpls = gi::makeVirtualPointLights(scene, options, &stats);
+  const bool vplOnly = request.gi.mode == "vpl-only";
+  const uint64_t others = vplOnly ? 0 : scene.lights.size();
+  std::vector<Light> vpls;
+  if (request.movingLights && !scene.lightAnimation.empty() && request.gi.retrace > 0) {
+    auto moving = std::make_unique<gi::MovingVpls>(
+        scene, options, request.gi.retrace,
+        uint32_t(gpu::kMaxLights - std::min<uint64_t>(others, gpu::kMaxLights)), 0.0f, &stats);
+    vpls = moving->vpls();
+    scene.movingIndirect.vpls = std::move(moving);
+    scene.movingIndirect.first = uint32_t(others);
+  } else {
+    vpls = gi::makeVirtualPointLights(scene, options, &stats);
+  }
   if (report) report->stats = stats;
-  if (vpls.empty() && warnings)
+  if (stats.vpls == 0 && warnings)
     warnings->push_back(
         fmt::format("--gi {}: no photon landed on a surface that reflects light ({} lights, {} photons): "
                     "no virtual point lights",
                     request.gi.mode, scene.lights.size(), request.gi.photons));
-  if (request.gi.mode == "vpl-only") scene.lights.clear();
+  if (vplOnly) {
+    scene.lights.clear();
+    scene.lightAnimation = {};  // the lights that moved are gone (their VPLs may still follow them)
+  }
   if (scene.lights.size() + vpls.size() > gpu::kMaxLights)
     throw InputError(
         fmt::format("--gi {}: {} virtual point lights and {} lights exceed the {} supported; lower "

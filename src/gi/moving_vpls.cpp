@@ -1,0 +1,328 @@
+#include "gi/moving_vpls.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <functional>
+
+#include "gi/photon_walk.h"
+#include "gi/random.h"
+#include "gi/ray_scene.h"
+#include "gi/sampling.h"
+#include "scene/errors.h"
+#include "scene/light_animation.h"
+
+namespace lll {
+
+MovingIndirectLight::MovingIndirectLight() = default;
+MovingIndirectLight::MovingIndirectLight(const MovingIndirectLight& other)
+    : vpls(other.vpls ? std::make_unique<gi::MovingVpls>(*other.vpls) : nullptr), first(other.first) {}
+MovingIndirectLight::MovingIndirectLight(MovingIndirectLight&& other) noexcept = default;
+MovingIndirectLight& MovingIndirectLight::operator=(const MovingIndirectLight& other) {
+  if (this != &other) {
+    vpls = other.vpls ? std::make_unique<gi::MovingVpls>(*other.vpls) : nullptr;
+    first = other.first;
+  }
+  return *this;
+}
+MovingIndirectLight& MovingIndirectLight::operator=(MovingIndirectLight&& other) noexcept = default;
+MovingIndirectLight::~MovingIndirectLight() = default;
+
+namespace gi {
+namespace {
+
+// Photons per task of the parallel trace, and per batch of the first trace (whose deposits are held
+// until merged).
+constexpr uint32_t kChunk = 256;
+constexpr uint32_t kBatch = 1u << 16;
+
+double millisecondsSince(std::chrono::steady_clock::time_point begin) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+}
+
+// Traces photons[0 .. count) (indices of the whole trace, each from its own stream) into `slots`
+// (options.bounces per photon) and `counts`; returns the flux they left their lights with, summed in
+// a fixed order.
+glm::vec3 traceInto(const RayScene& rays, const walk::Emitters& emitters, const VplOptions& options,
+                    const uint32_t* photons, size_t count, PhotonDeposit* slots, uint8_t* counts,
+                    const std::function<void(double)>& progress) {
+  const uint32_t chunks = uint32_t((count + kChunk - 1) / kChunk);
+  std::vector<glm::vec3> emitted(chunks, glm::vec3(0.0f));
+  parallelFor(
+      chunks, options.threads,
+      [&](uint32_t c) {
+        std::vector<PhotonDeposit> out;
+        const size_t end = std::min(count, size_t(c + 1) * kChunk);
+        for (size_t i = size_t(c) * kChunk; i < end; ++i) {
+          out.clear();
+          Random random(options.seed, photons[i]);
+          emitted[c] += walk::tracePhoton(rays, emitters, options.photons, options.bounces, random, out);
+          counts[i] = uint8_t(out.size());
+          std::copy(out.begin(), out.end(), slots + i * options.bounces);
+        }
+      },
+      progress);
+  glm::vec3 total(0.0f);
+  for (const glm::vec3& e : emitted) total += e;
+  return total;
+}
+
+bool sameDeposits(const PhotonDeposit* a, uint8_t countA, const PhotonDeposit* b, uint8_t countB) {
+  return countA == countB && std::memcmp(a, b, sizeof(PhotonDeposit) * countA) == 0;
+}
+
+}  // namespace
+
+MovingVpls::MovingVpls(const MovingVpls&) = default;
+MovingVpls::~MovingVpls() = default;
+
+MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t retracePerFrame,
+                       uint32_t maxSlots, float cellEdge, PhotonStats* stats)
+    : rays_(std::make_shared<const RayScene>(scene)),
+      lights_(scene.lights),
+      suns_(scene.directionalLights),
+      animation_(scene.lightAnimation),
+      bounds_(scene.worldBounds()),
+      options_(options),
+      retracePerFrame_(retracePerFrame) {
+  const auto begin = std::chrono::steady_clock::now();
+  options_.progress = nullptr;  // the caller's progress bar is for this first trace only
+  if (!bounds_.valid()) bounds_.expand(glm::vec3(0.0f));
+  const float diagonal = std::max(glm::length(bounds_.extent()), 1e-6f);
+  const walk::Emitters emitters = walk::chooseEmitters(lights_, suns_, bounds_);
+  const uint32_t photons = emitters.sources.empty() ? 0 : options.photons;
+
+  // Which photons leave a moving light: their stream's first draw picks it, wherever it is.
+  const size_t firstMoving = animation_.first, endMoving = firstMoving + animation_.motions.size();
+  for (uint32_t p = 0; p < photons; ++p) {
+    Random random(options.seed, p);
+    const Light* light = emitters.sources[walk::pickEmitter(emitters, random)].light;
+    const size_t index = light ? size_t(light - lights_.data()) : ~size_t(0);
+    if (index >= firstMoving && index < endMoving) movingPhotons_.push_back(p);
+  }
+  const size_t slotsNeeded = movingPhotons_.size() * options.bounces;
+  if (slotsNeeded > (size_t(1) << 26))
+    throw InputError(
+        fmt::format("--gi with moving lights: {} photons of the moving lights x {} bounces would hold {} "
+                    "deposits to trace "
+                    "again (at most {}); lower --photons or --bounces",
+                    movingPhotons_.size(), options.bounces, slotsNeeded, size_t(1) << 26));
+  movingDeposits_.resize(slotsNeeded);
+  movingCounts_.resize(movingPhotons_.size(), 0);
+
+  // The first trace, every photon, in batches; the moving ones' deposits kept per photon.
+  std::vector<PhotonDeposit> all, slots(size_t(kBatch) * options.bounces);
+  std::vector<uint8_t> counts(kBatch);
+  std::vector<uint32_t> batch(kBatch);
+  glm::vec3 emitted(0.0f);
+  size_t nextMoving = 0;
+  for (uint32_t start = 0; start < photons; start += kBatch) {
+    const uint32_t count = std::min(kBatch, photons - start);
+    for (uint32_t i = 0; i < count; ++i) batch[i] = start + i;
+    std::function<void(double)> progress;
+    if (options.progress)
+      progress = [&](double f) { options.progress((double(start) + f * count) / double(photons)); };
+    emitted +=
+        traceInto(*rays_, emitters, options_, batch.data(), count, slots.data(), counts.data(), progress);
+    for (uint32_t i = 0; i < count; ++i) {
+      const PhotonDeposit* first = slots.data() + size_t(i) * options.bounces;
+      all.insert(all.end(), first, first + counts[i]);
+      if (nextMoving < movingPhotons_.size() && movingPhotons_[nextMoving] == start + i) {
+        std::copy(first, first + counts[i],
+                  movingDeposits_.begin() + ptrdiff_t(nextMoving * options.bounces));
+        movingCounts_[nextMoving++] = counts[i];
+      }
+    }
+  }
+  const double traceMs = millisecondsSince(begin);
+
+  // The grid: the merge's edge for the target, fixed from now on.
+  const auto mergeBegin = std::chrono::steady_clock::now();
+  if (cellEdge > 0.0f) {
+    cellEdge_ = cellEdge;
+  } else if (options.vplCount == 0) {
+    throw InputError(
+        "--vpl-count 0 keeps every deposit as its own light, but with moving lights (--animate, --time) the "
+        "deposits are merged on a fixed grid: give a count, or --vpl-retrace 0 to leave the VPLs where they "
+        "are first traced");
+  } else if (all.size() <= options.vplCount) {
+    cellEdge_ = diagonal / walk::kCellSteps;  // about one cell per deposit
+  } else {
+    cellEdge_ = walk::mergeCellEdge(all, options.vplCount, bounds_.min, diagonal);
+  }
+  near_ = std::max(0.5f * cellEdge_, 1e-3f * diagonal);
+  reach_ = {vplCutoffIrradiance(rays_->surfaceArea(), all, options.cutoff), options.range};
+  for (const PhotonDeposit& d : all) add(d, 1.0);
+
+  // Slots: the load's lit cells in key order, then room for the cells the moving lights reach later.
+  const uint32_t lit = uint32_t(cells_.size());
+  if (lit > maxSlots)
+    throw InputError(
+        fmt::format("--gi: {} virtual point lights and the scene's other lights exceed the {} supported; "
+                    "lower --vpl-count",
+                    lit, maxSlots));
+  const uint32_t capacity = uint32_t(std::min<uint64_t>(maxSlots, uint64_t(lit) + std::max(lit / 4, 64u)));
+  vpls_.assign(capacity, darkVpl(bounds_.center()));
+  std::vector<uint32_t> order(lit);
+  for (uint32_t i = 0; i < lit; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return cellKeys_[a] < cellKeys_[b]; });
+  for (uint32_t i = 0; i < lit; ++i) cells_[order[i]].slot = int32_t(i);
+  for (uint32_t slot = lit; slot < capacity; ++slot) freeSlots_.push_back(slot);
+  std::make_heap(freeSlots_.begin(), freeSlots_.end(), std::greater<>());
+  stats_.litSlots = lit;
+  for (const uint32_t cell : dirty_) {
+    refresh(cell);
+    isDirty_[cell] = 0;
+  }
+  dirty_.clear();
+  changedSlots_.clear();
+
+  stats_.movingPhotons = movingPhotons_.size();
+  stats_.slots = capacity;
+  if (stats) {
+    stats->photons = photons;
+    stats->deposits = all.size();
+    stats->emittedFlux = emitted;
+    stats->depositedFlux = glm::vec3(0.0f);
+    for (const PhotonDeposit& d : all) stats->depositedFlux += d.flux;
+    stats->traceMs = traceMs;
+    stats->mergeMs = millisecondsSince(mergeBegin);
+    stats->cellSize = cellEdge_;
+    stats->vpls = stats_.litSlots;
+  }
+}
+
+Light MovingVpls::darkVpl(const glm::vec3& position) const {
+  Light dark;
+  dark.type = LightType::Vpl;
+  dark.position = position;
+  dark.direction = glm::vec3(0.0f, 1.0f, 0.0f);
+  dark.color = glm::vec3(0.0f);
+  dark.intensity = 0.0f;
+  dark.range = 2.0f * near_;
+  dark.nearDistance = near_;
+  return dark;
+}
+
+void MovingVpls::add(const PhotonDeposit& d, double sign) {
+  const uint64_t key = walk::cellKey(d.position, d.normal, bounds_.min, cellEdge_);
+  const auto [it, inserted] = cellOf_.try_emplace(key, uint32_t(cells_.size()));
+  if (inserted) {
+    cells_.emplace_back();
+    cellKeys_.push_back(key);
+    isDirty_.push_back(0);
+  }
+  const uint32_t index = it->second;
+  Cell& c = cells_[index];
+  const double w = walk::depositWeight(d.flux);
+  if (sign > 0.0) {
+    ++c.deposits;
+    c.lastPosition = d.position;
+  } else {
+    --c.deposits;
+  }
+  if (c.deposits == 0) {  // no residue of the sums' rounding in an empty cell
+    c.flux = c.position = c.normal = glm::dvec3(0.0);
+    c.weight = 0.0;
+  } else {
+    c.flux += sign * glm::dvec3(d.flux);
+    c.position += (sign * w) * glm::dvec3(d.position);
+    c.normal += (sign * w) * glm::dvec3(d.normal);
+    c.weight += sign * w;
+  }
+  if (!isDirty_[index]) {
+    isDirty_[index] = 1;
+    dirty_.push_back(index);
+  }
+}
+
+void MovingVpls::refresh(uint32_t index) {
+  Cell& c = cells_[index];
+  const bool wasDropped = c.dropped;
+  c.dropped = false;
+  if (c.deposits == 0) {
+    if (c.slot >= 0) {
+      vpls_[size_t(c.slot)] = darkVpl(c.lastPosition);
+      changedSlots_.push_back(uint32_t(c.slot));
+      freeSlots_.push_back(uint32_t(c.slot));
+      std::push_heap(freeSlots_.begin(), freeSlots_.end(), std::greater<>());
+      c.slot = -1;
+      --stats_.litSlots;
+    }
+  } else if (c.slot < 0 && freeSlots_.empty()) {
+    c.dropped = true;  // until a slot frees and the cell changes again
+  } else {
+    if (c.slot < 0) {
+      std::pop_heap(freeSlots_.begin(), freeSlots_.end(), std::greater<>());
+      c.slot = int32_t(freeSlots_.back());
+      freeSlots_.pop_back();
+      ++stats_.litSlots;
+    }
+    const double n = glm::length(c.normal);
+    glm::vec3 normal(0.0f);
+    if (n > 0.0) {
+      normal = glm::vec3(c.normal / n);
+    } else {  // opposite normals cancelled: the way the cell's bucket leans
+      const uint64_t bucket = cellKeys_[index] & 7u;
+      normal[int(bucket / 2)] = bucket & 1u ? -1.0f : 1.0f;
+    }
+    const glm::vec3 position = c.weight > 0.0 ? glm::vec3(c.position / c.weight) : c.lastPosition;
+    vpls_[size_t(c.slot)] =
+        makeVpl(position, normal, glm::max(glm::vec3(c.flux), glm::vec3(0.0f)), near_, reach_);
+    changedSlots_.push_back(uint32_t(c.slot));
+  }
+  stats_.droppedCells = stats_.droppedCells + (c.dropped ? 1u : 0u) - (wasDropped ? 1u : 0u);
+}
+
+void MovingVpls::moveTo(float seconds, std::vector<Light>& lights, uint32_t first) {
+  const auto begin = std::chrono::steady_clock::now();
+  if (uint64_t(first) + vpls_.size() > lights.size())
+    throw InputError(fmt::format("moving VPLs: {} slots from light {}, but the scene has {} lights",
+                                 vpls_.size(), first, lights.size()));
+  if (!animation_.empty()) placeLightsAt(lights_, animation_, seconds);
+  stats_.retraced = 0;
+  changedSlots_.clear();
+  const size_t moving = movingPhotons_.size();
+  if (moving > 0 && retracePerFrame_ > 0) {
+    const walk::Emitters emitters = walk::chooseEmitters(lights_, suns_, bounds_);
+    const size_t count = std::min<size_t>(retracePerFrame_, moving);
+    std::vector<uint32_t> photons(count), which(count);
+    for (size_t k = 0; k < count; ++k) {
+      which[k] = uint32_t((cursor_ + k) % moving);
+      photons[k] = movingPhotons_[which[k]];
+    }
+    const uint32_t bounces = options_.bounces;
+    std::vector<PhotonDeposit> slots(count * bounces);
+    std::vector<uint8_t> counts(count);
+    traceInto(*rays_, emitters, options_, photons.data(), count, slots.data(), counts.data(), nullptr);
+    // In photon order, so that the sums do not depend on the threads. A photon that lands where it
+    // did (its light did not move) changes nothing, not even the sums' rounding.
+    for (size_t k = 0; k < count; ++k) {
+      PhotonDeposit* old = movingDeposits_.data() + size_t(which[k]) * bounces;
+      const PhotonDeposit* fresh = slots.data() + k * bounces;
+      if (sameDeposits(old, movingCounts_[which[k]], fresh, counts[k])) continue;
+      for (uint8_t i = 0; i < movingCounts_[which[k]]; ++i) add(old[i], -1.0);
+      for (uint8_t i = 0; i < counts[k]; ++i) add(fresh[i], 1.0);
+      std::copy(fresh, fresh + counts[k], old);
+      movingCounts_[which[k]] = counts[k];
+    }
+    cursor_ = (cursor_ + count) % moving;
+    stats_.retraced = count;
+    // The emptied cells first: the slots they free go to the cells lit this frame.
+    std::stable_partition(dirty_.begin(), dirty_.end(),
+                          [&](uint32_t cell) { return cells_[cell].deposits == 0; });
+    for (const uint32_t cell : dirty_) {
+      refresh(cell);
+      isDirty_[cell] = 0;
+    }
+    dirty_.clear();
+  }
+  for (const uint32_t slot : changedSlots_) lights[first + slot] = vpls_[slot];
+  changedSlots_.clear();
+  stats_.retraceMs = millisecondsSince(begin);
+}
+
+}  // namespace gi
+}  // namespace lll
