@@ -358,6 +358,30 @@ TEST(BenchQuick, GiErrorSuiteMeasuresTheErrorAgainstTheReference) {
   test::expectNoValidationMessagesSince(before);
 }
 
+// Moving lights with instant radiosity: every scenario renders; the budgeted ones re-trace their
+// share of the moving lights' photons each frame, and every one reports the CPU's light update.
+TEST(BenchQuick, GiMovingSuiteReTracesTheBudgetEachFrame) {
+  Context& context = test::gpuContext();
+  const size_t before = context.validationMessages().size();
+  BenchOptions options;
+  options.suites = {"gi-moving"};
+  options.quick = true;
+  const BenchReport report = runBench(context, options);
+  ASSERT_EQ(report.results.size(), 5u);
+  for (const ScenarioResult& r : report.results) {
+    ASSERT_EQ(r.status, Status::Ok) << r.scenario.name << ": " << r.message;
+    std::map<std::string, double> stats(r.techniqueStats.begin(), r.techniqueStats.end());
+    EXPECT_TRUE(stats.contains("light-update-cpu-ms")) << r.scenario.name;
+    const uint32_t budget = r.scenario.scene.gi.retrace;
+    EXPECT_EQ(stats.contains("vpl-retraced-photons"), budget > 0) << r.scenario.name;
+    if (budget > 0) {
+      ASSERT_GT(stats["vpl-moving-photons"], 0.0);
+      EXPECT_EQ(stats["vpl-retraced-photons"], std::min<double>(budget, stats["vpl-moving-photons"]));
+    }
+  }
+  test::expectNoValidationMessagesSince(before);
+}
+
 // Splits one CSV line, honouring quoted fields (device names hold commas).
 std::vector<std::string> csvFields(const std::string& line) {
   std::vector<std::string> fields(1);

@@ -154,8 +154,15 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
   Renderer renderer(context, scene, s.settings);
   // Frame i shows the lights at i / 60 s; the untimed frame compared with forward's at 0 s. The
   // light array's upload happens between frames, outside every timed pass.
+  // The CPU's part of a moving frame (placing the lights, re-tracing photons for --gi, the upload),
+  // per timed frame.
+  std::vector<double> lightUpdateMs;
   auto moveLightsTo = [&](float seconds) {
-    if (moving) renderer.moveLightsTo(*moving, seconds);
+    if (!moving) return;
+    const auto begin = std::chrono::steady_clock::now();
+    renderer.moveLightsTo(*moving, seconds);
+    lightUpdateMs.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count());
   };
   // Particles start with none alive: time the plume at its steady state.
   if (renderer.particles()) renderer.advanceParticles(stepsToSteadyState(renderer.particles()->preset()));
@@ -173,11 +180,16 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
     const std::chrono::duration<double> warming = std::chrono::steady_clock::now() - warmupStart;
     if (i + 1 == warmup && warming.count() < counts.minWarmupSeconds) ++warmup;  // one more
     if (i >= warmup) timed.push_back(std::move(frame));
+    if (i < warmup && !lightUpdateMs.empty()) lightUpdateMs.clear();  // keep the timed frames' only
   }
   r.passes = summarizePasses(timed);
   for (const FrameResult& frame : timed) r.rerenders += frame.rerenders;
   r.techniqueStats = renderer.stats();
   r.memory = lightingMemory(s.settings, r.techniqueStats);
+  if (!lightUpdateMs.empty()) {
+    std::sort(lightUpdateMs.begin(), lightUpdateMs.end());
+    r.techniqueStats.emplace_back("light-update-cpu-ms", lightUpdateMs[lightUpdateMs.size() / 2]);
+  }
   if (s.scene.gi.mode != "none") {
     const gi::PhotonStats& g = caches.scenes.photonStats();
     r.techniqueStats.insert(r.techniqueStats.end(), {{"gi-photons", double(g.photons)},

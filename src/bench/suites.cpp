@@ -443,6 +443,37 @@ std::vector<Scenario> giSuite(const SuiteOptions& options) {
   return out;
 }
 
+// Instant radiosity with moving lights (issue 15): the atrium's own lights and the VPLs of 256
+// random lights that orbit (--animate), 5,144 VPLs at the short cutoff, their photons re-traced at
+// budgets of 0 (the VPLs stay where they were traced), the default and four times it a frame; the
+// CPU's share is "light-update-cpu-ms" in the technique's stats.
+std::vector<Scenario> giMovingSuite(const SuiteOptions& options) {
+  const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
+  SceneRequest request{kDefaultSceneName, options.quick ? 8u : 256u, 1};
+  request.movingLights = true;
+  request.gi.mode = "vpl";
+  request.gi.vplCount = options.quick ? 64 : gi::kDefaultVplCount;
+  request.gi.photons = options.quick ? 20000 : gi::kDefaultPhotons;
+  request.gi.vplCutoff = kGiShortCutoff;
+  std::vector<Scenario> out;
+  const uint32_t budget = options.quick ? 1024 : gi::kDefaultRetracePhotons;
+  for (const uint32_t retrace : {0u, budget, 4 * budget}) {
+    request.gi.retrace = retrace;
+    Scenario base =
+        makeScenario("gi-moving", fmt::format("{} moving lights, retrace {}", request.extraLights, retrace),
+                     request, size);
+    base.settings.animateLights = true;
+    for (const char* technique : {"lll", "tiled", "forward"}) {
+      if (retrace != budget && std::string(technique) != "lll") continue;
+      Scenario s = base;
+      s.settings.technique = technique;
+      s.series = fmt::format("{}, retrace {}", techniqueLabel(s.settings), retrace);
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
 // Instant radiosity against ground truth: the Cornell room's indirect light (VPLs alone, lll) against
 // the path-traced reference, as the VPL count grows, with ranges that reach the whole room (cutoff
 // 1e-6), the default cutoff, the short one, and a fixed 8 m range (--vpl-range: most of the room's 9.5 m
@@ -497,9 +528,9 @@ std::string techniqueLabel(const RenderSettings& settings) {
 }
 
 const std::vector<std::string>& suiteNames() {
-  static const std::vector<std::string> names = {"threel", "scaling",  "density",  "slices",
-                                                 "moving", "tiles",    "overdraw", "smoke",
-                                                 "gi",     "gi-error", "shadows"};
+  static const std::vector<std::string> names = {"threel", "scaling",  "density",   "slices",
+                                                 "moving", "tiles",    "overdraw",  "smoke",
+                                                 "gi",     "gi-error", "gi-moving", "shadows"};
   return names;
 }
 
@@ -514,6 +545,7 @@ std::vector<Scenario> buildSuite(const std::string& suite, const SuiteOptions& o
   if (suite == "smoke") return smokeSuite(options);
   if (suite == "gi") return giSuite(options);
   if (suite == "gi-error") return giErrorSuite(options);
+  if (suite == "gi-moving") return giMovingSuite(options);
   if (suite == "shadows") return shadowsSuite(options);
   throw InputError(
       fmt::format("--suite {}: unknown suite (known: {})", suite, fmt::join(suiteNames(), ", ")));

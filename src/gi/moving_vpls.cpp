@@ -80,7 +80,7 @@ MovingVpls::~MovingVpls() = default;
 
 MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t retracePerFrame,
                        uint32_t maxSlots, float cellEdge, PhotonStats* stats)
-    : rays_(std::make_shared<const RayScene>(scene)),
+    : rays_(std::make_shared<const RayScene>(scene, RayScene::Keep::OwnMaterials)),
       lights_(scene.lights),
       suns_(scene.directionalLights),
       animation_(scene.lightAnimation),

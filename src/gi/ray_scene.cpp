@@ -13,7 +13,8 @@
 namespace lll::gi {
 
 struct RayScene::State {
-  const Scene* scene = nullptr;
+  const Scene* scene = nullptr;  // the caller's, or `owned`
+  std::unique_ptr<Scene> owned;  // its materials and textures only
   RTCDevice device = nullptr;
   RTCScene rtcScene = nullptr;
   std::vector<uint32_t> triangleMaterial;  // per triangle
@@ -81,9 +82,15 @@ glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv) {
                   glm::mix(texel(fx, fy + 1), texel(fx + 1, fy + 1), tx), ty);
 }
 
-RayScene::RayScene(const Scene& scene) : state_(std::make_unique<State>()) {
+RayScene::RayScene(const Scene& scene, Keep keep) : state_(std::make_unique<State>()) {
   State& s = *state_;
   s.scene = &scene;
+  if (keep == Keep::OwnMaterials) {
+    s.owned = std::make_unique<Scene>();
+    s.owned->materials = scene.materials;
+    s.owned->textures = scene.textures;
+    s.scene = s.owned.get();
+  }
   s.device = rtcNewDevice(nullptr);
   if (!s.device) throw std::runtime_error("Embree: could not create a device");
   s.rtcScene = rtcNewScene(s.device);

@@ -42,8 +42,11 @@ struct MaterialSample {
 
 class RayScene {
  public:
+  // Whether the ray scene reads `scene`'s materials and textures, which must then outlive it, or
+  // keeps copies (one that outlives its scene: gi/moving_vpls.h).
+  enum class Keep { ReferToScene, OwnMaterials };
   // Throws std::runtime_error when Embree cannot build the scene (out of memory).
-  explicit RayScene(const Scene& scene);
+  explicit RayScene(const Scene& scene, Keep keep = Keep::ReferToScene);
   ~RayScene();
   RayScene(const RayScene&) = delete;
   RayScene& operator=(const RayScene&) = delete;
