@@ -42,12 +42,21 @@ double millisecondsSince(std::chrono::steady_clock::time_point begin) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
 }
 
+// Where traceInto looks up the cells of what it traced (read-only while the threads run).
+struct CellLookup {
+  const std::unordered_map<uint64_t, uint32_t>* cells = nullptr;
+  glm::vec3 origin{0.0f};
+  float edge = 0.0f;
+  uint32_t* out = nullptr;  // per deposit slot: its cell, or kNoCell when the cell is new
+};
+constexpr uint32_t kNoCell = ~0u;
+
 // Traces photons[0 .. count) (indices of the whole trace, each from its own stream) into `slots`
-// (options.bounces per photon) and `counts`; returns the flux they left their lights with, summed in
-// a fixed order.
+// (options.bounces per photon) and `counts`, and looks their cells up when `lookup` says where;
+// returns the flux they left their lights with, summed in a fixed order.
 glm::vec3 traceInto(const RayScene& rays, const walk::Emitters& emitters, const VplOptions& options,
                     const uint32_t* photons, size_t count, PhotonDeposit* slots, uint8_t* counts,
-                    const std::function<void(double)>& progress) {
+                    const std::function<void(double)>& progress, const CellLookup* lookup = nullptr) {
   const uint32_t chunks = uint32_t((count + kChunk - 1) / kChunk);
   std::vector<glm::vec3> emitted(chunks, glm::vec3(0.0f));
   parallelFor(
@@ -61,6 +70,12 @@ glm::vec3 traceInto(const RayScene& rays, const walk::Emitters& emitters, const 
           emitted[c] += walk::tracePhoton(rays, emitters, options.photons, options.bounces, random, out);
           counts[i] = uint8_t(out.size());
           std::copy(out.begin(), out.end(), slots + i * options.bounces);
+          if (!lookup) continue;
+          for (size_t k = 0; k < out.size(); ++k) {
+            const auto found = lookup->cells->find(
+                walk::cellKey(out[k].position, out[k].normal, lookup->origin, lookup->edge));
+            lookup->out[i * options.bounces + k] = found == lookup->cells->end() ? kNoCell : found->second;
+          }
         }
       },
       progress);
@@ -154,7 +169,11 @@ MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t r
   }
   near_ = std::max(0.5f * cellEdge_, 1e-3f * diagonal);
   reach_ = {vplCutoffIrradiance(rays_->surfaceArea(), all, options.cutoff), options.range};
-  for (const PhotonDeposit& d : all) add(d, 1.0);
+  for (const PhotonDeposit& d : all) add(cellFor(d), d, 1.0);
+  movingCells_.resize(movingDeposits_.size());
+  for (size_t k = 0; k < movingCounts_.size(); ++k)
+    for (size_t i = 0; i < movingCounts_[k]; ++i)
+      movingCells_[k * options.bounces + i] = cellFor(movingDeposits_[k * options.bounces + i]);
 
   // Slots: the load's lit cells in key order, then room for the cells the moving lights reach later.
   const uint32_t lit = uint32_t(cells_.size());
@@ -206,7 +225,7 @@ Light MovingVpls::darkVpl(const glm::vec3& position) const {
   return dark;
 }
 
-void MovingVpls::add(const PhotonDeposit& d, double sign) {
+uint32_t MovingVpls::cellFor(const PhotonDeposit& d) {
   const uint64_t key = walk::cellKey(d.position, d.normal, bounds_.min, cellEdge_);
   const auto [it, inserted] = cellOf_.try_emplace(key, uint32_t(cells_.size()));
   if (inserted) {
@@ -214,7 +233,10 @@ void MovingVpls::add(const PhotonDeposit& d, double sign) {
     cellKeys_.push_back(key);
     isDirty_.push_back(0);
   }
-  const uint32_t index = it->second;
+  return it->second;
+}
+
+void MovingVpls::add(uint32_t index, const PhotonDeposit& d, double sign) {
   Cell& c = cells_[index];
   const double w = walk::depositWeight(d.flux);
   if (sign > 0.0) {
@@ -296,15 +318,27 @@ void MovingVpls::moveTo(float seconds, std::vector<Light>& lights, uint32_t firs
     const uint32_t bounces = options_.bounces;
     std::vector<PhotonDeposit> slots(count * bounces);
     std::vector<uint8_t> counts(count);
-    traceInto(*rays_, emitters, options_, photons.data(), count, slots.data(), counts.data(), nullptr);
+    const auto traceBegin = std::chrono::steady_clock::now();
+    std::vector<uint32_t> cells(count * bounces);
+    const CellLookup lookup{&cellOf_, bounds_.min, cellEdge_, cells.data()};
+    traceInto(*rays_, emitters, options_, photons.data(), count, slots.data(), counts.data(), nullptr,
+              &lookup);
+    stats_.traceMs = millisecondsSince(traceBegin);
+    const auto mergeBegin = std::chrono::steady_clock::now();
     // In photon order, so that the sums do not depend on the threads. A photon that lands where it
     // did (its light did not move) changes nothing, not even the sums' rounding.
     for (size_t k = 0; k < count; ++k) {
-      PhotonDeposit* old = movingDeposits_.data() + size_t(which[k]) * bounces;
+      const size_t stored = size_t(which[k]) * bounces;
+      PhotonDeposit* old = movingDeposits_.data() + stored;
+      uint32_t* oldCells = movingCells_.data() + stored;
       const PhotonDeposit* fresh = slots.data() + k * bounces;
       if (sameDeposits(old, movingCounts_[which[k]], fresh, counts[k])) continue;
-      for (uint8_t i = 0; i < movingCounts_[which[k]]; ++i) add(old[i], -1.0);
-      for (uint8_t i = 0; i < counts[k]; ++i) add(fresh[i], 1.0);
+      for (uint8_t i = 0; i < movingCounts_[which[k]]; ++i) add(oldCells[i], old[i], -1.0);
+      for (uint8_t i = 0; i < counts[k]; ++i) {
+        const uint32_t found = cells[k * bounces + i];
+        oldCells[i] = found != kNoCell ? found : cellFor(fresh[i]);
+        add(oldCells[i], fresh[i], 1.0);
+      }
       std::copy(fresh, fresh + counts[k], old);
       movingCounts_[which[k]] = counts[k];
     }
@@ -318,6 +352,7 @@ void MovingVpls::moveTo(float seconds, std::vector<Light>& lights, uint32_t firs
       isDirty_[cell] = 0;
     }
     dirty_.clear();
+    stats_.mergeMs = millisecondsSince(mergeBegin);
   }
   for (const uint32_t slot : changedSlots_) lights[first + slot] = vpls_[slot];
   changedSlots_.clear();

@@ -30,7 +30,9 @@ namespace lll::gi {
 struct MovingVplStats {
   uint64_t movingPhotons = 0;  // photons whose light moves: the ones traced again
   uint64_t retraced = 0;       // in the last update
-  double retraceMs = 0.0;      // the last update's CPU time, tracing and merging
+  double retraceMs = 0.0;      // the last update's CPU time: placing, tracing, merging, writing
+  double traceMs = 0.0;        // of which tracing
+  double mergeMs = 0.0;        // of which the cells' sums and their VPLs
   uint32_t slots = 0;          // the VPL block's size in the scene's lights
   uint32_t litSlots = 0;       // slots holding a lit cell
   uint32_t droppedCells = 0;   // lit cells without a slot (their light is missing)
@@ -66,7 +68,8 @@ class MovingVpls {
     bool dropped = false;  // lit, but no slot was free
     glm::vec3 lastPosition{0.0f};
   };
-  void add(const PhotonDeposit& d, double sign);
+  uint32_t cellFor(const PhotonDeposit& d);  // its cell, made when new
+  void add(uint32_t cell, const PhotonDeposit& d, double sign);
   void refresh(uint32_t cell);
   Light darkVpl(const glm::vec3& position) const;
 
@@ -82,6 +85,7 @@ class MovingVpls {
 
   std::vector<uint32_t> movingPhotons_;        // photon indices, ascending
   std::vector<PhotonDeposit> movingDeposits_;  // options.bounces slots per moving photon
+  std::vector<uint32_t> movingCells_;          // the cell of each of those deposits
   std::vector<uint8_t> movingCounts_;
   size_t cursor_ = 0;  // the next moving photon to trace again
 

@@ -277,6 +277,8 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
     s.insert(s.end(), {{"vpl-moving-photons", double(g.movingPhotons)},
                        {"vpl-retraced-photons", double(g.retraced)},
                        {"vpl-retrace-ms", g.retraceMs},
+                       {"vpl-retrace-trace-ms", g.traceMs},
+                       {"vpl-retrace-merge-ms", g.mergeMs},
                        {"vpl-slots", double(g.slots)},
                        {"vpl-lit-slots", double(g.litSlots)},
                        {"vpl-dropped-cells", double(g.droppedCells)}});
