@@ -188,6 +188,8 @@ void Viewer::drawControls() {
     float range = request_.gi.vplRange;
     ImGui::DragFloat("VPL range m (0: cutoff)", &range, 0.05f, 0.0f, 1e6f);
     if (ImGui::IsItemDeactivatedAfterEdit()) request_.gi.vplRange = std::clamp(range, 0.0f, 1e6f);
+    // With moving lights: the photons traced again each frame (gi/moving_vpls.h; 0: the VPLs stay).
+    committedUint("re-traced photons a frame", request_.gi.retrace, 0, gi::kMaxPhotons);
   }
   if (ImGui::CollapsingHeader("Particles")) {
     std::vector<std::string> presets = {"none"};
