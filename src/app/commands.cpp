@@ -114,7 +114,8 @@ int runRender(const RenderJob& job) {
     // --frames N: N fixed simulation steps, the last one in the drawn frame. Drawing the others
     // would change nothing in the image and costs minutes on a CPU device.
     renderer.advanceParticles(job.settings.frames - 1);
-    moveLightsTo(job.settings.frames - 1);
+    // Every frame's light update still happens: the VPLs of --gi follow the lights a budget a frame.
+    for (uint32_t i = 1; i < job.settings.frames; ++i) moveLightsTo(i);
     frames.push_back(renderer.renderFrame(true));
   } else {
     for (uint32_t i = 0; i < job.settings.frames; ++i) {
