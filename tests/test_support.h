@@ -68,7 +68,8 @@ inline Rendered render(const Scene& scene, const RenderSettings& settings) {
 
 // The brute-force reference every technique is compared with: forward shading on the geometry
 // (the depth prepass, then every light per fragment), independent of the visibility buffer's
-// surface rebuild that the techniques use by default.
+// surface rebuild that the techniques use by default. Its glass is the caller's (compute by
+// default: depth order; test_glass.cpp checks it against the geometry pass's).
 inline RenderSettings reference(RenderSettings settings) {
   settings.technique = "forward";
   settings.surfaces = "gbuffer";

@@ -95,6 +95,11 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
          "opaque surfaces: visibility (one raster pass of triangle ids, surfaces rebuilt in compute) | "
          "gbuffer (depth prepass, then geometry passes)")
       ->check(CLI::IsMember({"visibility", "gbuffer"}));
+  cmd.add_option(
+         "--glass", s.glass,
+         "how glass is lit: compute (its fragments stored per pixel, then lit and blended in compute) | "
+         "raster (lit in the fragment shader and blended draw by draw)")
+      ->check(CLI::IsMember({"compute", "raster"}));
   cmd.add_option("--raster", s.raster,
                  "who rasterizes the visibility buffer: hardware | compute (64-bit atomics, one thread per "
                  "small triangle) | auto (compute on a GPU, hardware on a CPU device)")

@@ -50,6 +50,7 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"fill", s.settings.technique == "lll" ? s.settings.lllFill : ""},
       {"shade", s.settings.technique == "lll" ? s.settings.lllShade : ""},
       {"surfaces", s.settings.surfaces},
+      {"glass", s.settings.glass},
       {"raster", s.settings.raster},
       {"tile", s.settings.tileSize},
       {"moving_lights", s.settings.animateLights},
@@ -206,6 +207,7 @@ BenchReport readResultsJson(const std::filesystem::path& path) {
         s.settings.lllShade = r.at("shade").get<std::string>();
       }
       s.settings.surfaces = r.at("surfaces").get<std::string>();
+      s.settings.glass = r.value("glass", std::string("raster"));
       s.settings.raster = r.at("raster").get<std::string>();
       s.settings.tileSize = r.at("tile").get<uint32_t>();
       s.settings.animateLights = r.value("moving_lights", false);

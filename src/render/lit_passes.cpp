@@ -1,5 +1,8 @@
 #include "render/lit_passes.h"
 
+#include <algorithm>
+#include <cstring>
+
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
 #include "render/gpu_scene.h"
@@ -8,11 +11,13 @@
 namespace lll {
 
 LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets& targets,
-                     const VisibilityBuffer* visibility, OpaqueShading opaque, LightingInterface lighting)
+                     const VisibilityBuffer* visibility, OpaqueShading opaque, LightingInterface lighting,
+                     bool computeGlass)
     : context_(context),
       opaque_(opaque),
       lighting_(std::move(lighting)),
-      pixels_(double(targets.width) * targets.height) {
+      pixels_(double(targets.width) * targets.height),
+      computeGlass_(computeGlass && scene.hasBlendDraws()) {
   SpecializationConstants constants = lightTypeConstants(scene);
   if (opaque_ == OpaqueShading::Visibility) {
     if (!visibility) throw std::logic_error("LitPasses: visibility shading without a visibility buffer");
@@ -41,8 +46,100 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
     geometryOpaque_ = Pipeline(context, meshLayout_, desc);
   }
   desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
-  desc.blend = BlendMode::Alpha;
-  glass_ = Pipeline(context, meshLayout_, desc);
+  if (!computeGlass_) {
+    desc.blend = BlendMode::Alpha;
+    glass_ = Pipeline(context, meshLayout_, desc);
+    return;
+  }
+  desc.fragmentShader = "common/glass_fragments.frag";
+  desc.colorFormats = {};
+  glassFragmentsLayout_ =
+      PipelineLayout(context, {"common/mesh.vert", desc.fragmentShader}, {scene.materialSetLayout()});
+  glassFragments_ = Pipeline(context, glassFragmentsLayout_, desc);
+  const std::string shader = litShader(lighting_, "shade_glass.comp");
+  glassLayout_ = PipelineLayout(context, {shader});
+  glassCompute_ = Pipeline(context, glassLayout_, shader, constants);
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  requireStorageBufferFits(context, uint64_t(targets.width) * targets.height, 4,
+                           "the glass fragments' list heads", "pixels",
+                           "use a lower resolution or --glass raster");
+  glassHeads_ = Buffer(context, uint64_t(targets.width) * targets.height * 4, storage, MemoryUse::Device,
+                       "glass heads");
+  glassCounters_ =
+      Buffer(context, sizeof(gpu::GlassCounters), storage, MemoryUse::Readback, "glass counters");
+  // An eighth of the pixels to start with: where glass covers more, the first frame grows the pool.
+  allocateGlassPool(std::max<uint64_t>(uint64_t(pixels_) / 8, 16384));
+}
+
+void LitPasses::allocateGlassPool(uint64_t fragments) {
+  requireStorageBufferFits(context_, fragments, sizeof(gpu::GlassFragment), "the glass fragments",
+                           "fragments", "use a lower resolution or --glass raster");
+  glassCapacity_ = fragments;
+  glassNodes_ = Buffer(context_, fragments * sizeof(gpu::GlassFragment), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                       MemoryUse::Device, "glass fragments");
+  glassNext_ = Buffer(context_, fragments * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device,
+                      "glass fragment links");
+}
+
+DescriptorWriter& LitPasses::bindGlassLists(DescriptorWriter& writer) const {
+  return writer.storage(32, glassHeads_.handle())
+      .storage(33, glassNodes_.handle())
+      .storage(34, glassNext_.handle())
+      .storage(35, glassCounters_.handle());
+}
+
+void LitPasses::shadeGlassInCompute(FrameContext& frame) {
+  const FrameTargets& t = frame.targets;
+  constexpr VkPipelineStageFlags2 kFragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  frame.graph.step({uses(glassHeads_, Use::TransferWrite), uses(glassCounters_, Use::TransferWrite)},
+                   [&](VkCommandBuffer cmd) {
+                     vkCmdFillBuffer(cmd, glassHeads_.handle(), 0, VK_WHOLE_SIZE, gpu::kGlassListEnd);
+                     const gpu::GlassCounters start{0, uint32_t(glassCapacity_), 0, 0};
+                     vkCmdUpdateBuffer(cmd, glassCounters_.handle(), 0, sizeof(start), &start);
+                   });
+  frame.graph.pass(
+      "glass-fragments",
+      {uses(t.depth, Use::DepthTest), uses(glassHeads_, Use::StorageReadWrite, kFragment),
+       uses(glassNodes_, Use::StorageWrite, kFragment), uses(glassNext_, Use::StorageWrite, kFragment),
+       uses(glassCounters_, Use::StorageReadWrite, kFragment)},
+      [&](VkCommandBuffer cmd) {
+        beginRendering(cmd, t.width, t.height, {}, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+                       false);
+        glassFragments_.bind(cmd);
+        DescriptorWriter writer = meshPassDescriptors(frame);
+        bindGlassLists(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, glassFragmentsLayout_);
+        frame.scene.draw(cmd, glassFragmentsLayout_.handle(), DrawFilter::Blend);
+        vkCmdEndRendering(cmd);
+      });
+  frame.graph.pass("glass",
+                   std::vector<ResourceUse>{uses(t.hdr, Use::StorageReadWrite, kCompute),
+                                            uses(glassHeads_, Use::StorageRead, kCompute),
+                                            uses(glassNodes_, Use::StorageRead, kCompute),
+                                            uses(glassNext_, Use::StorageRead, kCompute),
+                                            uses(glassCounters_, Use::StorageReadWrite, kCompute)} +
+                       lighting_.reads(kCompute),
+                   [&](VkCommandBuffer cmd) {
+                     glassCompute_.bind(cmd);
+                     DescriptorWriter writer = litDescriptors(frame);
+                     bindGlassLists(writer)
+                         .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+                         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, glassLayout_);
+                     dispatchPerPixel(cmd, t);
+                   });
+  // afterFrame reads the counters (overflow, the deepest pixel).
+  frame.graph.barriers({uses(glassCounters_, Use::HostRead)});
+}
+
+bool LitPasses::afterFrame() {
+  if (!computeGlass_) return false;
+  std::memcpy(&lastGlass_, glassCounters_.mapped(), sizeof(lastGlass_));
+  if (lastGlass_.fragments <= glassCapacity_) return false;
+  // Overflow: the frame is drawn again with a pool that fits; no glass fragment is silently dropped.
+  ++glassOverflows_;
+  allocateGlassPool(
+      grownCapacity(lastGlass_.fragments, storageBufferCapacity(context_, sizeof(gpu::GlassFragment))));
+  return true;
 }
 
 LitPasses::~LitPasses() {
@@ -116,6 +213,7 @@ void LitPasses::dispatch(FrameContext& frame, VkCommandBuffer cmd, DescriptorWri
 
 void LitPasses::shadeGlass(FrameContext& frame) {
   if (!frame.scene.hasBlendDraws()) return;
+  if (computeGlass_) return shadeGlassInCompute(frame);
   const FrameTargets& t = frame.targets;
   frame.graph.pass("glass",
                    std::vector<ResourceUse>{uses(t.hdr, Use::ColorBlend), uses(t.depth, Use::DepthTest)} +
@@ -135,9 +233,17 @@ void LitPasses::drawGeometry(FrameContext& frame, const Pipeline& pipeline, Draw
 }
 
 std::vector<std::pair<std::string, double>> LitPasses::stats() const {
-  if (!gbuffer_) return {};
-  return {{"gbuffer-bytes-per-pixel", GBuffer::kBytesPerPixel},
-          {"gbuffer_bytes", GBuffer::kBytesPerPixel * pixels_}};
+  std::vector<std::pair<std::string, double>> s;
+  if (gbuffer_)
+    s = {{"gbuffer-bytes-per-pixel", GBuffer::kBytesPerPixel},
+         {"gbuffer_bytes", GBuffer::kBytesPerPixel * pixels_}};
+  if (computeGlass_)
+    s.insert(s.end(), {{"glass-fragments", double(lastGlass_.fragments)},
+                       {"glass-fragment-capacity", double(glassCapacity_)},
+                       {"glass-deepest-pixel", double(lastGlass_.deepest)},
+                       {"glass-pool-overflows", double(glassOverflows_)},
+                       {"glass_bytes", double(glassHeads_.size() + glassNodes_.size() + glassNext_.size())}});
+  return s;
 }
 
 }  // namespace lll

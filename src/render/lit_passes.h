@@ -4,7 +4,10 @@
 //   shade-opaque   opaque surfaces, unless the technique lights them itself: in compute from the
 //                  visibility buffer, in compute over the thin G-buffer (after a "gbuffer" pass),
 //                  or per fragment of a geometry pass
-//   glass          blended primitives on the geometry, back to front, at their own depth
+//   glass          blended primitives at their own depth, farthest first: with --glass compute
+//                  (the default) a "glass-fragments" geometry pass stores each pixel's glass
+//                  fragments and a compute pass lights and blends them (shared/glass_types.h);
+//                  with --glass raster a geometry pass lights each fragment and blends it
 // (particles are drawn by the particle system with the same interface: particles/particle_system.h).
 #include <memory>
 #include <string>
@@ -15,13 +18,15 @@
 #include "render/frame.h"
 #include "render/gbuffer.h"
 #include "render/lighting_interface.h"
+#include "shared/glass_types.h"
 
 namespace lll {
 
 class LitPasses {
  public:
   LitPasses(Context& context, const GpuScene& scene, const FrameTargets& targets,
-            const VisibilityBuffer* visibility, OpaqueShading opaque, LightingInterface lighting);
+            const VisibilityBuffer* visibility, OpaqueShading opaque, LightingInterface lighting,
+            bool computeGlass);
   ~LitPasses();
   LitPasses(const LitPasses&) = delete;
   LitPasses& operator=(const LitPasses&) = delete;
@@ -31,7 +36,11 @@ class LitPasses {
   // The blended primitives over the lit frame.
   void shadeGlass(FrameContext& frame);
 
-  // Memory this owns, for --stats and the bench (the G-buffer of OpaqueShading::GBuffer).
+  // Called once the frame's GPU work completed: true when the glass fragments overflowed their pool,
+  // which has grown, and the frame must be drawn again.
+  bool afterFrame();
+
+  // Memory this owns and the glass fragments' counts, for --stats and the bench.
   std::vector<std::pair<std::string, double>> stats() const;
 
  private:
@@ -52,6 +61,20 @@ class LitPasses {
   PipelineLayout meshLayout_;
   Pipeline geometryOpaque_;
   Pipeline glass_;
+
+  // --glass compute: the fragment lists and their passes.
+  void allocateGlassPool(uint64_t fragments);
+  void shadeGlassInCompute(FrameContext& frame);
+  DescriptorWriter& bindGlassLists(DescriptorWriter& writer) const;
+  bool computeGlass_ = false;
+  PipelineLayout glassFragmentsLayout_;
+  Pipeline glassFragments_;
+  PipelineLayout glassLayout_;
+  Pipeline glassCompute_;
+  Buffer glassHeads_, glassNodes_, glassNext_, glassCounters_;
+  uint64_t glassCapacity_ = 0;
+  gpu::GlassCounters lastGlass_{};
+  uint32_t glassOverflows_ = 0;
 };
 
 }  // namespace lll

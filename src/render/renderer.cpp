@@ -95,7 +95,8 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   technique_ =
       findTechnique(settings.technique).create(context, *gpuScene_, settings_, targets_, visibility_.get());
   lit_ = std::make_unique<LitPasses>(context, *gpuScene_, targets_, visibility_.get(),
-                                     technique_->opaqueShading(), technique_->lighting());
+                                     technique_->opaqueShading(), technique_->lighting(),
+                                     settings_.glass == "compute");
 }
 
 void Renderer::chooseSurfaces() {
@@ -234,7 +235,8 @@ FrameResult Renderer::renderFrame(bool capture) {
     // Both are asked: each grows what overflowed before the frame is drawn again.
     const bool techniqueAgain = technique_->afterFrame();
     const bool particlesAgain = particles_ && particles_->afterFrame();
-    if (!techniqueAgain && !particlesAgain) break;
+    const bool glassAgain = lit_->afterFrame();
+    if (!techniqueAgain && !particlesAgain && !glassAgain) break;
     if (++result.rerenders > kMaxRerenders)
       throw std::runtime_error(fmt::format("technique {} asked for more than {} re-renders of one frame",
                                            settings_.technique, kMaxRerenders));

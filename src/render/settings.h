@@ -25,6 +25,9 @@ struct RenderSettings {
   // compute; falls back to gbuffer, with a warning, where the scene or device cannot) | gbuffer
   // (the depth prepass, then geometry passes: G-buffer or fragment shading).
   std::string surfaces = "visibility";
+  // How glass is lit: compute (its fragments stored per pixel by a geometry pass, then lit and
+  // blended in compute) | raster (lit and blended by the geometry pass's fragment shader).
+  std::string glass = "compute";
   // Who rasterizes the visibility buffer's opaque triangles: hardware | compute
   // (render/compute_raster.h) | auto (compute where it was measured faster: a discrete GPU).
   std::string raster = "auto";

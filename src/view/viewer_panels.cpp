@@ -133,6 +133,7 @@ void Viewer::drawControls() {
       choice("anti-aliasing", settings_.antiAliasing, {"none", "edge"});
     }
     choice("surfaces", settings_.surfaces, {"visibility", "gbuffer"});
+    choice("glass", settings_.glass, {"compute", "raster"});
     choice("raster", settings_.raster, {"auto", "hardware", "compute"});
   }
   if (ImGui::CollapsingHeader("Lights")) {
