@@ -22,14 +22,20 @@
 layout(local_size_x = kParticleTileSize, local_size_y = kParticleTileSize) in;
 layout(constant_id = 0) const uint kLightSource = 1u;
 layout(set = 0, binding = 16) uniform sampler2D sceneDepth;
-// The composite before the glass (Renderer::recordFrame) blends only the particles behind the
-// nearest glass at the pixel (glassDepth: the opaque depth with the glass drawn into it); the one
-// after the glass gets glassDepth as its sceneDepth.
+// In a scene with glass (Renderer::recordFrame) the composite blends two layers in one pass over the
+// sorted particles: those in front of the nearest glass at the pixel (glassDepth: the opaque depth
+// with the glass drawn into it), faded against the glass, into particleLayers, resolved after the
+// glass; those behind it, faded against the opaque surface, into particleLayersBehind, resolved
+// before the glass. Sorted nearest first, a pixel's front particles all come before its behind ones.
 layout(constant_id = 50) const bool kBehindGlass = false;
 layout(set = 0, binding = 25) uniform sampler2D glassDepth;
 // The view depth each particle pixel was blended against (the nearest of its block of frame pixels),
-// for particles-resolve below full resolution.
+// for particles-resolve below full resolution: the front layer's and the behind layer's.
 layout(set = 0, binding = 24, r32f) uniform writeonly image2D particleLayerDepth;
+layout(set = 0, binding = 37, r32f) uniform writeonly image2D particleLayerDepthBehind;
+layout(std430, set = 0, binding = 36) writeonly buffer ParticleLayersBehindBlock {
+  uvec2 particleLayersBehind[];
+};
 
 const uint kThreads = kParticleTileSize * kParticleTileSize;
 // The error this leaves is at most this share of what lies behind the pixel: far below the fp16
@@ -97,10 +103,11 @@ void sortKeys(bool inShared, uint first, uint count) {
     }
 }
 
-// Blends cell `cell`'s particles into the pixel, nearest first (barriers: call it uniformly).
+// Blends cell `cell`'s particles into the pixel, nearest first (barriers: call it uniformly): into
+// `front` (colour, transmittance), or with glass into `behind` those behind glassViewDepth.
 // `pixel` is in particle pixels, `framePixel` the frame pixel at its centre (for the lights).
 void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, float glassViewDepth,
-               uint visible, inout vec3 colour, inout float transmittance, inout bool finished) {
+               uint visible, inout vec4 front, inout vec4 behind, inout bool finished) {
   uvec2 range = particleTileRange(cell);
   uint count = range.y;
   if (count == 0u) return;
@@ -129,8 +136,9 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
     for (uint j = 0u; j < n && !finished; ++j) {
       // The shape first: most of a tile's particles miss most of its pixels.
       ParticleShape shape = stagedShape[j];
-      if (shape.centre.z >= sceneViewDepth) continue;                 // behind the scene: faded out entirely
-      if (kBehindGlass && shape.centre.z < glassViewDepth) continue;  // blended after the glass
+      if (shape.centre.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
+      bool isBehind = kBehindGlass && shape.centre.z >= glassViewDepth;
+      float fadeDepth = isBehind || !kBehindGlass ? sceneViewDepth : glassViewDepth;
       vec2 offset = (pixelCentre - shape.centre.xy) * shape.axes.xy;
       float r2 = dot(offset, offset);
       if (r2 >= 1.0) continue;
@@ -140,7 +148,7 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
                          shape.axes.z * offset.y - shape.axes.w * offset.x);
       float alpha = look.albedoOpacity.a *
                     puffDensity(r2, corner * 1.5 + vec2(shape.centre.w, look.baseRadiance.w)) *
-                    softFade(sceneViewDepth, shape.centre.z);
+                    softFade(fadeDepth, shape.centre.z);
       vec3 radiance = look.baseRadiance.rgb;
       if (kLightSource == 1u) {
         vec3 world =
@@ -149,9 +157,15 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
       } else if (kLightSource == 2u) {
         radiance += look.albedoOpacity.rgb * atlasLight(look.order, offset);
       }
-      colour += transmittance * radiance * alpha;
-      transmittance *= 1.0 - alpha * (1.0 - system.blend.x);
-      if (transmittance < kOpaqueTransmittance) {
+      vec4 layer = isBehind ? behind : front;
+      layer.rgb += layer.a * radiance * alpha;
+      layer.a *= 1.0 - alpha * (1.0 - system.blend.x);
+      if (isBehind)
+        behind = layer;
+      else
+        front = layer;
+      // Opaque in front: nothing behind shows; opaque behind: the front particles all came before.
+      if (layer.a < kOpaqueTransmittance) {
         finished = true;
         atomicAdd(finishedPixels, 1u);
       }
@@ -187,24 +201,25 @@ void main() {
   float glassViewDepth = inside && kBehindGlass ? particlePixelDepth(glassDepth, pixel) : 0.0;
   if (gl_LocalInvocationIndex == 0u) finishedPixels = 0u;
   barrier();
-  // Before the glass, a pixel with no glass in front of its surface has nothing to blend: a tile
-  // without glass skips its particles altogether.
-  bool finished = !inside || (kBehindGlass && glassViewDepth >= sceneViewDepth);
+  bool finished = !inside;
   if (finished) atomicAdd(finishedPixels, 1u);
   barrier();
   uint visible = particleCounters.dispatch.w;
-  vec3 colour = vec3(0.0);
-  float transmittance = 1.0;
+  vec4 front = vec4(0.0, 0.0, 0.0, 1.0), behind = vec4(0.0, 0.0, 0.0, 1.0);
   uint slabs = tileHeader.cellsX;
   uint group = gl_WorkGroupID.z;
   uint firstSlab = group * slabs / tileHeader.groups, endSlab = (group + 1u) * slabs / tileHeader.groups;
   for (uint slab = firstSlab; slab < endSlab && finishedPixels < kThreads; ++slab) {
-    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, colour,
-              transmittance, finished);
+    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, front, behind,
+              finished);
     barrier();
   }
   if (!inside) return;
-  particleLayers[particleLayerIndex(group, pixel)] =
-      uvec2(packHalf2x16(colour.rg), packHalf2x16(vec2(colour.b, transmittance)));
-  if (group == 0u && scale > 1u) imageStore(particleLayerDepth, pixel, vec4(sceneViewDepth));
+  uint index = particleLayerIndex(group, pixel);
+  particleLayers[index] = uvec2(packHalf2x16(front.rg), packHalf2x16(front.ba));
+  if (kBehindGlass) particleLayersBehind[index] = uvec2(packHalf2x16(behind.rg), packHalf2x16(behind.ba));
+  if (group == 0u && scale > 1u) {
+    imageStore(particleLayerDepth, pixel, vec4(kBehindGlass ? glassViewDepth : sceneViewDepth));
+    if (kBehindGlass) imageStore(particleLayerDepthBehind, pixel, vec4(sceneViewDepth));
+  }
 }

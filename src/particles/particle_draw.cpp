@@ -67,13 +67,9 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
     const std::string shader = litShader(lighting, "particles_tiles.comp");
     pipelines.compositeLayout = PipelineLayout(context_, {shader});
     SpecializationConstants compositeConstants = constants;
-    compositeConstants[0] = vertex ? 0 : atlas ? 2 : 1;  // the light's source (particles_tiles.comp)
+    compositeConstants[0] = vertex ? 0 : atlas ? 2 : 1;        // the light's source (particles_tiles.comp)
+    compositeConstants[kBehindGlassConstant] = glass ? 1 : 0;  // with glass: both layers
     pipelines.composite = Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
-    if (glass) {
-      compositeConstants[kBehindGlassConstant] = 1;
-      pipelines.compositeBehindGlass =
-          Pipeline(context_, pipelines.compositeLayout, shader, compositeConstants);
-    }
   }
   if (vertex || atlas) {
     const std::string shader = litShader(lighting, vertex ? "particles_vertex.comp" : "particles_atlas.comp");
@@ -148,8 +144,9 @@ void ParticleSystem::draw(FrameContext& frame, const LightingInterface& lighting
   if (render_ == ParticleRender::Raster) {
     drawRaster(frame, pipelines, lighting, layer);
   } else {
+    // With glass the one composite (before it) blends both layers; each is resolved on its side of it.
     if (first) binTiles(frame);
-    composite(frame, pipelines, lighting, layer);
+    if (layer != ParticleLayer::InFrontOfGlass) composite(frame, pipelines, lighting, layer);
     resolve(frame, layer);
   }
 }

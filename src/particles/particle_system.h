@@ -50,7 +50,8 @@ enum class ParticleLayer {
   BehindGlass,     // before the glass: particles behind the nearest glass at their pixel
   InFrontOfGlass,  // after the glass: the rest, depth-tested and faded against the glass
 };
-// constant_id of kBehindGlass in particles/draw_fragment.glsl and lit/particles_tiles.comp.glsl.
+// constant_id of kBehindGlass in particles/draw_fragment.glsl (the draw before the glass) and
+// lit/particles_tiles.comp.glsl (the composite that blends both layers, before the glass).
 inline constexpr uint32_t kBehindGlassConstant = 50;
 // The depth image a layer tests and fades against, the one it clips against (binding 25: the glass
 // depth before the glass; the scene depth as a stand-in the shaders never read otherwise), and the
@@ -128,8 +129,7 @@ class ParticleSystem {
     PipelineLayout lightLayout;
     Pipeline light;                  // the per-particle lighting pass (vertex lighting); empty otherwise
     PipelineLayout compositeLayout;  // --particle-render compute: particles-composite
-    Pipeline composite;
-    Pipeline compositeBehindGlass;
+    Pipeline composite;              // with glass in the scene: both layers about it (constant 50)
   };
   // The compute renderer's tiles (particle_tiles.cpp), made for the frame's size on first use.
   struct Tiles {
@@ -145,6 +145,9 @@ class ParticleSystem {
     Buffer screen;
     Buffer layers;     // each tile group's colour and transmittance per particle pixel
     Image layerDepth;  // below full resolution: the view depth each particle pixel was blended against
+    // With glass, the same for the particles behind the nearest glass (the composite writes both).
+    Buffer layersBehind;
+    Image layerDepthBehind;
     PipelineLayout binLayout;
     Pipeline count;
     Pipeline scatter;

@@ -7,8 +7,12 @@
 //   particles-composite  workgroups per tile (groups) each sort their run of the tile's slabs
 //                        nearest first and blend every pixel front to back into (colour,
 //                        transmittance), stopping where it is opaque (lit/particles_tiles.comp);
+//                        with glass in the scene, two layers at once: the particles in front of
+//                        the nearest glass and those behind it;
 //   particles-resolve    the groups combined front to back, upsampled with the depth below full
-//                        resolution, over the frame (particles/resolve.comp).
+//                        resolution, over the frame (particles/resolve.comp); with glass, the
+//                        layer behind it before the glass pass (particles-resolve-behind-glass),
+//                        the one in front after.
 // A tile's list is cut into slabs of the draw order (one per kParticlesPerSlab slots, up to
 // kParticleMaxSlabs): a tile sorts and reads one slab at a time, front first, and stops at the
 // slab that made it opaque. With a million particles a tile may hold a hundred thousand; sorting
@@ -74,6 +78,13 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
                            "use a lower resolution or --particle-resolution half");
   t.layers = Buffer(context_, layerBytes * t.header.groups, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                     MemoryUse::Device, "particle layers");
+  if (frame.targets.glassDepth) {
+    t.layersBehind = Buffer(context_, layerBytes * t.header.groups, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                            MemoryUse::Device, "particle layers behind glass");
+    t.layerDepthBehind =
+        Image(context_, layered ? layerWidth : 1, layered ? layerHeight : 1, VK_FORMAT_R32_SFLOAT,
+              VK_IMAGE_USAGE_STORAGE_BIT, "particle layer depth behind glass");
+  }
   t.maxEntries = storageBufferCapacity(context_, 4);
   t.headerBuffer = Buffer(context_, sizeof(gpu::ParticleTileHeader),
                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -168,8 +179,11 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
   const Image& depth = particleSceneDepth(targets, layer);
+  // BehindGlass: the one composite of a scene with glass, both layers (All: the only layer).
   const bool behind = layer == ParticleLayer::BehindGlass;
   const Image& glass = particleGlassDepth(targets, layer);
+  const Buffer& layersBehind = behind ? t.layersBehind : t.layers;  // a stand-in never written
+  const Image& layerDepthBehind = behind ? t.layerDepthBehind : t.layerDepth;
   std::vector<ResourceUse> used{uses(depth, Use::Sampled, kCompute),
                                 uses(counters_, Use::StorageRead, kCompute),
                                 uses(uniforms_, Use::StorageRead, kCompute),
@@ -180,10 +194,13 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
                                 uses(t.layers, Use::StorageWrite, kCompute),
                                 uses(t.layerDepth, Use::StorageWrite, kCompute)};
   if (atlas_) used.push_back(uses(atlas_, Use::StorageRead, kCompute));
-  if (behind) used.push_back(uses(glass, Use::Sampled, kCompute));
-  const std::string name = std::string("particles-composite") + particlePassSuffix(layer);
-  frame.graph.pass(name, used + lighting.reads(kCompute), [&](VkCommandBuffer cmd) {
-    (behind ? pipelines.compositeBehindGlass : pipelines.composite).bind(cmd);
+  if (behind) {
+    used.push_back(uses(glass, Use::Sampled, kCompute));
+    used.push_back(uses(t.layersBehind, Use::StorageWrite, kCompute));
+    used.push_back(uses(t.layerDepthBehind, Use::StorageWrite, kCompute));
+  }
+  frame.graph.pass("particles-composite", used + lighting.reads(kCompute), [&](VkCommandBuffer cmd) {
+    pipelines.composite.bind(cmd);
     DescriptorWriter writer = descriptors(frame, lighting);
     writer.storage(17, t.headerBuffer.handle())
         .storage(18, t.cells.handle())
@@ -194,7 +211,9 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
         .image(25, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, glass.view(),
                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-        .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL);
+        .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
+        .storage(36, layersBehind.handle())
+        .image(37, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, layerDepthBehind.view(), VK_IMAGE_LAYOUT_GENERAL);
     // Read only with atlas lighting (specialization constant 0 == 2); a stand-in otherwise.
     if (!atlas_) writer.storage(22, t.screen.handle());
     writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.compositeLayout);
@@ -206,21 +225,24 @@ void ParticleSystem::resolve(FrameContext& frame, ParticleLayer layer) {
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
   const Image& depth = particleSceneDepth(targets, layer);
+  const bool behind = layer == ParticleLayer::BehindGlass;
+  const Buffer& layers = behind ? t.layersBehind : t.layers;
+  const Image& layerDepth = behind ? t.layerDepthBehind : t.layerDepth;
   frame.graph.pass(
       std::string("particles-resolve") + particlePassSuffix(layer),
       {uses(targets.hdr, Use::StorageReadWrite, kCompute), uses(depth, Use::Sampled, kCompute),
-       uses(t.headerBuffer, Use::StorageRead, kCompute), uses(t.layers, Use::StorageRead, kCompute),
-       uses(t.layerDepth, Use::StorageRead, kCompute)},
+       uses(t.headerBuffer, Use::StorageRead, kCompute), uses(layers, Use::StorageRead, kCompute),
+       uses(layerDepth, Use::StorageRead, kCompute)},
       [&](VkCommandBuffer cmd) {
         t.resolve.bind(cmd);
         DescriptorWriter()
             .storage(0, frame.uniformBuffer.handle())
             .storage(17, t.headerBuffer.handle())
-            .storage(23, t.layers.handle())
+            .storage(23, layers.handle())
             .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(),
                    VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
             .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-            .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
             .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.resolveLayout);
         dispatchPerPixel(cmd, targets);
       });
