@@ -161,6 +161,28 @@ TEST(MovingVpls, FullSlotsAreCountedNotOverrun) {
   EXPECT_THROW(gi::MovingVpls(start, smallTrace(), 1, lit - 1, probe.cellEdge()), InputError);
 }
 
+// The bench moves its lights in a copy of a cached scene: the copy's VPLs move, the original's stay.
+TEST(MovingVpls, ACopyOfTheSceneMovesOnItsOwn) {
+  SceneRequest request{"cornell"};
+  request.extraLights = 3;
+  request.seed = 5;
+  request.movingLights = true;
+  request.gi.mode = "vpl";
+  request.gi.photons = 20000;
+  request.gi.vplCount = 512;
+  const Scene original = loadScene(request);
+  ASSERT_TRUE(original.movingIndirect);
+  Scene copy = original;
+  ASSERT_TRUE(copy.movingIndirect);
+  EXPECT_NE(copy.movingIndirect.vpls.get(), original.movingIndirect.vpls.get());
+  copy.movingIndirect.vpls->moveTo(3.0f, copy.lights, copy.movingIndirect.first);
+  EXPECT_GT(countDifferent(copy.lights, original.lights), 0u);
+  const std::vector<Light> before = original.movingIndirect.vpls->vpls();
+  Scene again = original;
+  EXPECT_EQ(countDifferent(again.movingIndirect.vpls->vpls(), before), 0u);
+  EXPECT_GT(countDifferent(copy.movingIndirect.vpls->vpls(), before), 0u);
+}
+
 // Through the renderer: after moveLightsTo the image is the one of a scene that simply holds the
 // moved lights, and it is not the first frame's.
 TEST(MovingVpls, TheRendererDrawsTheVplsThatMoved) {

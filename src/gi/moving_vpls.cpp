@@ -15,21 +15,6 @@
 #include "scene/light_animation.h"
 
 namespace lll {
-
-MovingIndirectLight::MovingIndirectLight() = default;
-MovingIndirectLight::MovingIndirectLight(const MovingIndirectLight& other)
-    : vpls(other.vpls ? std::make_unique<gi::MovingVpls>(*other.vpls) : nullptr), first(other.first) {}
-MovingIndirectLight::MovingIndirectLight(MovingIndirectLight&& other) noexcept = default;
-MovingIndirectLight& MovingIndirectLight::operator=(const MovingIndirectLight& other) {
-  if (this != &other) {
-    vpls = other.vpls ? std::make_unique<gi::MovingVpls>(*other.vpls) : nullptr;
-    first = other.first;
-  }
-  return *this;
-}
-MovingIndirectLight& MovingIndirectLight::operator=(MovingIndirectLight&& other) noexcept = default;
-MovingIndirectLight::~MovingIndirectLight() = default;
-
 namespace gi {
 namespace {
 
@@ -92,6 +77,10 @@ bool sameDeposits(const PhotonDeposit* a, uint8_t countA, const PhotonDeposit* b
 
 MovingVpls::MovingVpls(const MovingVpls&) = default;
 MovingVpls::~MovingVpls() = default;
+
+std::shared_ptr<MovingVpls> cloneMovingVpls(const MovingVpls& vpls) {
+  return std::make_shared<MovingVpls>(vpls);
+}
 
 MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t retracePerFrame,
                        uint32_t maxSlots, float cellEdge, PhotonStats* stats)

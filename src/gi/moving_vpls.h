@@ -100,4 +100,7 @@ class MovingVpls {
   MovingVplStats stats_;
 };
 
+// A copy with its own state (the ray scene shared): MovingIndirectLight::clone.
+std::shared_ptr<MovingVpls> cloneMovingVpls(const MovingVpls& vpls);
+
 }  // namespace lll::gi

@@ -132,17 +132,24 @@ class MovingVpls;
 }
 
 // --gi with moving lights: the virtual point lights that follow them (gi/moving_vpls.h), a block
-// of the scene's lights from `first`. A copy of the scene copies it (deeply: a scene's copy moves
-// its lights on its own).
+// of the scene's lights from `first`. A copy of the scene copies it deeply (a scene's copy moves its
+// lights on its own) through `clone`, which its maker sets: the scene's code needs nothing of gi/.
 struct MovingIndirectLight {
-  std::unique_ptr<gi::MovingVpls> vpls;
+  std::shared_ptr<gi::MovingVpls> vpls;
+  std::shared_ptr<gi::MovingVpls> (*clone)(const gi::MovingVpls&) = nullptr;
   uint32_t first = 0;
-  MovingIndirectLight();
-  MovingIndirectLight(const MovingIndirectLight& other);
-  MovingIndirectLight(MovingIndirectLight&& other) noexcept;
-  MovingIndirectLight& operator=(const MovingIndirectLight& other);
-  MovingIndirectLight& operator=(MovingIndirectLight&& other) noexcept;
-  ~MovingIndirectLight();
+  MovingIndirectLight() = default;
+  MovingIndirectLight(const MovingIndirectLight& other)
+      : vpls(other.vpls && other.clone ? other.clone(*other.vpls) : nullptr),
+        clone(other.clone),
+        first(other.first) {}
+  MovingIndirectLight(MovingIndirectLight&& other) noexcept = default;
+  MovingIndirectLight& operator=(const MovingIndirectLight& other) {
+    if (this != &other) *this = MovingIndirectLight(other);
+    return *this;
+  }
+  MovingIndirectLight& operator=(MovingIndirectLight&& other) noexcept = default;
+  ~MovingIndirectLight() = default;
   explicit operator bool() const { return vpls != nullptr; }
 };
 

@@ -63,6 +63,7 @@ void addIndirectLight(Scene& scene, const SceneRequest& request, std::vector<std
         uint32_t(gpu::kMaxLights - std::min<uint64_t>(others, gpu::kMaxLights)), 0.0f, &stats);
     vpls = moving->vpls();
     scene.movingIndirect.vpls = std::move(moving);
+    scene.movingIndirect.clone = &gi::cloneMovingVpls;
     scene.movingIndirect.first = uint32_t(others);
   } else {
     vpls = gi::makeVirtualPointLights(scene, options, &stats);
