@@ -20,14 +20,22 @@ namespace {
 
 constexpr uint32_t kMaxSlots = gpu::kMaxLights;
 
-// The Cornell room with three random lights that orbit (seed 5), placed where they are at `seconds`.
-Scene movingCornell(float seconds) {
+// The Cornell room with three random lights that orbit (seed 5), placed where they are at `seconds`;
+// with `gi` (vpl, vpl-only) the VPLs of 20,000 photons merged to 512 follow them.
+SceneRequest movingCornellRequest(float seconds, const std::string& gi = "none") {
   SceneRequest request{"cornell"};
   request.extraLights = 3;
   request.seed = 5;
   request.movingLights = true;
   request.time = seconds;
-  return loadScene(request);
+  request.gi.mode = gi;
+  request.gi.photons = 20000;
+  request.gi.vplCount = 512;
+  return request;
+}
+
+Scene movingCornell(float seconds) {
+  return loadScene(movingCornellRequest(seconds));
 }
 
 gi::VplOptions smallTrace(uint32_t threads = 0) {
@@ -163,14 +171,7 @@ TEST(MovingVpls, FullSlotsAreCountedNotOverrun) {
 
 // The bench moves its lights in a copy of a cached scene: the copy's VPLs move, the original's stay.
 TEST(MovingVpls, ACopyOfTheSceneMovesOnItsOwn) {
-  SceneRequest request{"cornell"};
-  request.extraLights = 3;
-  request.seed = 5;
-  request.movingLights = true;
-  request.gi.mode = "vpl";
-  request.gi.photons = 20000;
-  request.gi.vplCount = 512;
-  const Scene original = loadScene(request);
+  const Scene original = loadScene(movingCornellRequest(0.0f, "vpl"));
   ASSERT_TRUE(original.movingIndirect);
   Scene copy = original;
   ASSERT_TRUE(copy.movingIndirect);
@@ -186,13 +187,7 @@ TEST(MovingVpls, ACopyOfTheSceneMovesOnItsOwn) {
 // Through the renderer: after moveLightsTo the image is the one of a scene that simply holds the
 // moved lights, and it is not the first frame's.
 TEST(MovingVpls, TheRendererDrawsTheVplsThatMoved) {
-  SceneRequest request{"cornell"};
-  request.extraLights = 3;
-  request.seed = 5;
-  request.movingLights = true;
-  request.gi.mode = "vpl-only";
-  request.gi.photons = 20000;
-  request.gi.vplCount = 512;
+  SceneRequest request = movingCornellRequest(0.0f, "vpl-only");
   request.gi.retrace = 1u << 20;
   Scene scene = loadScene(request);
   ASSERT_TRUE(scene.movingIndirect);

@@ -154,16 +154,15 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
   Renderer renderer(context, scene, s.settings);
   // Frame i shows the lights at i / 60 s; the untimed frame compared with forward's at 0 s. The
   // light array's upload happens between frames, outside every timed pass.
-  // The CPU's part of a moving frame (placing the lights, re-tracing photons for --gi, the upload),
-  // per timed frame.
-  std::vector<double> lightUpdateMs;
+  // Returns the CPU's part of a moving frame (placing the lights, re-tracing photons for --gi, the
+  // upload), in ms.
   auto moveLightsTo = [&](float seconds) {
-    if (!moving) return;
+    if (!moving) return 0.0;
     const auto begin = std::chrono::steady_clock::now();
     renderer.moveLightsTo(*moving, seconds);
-    lightUpdateMs.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count());
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
   };
+  std::vector<double> lightUpdateMs;  // of the timed frames
   // Particles start with none alive: time the plume at its steady state.
   if (renderer.particles()) renderer.advanceParticles(stepsToSteadyState(renderer.particles()->preset()));
   std::optional<AluProbe> probe;
@@ -173,23 +172,21 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
   uint32_t warmup = counts.warmup;
   for (uint32_t i = 0; i < warmup + counts.timed; ++i) {
     stopIfRequested();
-    if (i > 0) moveLightsTo(float(i) * kAnimationFrameSeconds);
+    const double updateMs = i > 0 ? moveLightsTo(float(i) * kAnimationFrameSeconds) : 0.0;
     FrameResult frame = renderer.renderFrame(false);
     if (i == 0) requireParticlePass(s, frame);
     if (probe) frame.passes.push_back(probe->run(uint32_t(scene.lights.size())));
     const std::chrono::duration<double> warming = std::chrono::steady_clock::now() - warmupStart;
     if (i + 1 == warmup && warming.count() < counts.minWarmupSeconds) ++warmup;  // one more
-    if (i >= warmup) timed.push_back(std::move(frame));
-    if (i < warmup && !lightUpdateMs.empty()) lightUpdateMs.clear();  // keep the timed frames' only
+    if (i < warmup) continue;
+    timed.push_back(std::move(frame));
+    if (moving && i > 0) lightUpdateMs.push_back(updateMs);
   }
   r.passes = summarizePasses(timed);
   for (const FrameResult& frame : timed) r.rerenders += frame.rerenders;
   r.techniqueStats = renderer.stats();
   r.memory = lightingMemory(s.settings, r.techniqueStats);
-  if (!lightUpdateMs.empty()) {
-    std::sort(lightUpdateMs.begin(), lightUpdateMs.end());
-    r.techniqueStats.emplace_back("light-update-cpu-ms", lightUpdateMs[lightUpdateMs.size() / 2]);
-  }
+  if (!lightUpdateMs.empty()) r.techniqueStats.emplace_back("light-update-cpu-ms", median(lightUpdateMs));
   if (s.scene.gi.mode != "none") {
     const gi::PhotonStats& g = caches.scenes.photonStats();
     r.techniqueStats.insert(r.techniqueStats.end(), {{"gi-photons", double(g.photons)},

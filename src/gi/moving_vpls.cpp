@@ -18,14 +18,10 @@ namespace lll {
 namespace gi {
 namespace {
 
-// Photons per task of the parallel trace, and per batch of the first trace (whose deposits are held
-// until merged).
-constexpr uint32_t kChunk = 256;
-constexpr uint32_t kBatch = 1u << 16;
+using walk::millisecondsSince;
 
-double millisecondsSince(std::chrono::steady_clock::time_point begin) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
-}
+// Photons per task of a frame's parallel trace.
+constexpr uint32_t kChunk = 256;
 
 // Where traceInto looks up the cells of what it traced (read-only while the threads run).
 struct CellLookup {
@@ -37,13 +33,11 @@ struct CellLookup {
 constexpr uint32_t kNoCell = ~0u;
 
 // Traces photons[0 .. count) (indices of the whole trace, each from its own stream) into `slots`
-// (options.bounces per photon) and `counts`, and looks their cells up when `lookup` says where;
-// returns the flux they left their lights with, summed in a fixed order.
-glm::vec3 traceInto(const RayScene& rays, const walk::Emitters& emitters, const VplOptions& options,
-                    const uint32_t* photons, size_t count, PhotonDeposit* slots, uint8_t* counts,
-                    const std::function<void(double)>& progress, const CellLookup* lookup = nullptr) {
+// (options.bounces per photon) and `counts`, and looks up the cells their deposits land in.
+void traceInto(const RayScene& rays, const walk::Emitters& emitters, const VplOptions& options,
+               const uint32_t* photons, size_t count, PhotonDeposit* slots, uint8_t* counts,
+               const CellLookup& lookup) {
   const uint32_t chunks = uint32_t((count + kChunk - 1) / kChunk);
-  std::vector<glm::vec3> emitted(chunks, glm::vec3(0.0f));
   parallelFor(
       chunks, options.threads,
       [&](uint32_t c) {
@@ -52,21 +46,17 @@ glm::vec3 traceInto(const RayScene& rays, const walk::Emitters& emitters, const 
         for (size_t i = size_t(c) * kChunk; i < end; ++i) {
           out.clear();
           Random random(options.seed, photons[i]);
-          emitted[c] += walk::tracePhoton(rays, emitters, options.photons, options.bounces, random, out);
+          walk::tracePhoton(rays, emitters, options.photons, options.bounces, random, out);
           counts[i] = uint8_t(out.size());
           std::copy(out.begin(), out.end(), slots + i * options.bounces);
-          if (!lookup) continue;
           for (size_t k = 0; k < out.size(); ++k) {
-            const auto found = lookup->cells->find(
-                walk::cellKey(out[k].position, out[k].normal, lookup->origin, lookup->edge));
-            lookup->out[i * options.bounces + k] = found == lookup->cells->end() ? kNoCell : found->second;
+            const auto found =
+                lookup.cells->find(walk::cellKey(out[k].position, out[k].normal, lookup.origin, lookup.edge));
+            lookup.out[i * options.bounces + k] = found == lookup.cells->end() ? kNoCell : found->second;
           }
         }
       },
-      progress);
-  glm::vec3 total(0.0f);
-  for (const glm::vec3& e : emitted) total += e;
-  return total;
+      {});
 }
 
 bool sameDeposits(const PhotonDeposit* a, uint8_t countA, const PhotonDeposit* b, uint8_t countB) {
@@ -91,16 +81,19 @@ MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t r
       bounds_(scene.worldBounds()),
       options_(options),
       retracePerFrame_(retracePerFrame) {
-  const auto begin = std::chrono::steady_clock::now();
-  options_.progress = nullptr;  // the caller's progress bar is for this first trace only
+  options_.progress = nullptr;  // the caller's progress bar is for the first trace only
   if (!bounds_.valid()) bounds_.expand(glm::vec3(0.0f));
   const float diagonal = std::max(glm::length(bounds_.extent()), 1e-6f);
-  const walk::Emitters emitters = walk::chooseEmitters(lights_, suns_, bounds_);
-  const uint32_t photons = emitters.sources.empty() ? 0 : options.photons;
+
+  // The first trace, every photon, with the photon each deposit came from.
+  PhotonStats traced;
+  std::vector<uint32_t> owners;
+  const std::vector<PhotonDeposit> all = tracePhotons(*rays_, scene, options, &traced, &owners);
 
   // Which photons leave a moving light: their stream's first draw picks it, wherever it is.
+  const walk::Emitters emitters = walk::chooseEmitters(lights_, suns_, bounds_);
   const size_t firstMoving = animation_.first, endMoving = firstMoving + animation_.motions.size();
-  for (uint32_t p = 0; p < photons; ++p) {
+  for (uint32_t p = 0; p < traced.photons; ++p) {
     Random random(options.seed, p);
     const Light* light = emitters.sources[walk::pickEmitter(emitters, random)].light;
     const size_t index = light ? size_t(light - lights_.data()) : ~size_t(0);
@@ -110,37 +103,16 @@ MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t r
   if (slotsNeeded > (size_t(1) << 26))
     throw InputError(
         fmt::format("--gi with moving lights: {} photons of the moving lights x {} bounces would hold {} "
-                    "deposits to trace "
-                    "again (at most {}); lower --photons or --bounces",
+                    "deposits to trace again (at most {}); lower --photons or --bounces",
                     movingPhotons_.size(), options.bounces, slotsNeeded, size_t(1) << 26));
   movingDeposits_.resize(slotsNeeded);
   movingCounts_.resize(movingPhotons_.size(), 0);
-
-  // The first trace, every photon, in batches; the moving ones' deposits kept per photon.
-  std::vector<PhotonDeposit> all, slots(size_t(kBatch) * options.bounces);
-  std::vector<uint8_t> counts(kBatch);
-  std::vector<uint32_t> batch(kBatch);
-  glm::vec3 emitted(0.0f);
-  size_t nextMoving = 0;
-  for (uint32_t start = 0; start < photons; start += kBatch) {
-    const uint32_t count = std::min(kBatch, photons - start);
-    for (uint32_t i = 0; i < count; ++i) batch[i] = start + i;
-    std::function<void(double)> progress;
-    if (options.progress)
-      progress = [&](double f) { options.progress((double(start) + f * count) / double(photons)); };
-    emitted +=
-        traceInto(*rays_, emitters, options_, batch.data(), count, slots.data(), counts.data(), progress);
-    for (uint32_t i = 0; i < count; ++i) {
-      const PhotonDeposit* first = slots.data() + size_t(i) * options.bounces;
-      all.insert(all.end(), first, first + counts[i]);
-      if (nextMoving < movingPhotons_.size() && movingPhotons_[nextMoving] == start + i) {
-        std::copy(first, first + counts[i],
-                  movingDeposits_.begin() + ptrdiff_t(nextMoving * options.bounces));
-        movingCounts_[nextMoving++] = counts[i];
-      }
-    }
+  // The moving photons' deposits, kept per photon (both lists ascend).
+  for (size_t i = 0, k = 0; i < all.size(); ++i) {
+    while (k < movingPhotons_.size() && movingPhotons_[k] < owners[i]) ++k;
+    if (k < movingPhotons_.size() && movingPhotons_[k] == owners[i])
+      movingDeposits_[k * options.bounces + movingCounts_[k]++] = all[i];
   }
-  const double traceMs = millisecondsSince(begin);
 
   // The grid: the merge's edge for the target, fixed from now on.
   const auto mergeBegin = std::chrono::steady_clock::now();
@@ -175,27 +147,19 @@ MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t r
   vpls_.assign(capacity, darkVpl(bounds_.center()));
   std::vector<uint32_t> order(lit);
   for (uint32_t i = 0; i < lit; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return cellKeys_[a] < cellKeys_[b]; });
+  std::sort(order.begin(), order.end(),
+            [&](uint32_t a, uint32_t b) { return cells_[a].key < cells_[b].key; });
   for (uint32_t i = 0; i < lit; ++i) cells_[order[i]].slot = int32_t(i);
   for (uint32_t slot = lit; slot < capacity; ++slot) freeSlots_.push_back(slot);
   std::make_heap(freeSlots_.begin(), freeSlots_.end(), std::greater<>());
   stats_.litSlots = lit;
-  for (const uint32_t cell : dirty_) {
-    refresh(cell);
-    isDirty_[cell] = 0;
-  }
-  dirty_.clear();
+  refreshDirtyCells();
   changedSlots_.clear();
 
   stats_.movingPhotons = movingPhotons_.size();
   stats_.slots = capacity;
   if (stats) {
-    stats->photons = photons;
-    stats->deposits = all.size();
-    stats->emittedFlux = emitted;
-    stats->depositedFlux = glm::vec3(0.0f);
-    for (const PhotonDeposit& d : all) stats->depositedFlux += d.flux;
-    stats->traceMs = traceMs;
+    *stats = traced;
     stats->mergeMs = millisecondsSince(mergeBegin);
     stats->cellSize = cellEdge_;
     stats->vpls = stats_.litSlots;
@@ -217,11 +181,7 @@ Light MovingVpls::darkVpl(const glm::vec3& position) const {
 uint32_t MovingVpls::cellFor(const PhotonDeposit& d) {
   const uint64_t key = walk::cellKey(d.position, d.normal, bounds_.min, cellEdge_);
   const auto [it, inserted] = cellOf_.try_emplace(key, uint32_t(cells_.size()));
-  if (inserted) {
-    cells_.emplace_back();
-    cellKeys_.push_back(key);
-    isDirty_.push_back(0);
-  }
+  if (inserted) cells_.push_back(Cell{.key = key});
   return it->second;
 }
 
@@ -243,8 +203,8 @@ void MovingVpls::add(uint32_t index, const PhotonDeposit& d, double sign) {
     c.normal += (sign * w) * glm::dvec3(d.normal);
     c.weight += sign * w;
   }
-  if (!isDirty_[index]) {
-    isDirty_[index] = 1;
+  if (!c.dirty) {
+    c.dirty = true;
     dirty_.push_back(index);
   }
 }
@@ -276,7 +236,7 @@ void MovingVpls::refresh(uint32_t index) {
     if (n > 0.0) {
       normal = glm::vec3(c.normal / n);
     } else {  // opposite normals cancelled: the way the cell's bucket leans
-      const uint64_t bucket = cellKeys_[index] & 7u;
+      const uint64_t bucket = c.key & 7u;
       normal[int(bucket / 2)] = bucket & 1u ? -1.0f : 1.0f;
     }
     const glm::vec3 position = c.weight > 0.0 ? glm::vec3(c.position / c.weight) : c.lastPosition;
@@ -285,6 +245,17 @@ void MovingVpls::refresh(uint32_t index) {
     changedSlots_.push_back(uint32_t(c.slot));
   }
   stats_.droppedCells = stats_.droppedCells + (c.dropped ? 1u : 0u) - (wasDropped ? 1u : 0u);
+}
+
+void MovingVpls::refreshDirtyCells() {
+  // The emptied cells first: the slots they free go to the cells lit in the same update.
+  std::stable_partition(dirty_.begin(), dirty_.end(),
+                        [&](uint32_t cell) { return cells_[cell].deposits == 0; });
+  for (const uint32_t cell : dirty_) {
+    refresh(cell);
+    cells_[cell].dirty = false;
+  }
+  dirty_.clear();
 }
 
 void MovingVpls::moveTo(float seconds, std::vector<Light>& lights, uint32_t first) {
@@ -310,8 +281,7 @@ void MovingVpls::moveTo(float seconds, std::vector<Light>& lights, uint32_t firs
     const auto traceBegin = std::chrono::steady_clock::now();
     std::vector<uint32_t> cells(count * bounces);
     const CellLookup lookup{&cellOf_, bounds_.min, cellEdge_, cells.data()};
-    traceInto(*rays_, emitters, options_, photons.data(), count, slots.data(), counts.data(), nullptr,
-              &lookup);
+    traceInto(*rays_, emitters, options_, photons.data(), count, slots.data(), counts.data(), lookup);
     stats_.traceMs = millisecondsSince(traceBegin);
     const auto mergeBegin = std::chrono::steady_clock::now();
     // In photon order, so that the sums do not depend on the threads. A photon that lands where it
@@ -333,14 +303,7 @@ void MovingVpls::moveTo(float seconds, std::vector<Light>& lights, uint32_t firs
     }
     cursor_ = (cursor_ + count) % moving;
     stats_.retraced = count;
-    // The emptied cells first: the slots they free go to the cells lit this frame.
-    std::stable_partition(dirty_.begin(), dirty_.end(),
-                          [&](uint32_t cell) { return cells_[cell].deposits == 0; });
-    for (const uint32_t cell : dirty_) {
-      refresh(cell);
-      isDirty_[cell] = 0;
-    }
-    dirty_.clear();
+    refreshDirtyCells();
     stats_.mergeMs = millisecondsSince(mergeBegin);
   }
   for (const uint32_t slot : changedSlots_) lights[first + slot] = vpls_[slot];

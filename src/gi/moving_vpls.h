@@ -61,16 +61,19 @@ class MovingVpls {
 
  private:
   struct Cell {
+    uint64_t key = 0;  // walk::cellKey
     glm::dvec3 flux{0.0}, position{0.0}, normal{0.0};
     double weight = 0.0;
     uint32_t deposits = 0;
     int32_t slot = -1;
     bool dropped = false;  // lit, but no slot was free
+    bool dirty = false;    // changed since its VPL was last written
     glm::vec3 lastPosition{0.0f};
   };
   uint32_t cellFor(const PhotonDeposit& d);  // its cell, made when new
   void add(uint32_t cell, const PhotonDeposit& d, double sign);
   void refresh(uint32_t cell);
+  void refreshDirtyCells();
   Light darkVpl(const glm::vec3& position) const;
 
   std::shared_ptr<const RayScene> rays_;
@@ -90,10 +93,8 @@ class MovingVpls {
   size_t cursor_ = 0;  // the next moving photon to trace again
 
   std::unordered_map<uint64_t, uint32_t> cellOf_;
-  std::vector<uint64_t> cellKeys_;
   std::vector<Cell> cells_;
   std::vector<uint32_t> dirty_;
-  std::vector<uint8_t> isDirty_;
   std::vector<uint32_t> freeSlots_;  // a min-heap: the lowest free slot is reused first
   std::vector<Light> vpls_;
   std::vector<uint32_t> changedSlots_;

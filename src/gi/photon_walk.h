@@ -3,6 +3,7 @@
 // moving lights' photons (gi/moving_vpls.cpp). Photon p of a trace always draws from the stream
 // Random(seed, p): its light first, then its path, so the same p, seed and lights give the same walk.
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -44,6 +45,11 @@ glm::vec3 tracePhoton(const RayScene& rays, const Emitters& emitters, uint32_t p
 uint64_t normalBucket(const glm::vec3& normal);
 uint64_t cellKey(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& origin, float cell);
 inline constexpr float kCellSteps = float(1u << 20) - 2.0f;
+
+// The CPU time the photon work took, for PhotonStats and MovingVplStats.
+inline double millisecondsSince(std::chrono::steady_clock::time_point begin) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+}
 
 // How much a deposit pulls its merged VPL's position and normal: its flux's luminance.
 inline float depositWeight(const glm::vec3& flux) {

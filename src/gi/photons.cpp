@@ -165,7 +165,7 @@ Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec
 }
 
 std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const Scene& scene, const VplOptions& options,
-                                        PhotonStats* stats) {
+                                        PhotonStats* stats, std::vector<uint32_t>* owners) {
   const auto begin = std::chrono::steady_clock::now();
   const Emitters emitters = walk::chooseEmitters(scene.lights, scene.directionalLights, scene.worldBounds());
   std::vector<PhotonDeposit> deposits;
@@ -175,6 +175,7 @@ std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const Scene& scene
     constexpr uint32_t kChunk = 1024;
     const uint32_t chunks = (options.photons + kChunk - 1) / kChunk;
     std::vector<std::vector<PhotonDeposit>> perChunk(chunks);
+    std::vector<std::vector<uint32_t>> ownersPerChunk(owners ? chunks : 0);
     std::vector<glm::vec3> emittedPerChunk(chunks, glm::vec3(0.0f));
     parallelFor(
         chunks, options.threads,
@@ -184,14 +185,17 @@ std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const Scene& scene
             Random random(options.seed, p);
             emittedPerChunk[c] +=
                 walk::tracePhoton(rays, emitters, options.photons, options.bounces, random, perChunk[c]);
+            if (owners) ownersPerChunk[c].resize(perChunk[c].size(), p);
           }
         },
         options.progress);
     size_t total = 0;
     for (const auto& chunk : perChunk) total += chunk.size();
     deposits.reserve(total);
+    if (owners) owners->reserve(total);
     for (uint32_t c = 0; c < chunks; ++c) {
       deposits.insert(deposits.end(), perChunk[c].begin(), perChunk[c].end());
+      if (owners) owners->insert(owners->end(), ownersPerChunk[c].begin(), ownersPerChunk[c].end());
       emitted += emittedPerChunk[c];
     }
   }
@@ -201,8 +205,7 @@ std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const Scene& scene
     stats->emittedFlux = emitted;
     stats->depositedFlux = glm::vec3(0.0f);
     for (const PhotonDeposit& d : deposits) stats->depositedFlux += d.flux;
-    stats->traceMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+    stats->traceMs = walk::millisecondsSince(begin);
   }
   return deposits;
 }
@@ -267,8 +270,7 @@ std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uin
     if (stats) {
       stats->cellSize = cell;
       stats->vpls = vpls.size();
-      stats->mergeMs =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+      stats->mergeMs = walk::millisecondsSince(begin);
     }
     return vpls;
   };

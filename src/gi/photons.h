@@ -82,8 +82,10 @@ struct PhotonStats {
 // do not emit). A directional light shines through a disk as wide as the scene's bounding sphere,
 // from outside it: its flux is illuminance x pi R^2. Deterministic for a seed, whatever the thread
 // count.
+// `owners` (optional) receives the photon each deposit came from, ascending with the deposits.
 std::vector<PhotonDeposit> tracePhotons(const RayScene& rays, const Scene& scene, const VplOptions& options,
-                                        PhotonStats* stats = nullptr);
+                                        PhotonStats* stats = nullptr,
+                                        std::vector<uint32_t>* owners = nullptr);
 
 // The irradiance at which a VPL is cut off: `cutoff` times the deposits' total flux over the scene's
 // surface area, `surfaceArea` (RayScene::surfaceArea), both sides of every triangle counted: light

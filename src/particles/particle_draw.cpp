@@ -145,8 +145,10 @@ void ParticleSystem::draw(FrameContext& frame, const LightingInterface& lighting
     drawRaster(frame, pipelines, lighting, layer);
   } else {
     // With glass the one composite (before it) blends both layers; each is resolved on its side of it.
-    if (first) binTiles(frame);
-    if (layer != ParticleLayer::InFrontOfGlass) composite(frame, pipelines, lighting, layer);
+    if (first) {
+      binTiles(frame);
+      composite(frame, pipelines, lighting);
+    }
     resolve(frame, layer);
   }
 }

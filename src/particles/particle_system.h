@@ -177,8 +177,8 @@ class ParticleSystem {
   void prepareTiles(const FrameContext& frame);
   void allocateTileEntries(uint64_t entries);
   void binTiles(FrameContext& frame);
-  void composite(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting,
-                 ParticleLayer layer);
+  // Every layer at once: with glass in the scene, the particles in front of it and behind it.
+  void composite(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
   void resolve(FrameContext& frame, ParticleLayer layer);
 
   Context& context_;

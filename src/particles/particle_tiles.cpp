@@ -175,14 +175,14 @@ void ParticleSystem::binTiles(FrameContext& frame) {
 }
 
 void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelines,
-                               const LightingInterface& lighting, ParticleLayer layer) {
+                               const LightingInterface& lighting) {
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
-  const Image& depth = particleSceneDepth(targets, layer);
-  // BehindGlass: the one composite of a scene with glass, both layers (All: the only layer).
-  const bool behind = layer == ParticleLayer::BehindGlass;
-  const Image& glass = particleGlassDepth(targets, layer);
-  const Buffer& layersBehind = behind ? t.layersBehind : t.layers;  // a stand-in never written
+  const Image& depth = targets.depth;
+  // With glass: its depth, and the layer behind it. Without: stand-ins the shader never touches.
+  const bool behind = bool(targets.glassDepth);
+  const Image& glass = behind ? targets.glassDepth : depth;
+  const Buffer& layersBehind = behind ? t.layersBehind : t.layers;
   const Image& layerDepthBehind = behind ? t.layerDepthBehind : t.layerDepth;
   std::vector<ResourceUse> used{uses(depth, Use::Sampled, kCompute),
                                 uses(counters_, Use::StorageRead, kCompute),

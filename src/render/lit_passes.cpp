@@ -60,15 +60,14 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
   glassLayout_ = PipelineLayout(context, {shader});
   glassCompute_ = Pipeline(context, glassLayout_, shader, constants);
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-  requireStorageBufferFits(context, uint64_t(targets.width) * targets.height, 4,
-                           "the glass fragments' list heads", "pixels",
+  const uint64_t pixels = uint64_t(targets.width) * targets.height;
+  requireStorageBufferFits(context, pixels, 4, "the glass fragments' list heads", "pixels",
                            "use a lower resolution or --glass raster");
-  glassHeads_ = Buffer(context, uint64_t(targets.width) * targets.height * 4, storage, MemoryUse::Device,
-                       "glass heads");
+  glassHeads_ = Buffer(context, pixels * 4, storage, MemoryUse::Device, "glass heads");
   glassCounters_ =
       Buffer(context, sizeof(gpu::GlassCounters), storage, MemoryUse::Readback, "glass counters");
   // An eighth of the pixels to start with: where glass covers more, the first frame grows the pool.
-  allocateGlassPool(std::max<uint64_t>(uint64_t(pixels_) / 8, 16384));
+  allocateGlassPool(std::max<uint64_t>(pixels / 8, 16384));
 }
 
 void LitPasses::allocateGlassPool(uint64_t fragments) {

@@ -24,6 +24,13 @@ std::string isoDate() {
   return buffer;
 }
 
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 std::vector<PassSummary> summarizePasses(const std::vector<FrameResult>& frames) {
   std::vector<std::string> order;
   std::map<std::string, std::vector<double>> samples;
@@ -35,11 +42,9 @@ std::vector<PassSummary> summarizePasses(const std::vector<FrameResult>& frames)
   }
   std::vector<PassSummary> summaries;
   for (const std::string& name : order) {
-    std::vector<double>& v = samples[name];
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    const double median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-    summaries.push_back({name, median, v.front(), v.back()});
+    const std::vector<double>& v = samples[name];
+    const auto [least, most] = std::minmax_element(v.begin(), v.end());
+    summaries.push_back({name, median(v), *least, *most});
   }
   return summaries;
 }

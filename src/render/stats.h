@@ -17,6 +17,9 @@ struct PassSummary {
   double maxMs = 0.0;
 };
 
+// The median of `values` (the mean of the two middle ones for an even count); 0 for none.
+double median(std::vector<double> values);
+
 // Median/min/max of each pass over frames; passes keep the order of the first frame.
 std::vector<PassSummary> summarizePasses(const std::vector<FrameResult>& frames);
 

@@ -58,11 +58,10 @@ void addIndirectLight(Scene& scene, const SceneRequest& request, std::vector<std
   const uint64_t others = vplOnly ? 0 : scene.lights.size();
   std::vector<Light> vpls;
   if (request.movingLights && !scene.lightAnimation.empty() && request.gi.retrace > 0) {
-    auto moving = std::make_unique<gi::MovingVpls>(
+    scene.movingIndirect.vpls = std::make_shared<gi::MovingVpls>(
         scene, options, request.gi.retrace,
         uint32_t(gpu::kMaxLights - std::min<uint64_t>(others, gpu::kMaxLights)), 0.0f, &stats);
-    vpls = moving->vpls();
-    scene.movingIndirect.vpls = std::move(moving);
+    vpls = scene.movingIndirect.vpls->vpls();
     scene.movingIndirect.clone = &gi::cloneMovingVpls;
     scene.movingIndirect.first = uint32_t(others);
   } else {

@@ -315,7 +315,7 @@ void Viewer::applyScriptSet(const ScriptEvent& e) {
   const std::string& option = e.args[0];
   const std::string& value = e.args[1];
   if (option == "technique")
-    settings_.technique = value;  // an unknown name fails in rebuildRenderer, shown as a message
+    settings_.technique = value;  // an unknown name fails in rebuild(), shown as a message
   else if (option == "debug-view")
     settings_.debugView = value;
   else if (option == "exposure")
