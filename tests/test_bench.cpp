@@ -313,7 +313,14 @@ TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) 
 TEST(BenchSuites, GiSuitesVaryTheVplCountAndCutoff) {
   std::set<uint32_t> counts;
   std::set<float> cutoffs;
+  int interleaved = 0;
   for (const Scenario& s : buildSuite("gi", SuiteOptions{})) {
+    if (s.settings.vplInterleave > 1) {  // lll and tiled at Infinity's count, K = 2 and 3
+      ++interleaved;
+      EXPECT_EQ(s.scene.gi.vplCount, 5144u);
+      EXPECT_TRUE(s.settings.technique == "lll" || s.settings.technique == "tiled") << s.settings.technique;
+      EXPECT_NE(s.series.find(fmt::format("interleave {}", s.settings.vplInterleave)), std::string::npos);
+    }
     EXPECT_EQ(s.scene.gi.mode, "vpl-only");
     EXPECT_GE(s.scene.gi.photons, 2 * s.scene.gi.vplCount) << "too few deposits to merge into the count";
     counts.insert(s.scene.gi.vplCount);
@@ -325,6 +332,7 @@ TEST(BenchSuites, GiSuitesVaryTheVplCountAndCutoff) {
     EXPECT_TRUE(s.series.ends_with(fmt::format("cutoff {}", s.scene.gi.vplCutoff))) << s.series;
   }
   EXPECT_EQ(counts, (std::set<uint32_t>{512, 5144, 65536, 1048576}));
+  EXPECT_EQ(interleaved, 8) << "2 cutoffs x 2 patterns x 2 techniques";
   EXPECT_EQ(cutoffs.size(), 2u);
   const auto error = buildSuite("gi-error", SuiteOptions{});
   EXPECT_EQ(error.size(), 16u);

@@ -1,6 +1,9 @@
 // The Light Linked List's buffers (set 0, bindings 3..10) and the two operations on them: pushing
 // a link at a list's head (fills) and walking a list (every shading pass). A tile has one list, or
-// one per depth slice with --lll-slices (shared/depth_slices.h): list tile * slices + slice.
+// one per depth slice with --lll-slices (shared/depth_slices.h): list tile * slices + slice. With
+// --vpl-interleave each of those is split by light class (listClasses() heads in a row, at
+// list * listClasses() + class): the lights before the VPLs, then one class of VPLs each, so that a
+// pixel that evaluates one class walks two short lists instead of one long one.
 #ifndef LLL_DATA_GLSL
 #define LLL_DATA_GLSL
 #include "common/frame.glsl"
@@ -44,7 +47,21 @@ uint listSlices() {
   return max(lll.slicing.x, 1u);
 }
 
-// The list that lights a point at `viewDepth` in tile `tileIndex`.
+// Heads per list: 1, or 1 + K*K with --vpl-interleave K (above).
+uint listClasses() {
+  return max(lll.slicing.y, 1u);
+}
+
+// Which of a list's heads light `lightIndex` is pushed at: 0 for the lights before the VPLs (which
+// end the light array from FrameUniforms' display.w), 1 + its class for a VPL.
+uint lightListClass(uint lightIndex) {
+  uint classes = listClasses();
+  if (classes == 1u || lightIndex < frame.display.w) return 0u;
+  return 1u + (lightIndex - frame.display.w) % (classes - 1u);
+}
+
+// The list that lights a point at `viewDepth` in tile `tileIndex` (its first head: listClasses() in
+// a row).
 uint listIndexOf(uint tileIndex, float viewDepth) {
   uint slices = listSlices();
   if (slices == 1u) return tileIndex;
@@ -115,8 +132,10 @@ uvec2 listsOverlapping(uint tileIndex, float minDepth, float maxDepth) {
 void pushLink(uint tileIndex, uint lightIndex, float minDepth, float maxDepth) {
   uvec2 lists = listsOverlapping(tileIndex, minDepth, maxDepth);
   uint link = atomicAdd(counters.linksRequested, lists.y - lists.x + 1u);
+  uint classes = listClasses(), lightClass = lightListClass(lightIndex);
   for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
-    writeLink(link, lightIndex, minDepth, maxDepth, atomicExchange(tileHeads[list], link));
+    writeLink(link, lightIndex, minDepth, maxDepth,
+              atomicExchange(tileHeads[list * classes + lightClass], link));
 }
 #endif
 

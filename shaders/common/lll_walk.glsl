@@ -24,9 +24,10 @@ bool nextListedLight(inout uint link, inout uint steps, float linearDepth, out u
   return false;
 }
 
-uint listLength(uint list) {
+// Links under one head (tileHeads[head]).
+uint listLength(uint head) {
   uint count = 0u;
-  uint link = tileHeads[list];
+  uint link = tileHeads[head];
   for (; !isListEnd(link) && count < longestPossibleList(); ++count) link = readLink(link).next;
   return count;
 }

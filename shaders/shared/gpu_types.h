@@ -32,7 +32,8 @@ struct FrameUniforms {
   uvec4 counts;         // x light count, y tile size, z tiles x, w tiles y
   vec4 ambient;         // rgb constant ambient radiance, w exposure
   uvec4 display;        // x kDisplayFilmic or kDisplayDebug (skips the filmic curve), y heatmap scale,
-                        // z directional lights in use, w unused
+                        // z directional lights in use, w the first of the VPLs that end the light
+                        // array (the light count without): --vpl-interleave classes them by index
   vec4 sunDirection[kMaxDirectionalLights];    // xyz unit, towards the light; w unused
   vec4 sunIlluminance[kMaxDirectionalLights];  // rgb colour x illuminance (lux); w unused
 };

@@ -17,6 +17,8 @@ LLL_CONST(uint, kMaxStorageBufferBytes, 128u * 1024u * 1024u);
 // device's largest storage buffer holds fewer (lavapipe: 128 MiB, 2,097,152 lights) the renderer
 // refuses with the count that fits (requireStorageBufferFits).
 LLL_CONST(uint, kMaxLights, 1u << 24);
+// --vpl-interleave: the largest side of the interleaving pattern (render/interleaved_vpls.h).
+LLL_CONST(uint, kMaxVplInterleave, 4u);
 // 2D compute passes (linear depth, tonemap, tile reduction) use 8x8 groups: 64 invocations is a
 // multiple of every subgroup size we meet (8 on lavapipe, 32 on NVIDIA).
 LLL_CONST(uint, kTileGroupSize, 8u);

@@ -30,7 +30,9 @@ struct LllUniforms {
   // x link pool capacity (links), y link format, z debug view, w workgroups per cell of the compute
   // fill (each takes a part of the cell's binned lights).
   uvec4 params;
-  // x lists per tile: 1, or its depth slices with --lll-slices (shared/depth_slices.h); yzw unused.
+  // x lists per tile: 1, or its depth slices with --lll-slices (shared/depth_slices.h); y lists per
+  // slice: 1, or with --vpl-interleave K 1 + K*K, the lights before the VPLs in the first and each
+  // class of VPLs in its own (common/lll_data.glsl, render/interleaved_vpls.h); zw unused.
   uvec4 slicing;
 };
 LLL_CHECK_SIZE(LllUniforms, 48);

@@ -161,6 +161,12 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "--gi with moving lights (--animate): photons of the moving lights traced again each frame, "
                  "so that their indirect light follows them (0: it stays where it was first traced)")
       ->check(CLI::Range(0u, lll::gi::kMaxPhotons));
+  cmd.add_option(
+         "--vpl-interleave", s.vplInterleave,
+         "--gi: each pixel of a KxK block evaluates a (K*K)th of the virtual point lights and a filter "
+         "gathers the others from its neighbours on the same surface (1: every pixel evaluates every "
+         "VPL; opaque surfaces drawn from the visibility buffer only; 1 to 4)")
+      ->check(CLI::Range(1u, lll::gpu::kMaxVplInterleave));
   cmd.add_option("--debug-view", s.debugView,
                  "none | heatmap | bounds | tiles (lll; heatmap and tiles: tiled, clustered)")
       ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));

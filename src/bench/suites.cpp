@@ -411,7 +411,8 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
 
 // Instant radiosity (issue 15): the atrium lit by its VPLs alone (--gi vpl-only), 512 to a million
 // (5,144 is Infinity's figure), at the default cutoff (each VPL reaches far: quality) and at 0.05
-// (short ranges: speed), by every technique that finishes.
+// (short ranges: speed), by every technique that finishes; at the second count lll and tiled also
+// with interleaved VPLs (--vpl-interleave 2 and 3), whose frames are compared with forward's without.
 // A scene lit by its VPLs alone: `vpls` of them from about 1.5 times as many deposits.
 SceneRequest vplScene(const char* scene, uint32_t vpls, float cutoff, float range,
                       const SuiteOptions& options) {
@@ -437,6 +438,16 @@ std::vector<Scenario> giSuite(const SuiteOptions& options) {
         s.series = fmt::format("{}, cutoff {}", techniqueLabel(s.settings), cutoff);
         skipWhereTooSlow(s, vpls, options);
         out.push_back(s);
+      }
+      if (vpls != counts[1]) continue;
+      for (const uint32_t side : {2u, 3u}) {
+        for (const char* technique : {"lll", "tiled"}) {
+          Scenario s = base;
+          s.settings.technique = technique;
+          s.settings.vplInterleave = side;
+          s.series = fmt::format("{} interleave {}, cutoff {}", techniqueLabel(s.settings), side, cutoff);
+          out.push_back(s);
+        }
       }
     }
   }

@@ -140,7 +140,8 @@ class LightLinkedList final : public Technique {
   uint32_t tilesY_ = 0;
   uint32_t tiles_ = 0;
   uint32_t fillSplits_ = 1;
-  uint32_t slices_ = 1;  // lists per tile
+  uint32_t slices_ = 1;   // lists per tile
+  uint32_t classes_ = 1;  // heads per list: 1 + K*K with --vpl-interleave K and VPLs (lll_data.glsl)
   uint64_t poolCapacity_ = 0;
   uint64_t maxPoolLinks_ = 0;
   uint32_t overflows_ = 0;
@@ -197,7 +198,11 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
     throw InputError(fmt::format("--lll-slices {}: expected 1 (one list per tile) to {} lists per tile",
                                  settings.lllSlices, gpu::kMaxLllSlices));
   slices_ = lllListsPerTile(settings);
-  uniforms_.slicing = glm::uvec4(slices_, 0, 0, 0);
+  // --vpl-interleave: the lights before the VPLs in one list, each class of VPLs in its own, so
+  // that a pixel walks only the class it evaluates (render/interleaved_vpls.h).
+  if (settings.vplInterleave > 1 && scene.vplsTrail() && scene.firstTrailingVpl() < scene.lightCount())
+    classes_ = 1 + settings.vplInterleave * settings.vplInterleave;
+  uniforms_.slicing = glm::uvec4(slices_, classes_, 0, 0);
   uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),
                              float(targets.height) / float(tilesY_ * tile), 0.0f, 0.0f);
@@ -224,9 +229,11 @@ void LightLinkedList::createBuffers() {
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   uniformBuffer_ =
       Buffer(context_, sizeof(gpu::LllUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
-  requireStorageBufferFits(context_, uint64_t(tiles_) * slices_, 4, "the light linked list's head array",
-                           "lists (heads)", "use fewer --lll-slices, a larger --tile or a lower resolution");
-  heads_ = Buffer(context_, uint64_t(tiles_) * slices_ * 4, storage, MemoryUse::Device);
+  requireStorageBufferFits(
+      context_, uint64_t(tiles_) * slices_ * classes_, 4, "the light linked list's head array",
+      "lists (heads)",
+      "use fewer --lll-slices, a larger --tile, a lower resolution or a smaller --vpl-interleave");
+  heads_ = Buffer(context_, uint64_t(tiles_) * slices_ * classes_ * 4, storage, MemoryUse::Device);
   tileRange_ = Buffer(context_, uint64_t(tiles_) * 8, storage, MemoryUse::Device);
   // Read by the CPU after each frame: link requests (overflow) and list statistics.
   counters_ = Buffer(context_, sizeof(gpu::LllCounters), storage, MemoryUse::Readback);
@@ -444,7 +451,7 @@ void LightLinkedList::measureLists(FrameContext& frame) {
                    [&](VkCommandBuffer cmd) {
                      statsPipeline_.bind(cmd);
                      descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-                     vkCmdDispatch(cmd, divideRoundingUp(tiles_ * slices_, 64), 1, 1);
+                     vkCmdDispatch(cmd, divideRoundingUp(tiles_ * slices_ * classes_, 64), 1, 1);
                    });
 }
 
@@ -474,9 +481,10 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
       {"links_used", double(lastCounters_.linksRequested)},
       {"link_pool_capacity", double(poolCapacity_)},
       {"link_pool_bytes", double(poolCapacity_ * linkBytes_)},
-      {"head_bytes", double(tiles_) * slices_ * 4},
+      {"head_bytes", double(tiles_) * slices_ * classes_ * 4},
       {"tile_depth_bytes", double(tiles_) * 8},
       {"lists_per_tile", double(slices_)},
+      {"heads_per_list", double(classes_)},
       {"link_bytes_each", double(linkBytes_)},
       {"overflows", double(overflows_)},
       {"tiles", double(tiles_)},
@@ -507,8 +515,10 @@ TileLightLists LightLinkedList::readLists() {
   for (uint32_t t = 0; t < tiles_; ++t)
     lists.tileRange.emplace_back(std::bit_cast<float>(depth[2 * t]), std::bit_cast<float>(depth[2 * t + 1]));
   lists.lists.resize(size_t(tiles_) * slices_);
-  for (size_t t = 0; t < lists.lists.size(); ++t) {
-    uint32_t link = heads[t];
+  // A list's class heads (--vpl-interleave) read one after the other, as the walk does.
+  for (size_t head = 0; head < lists.lists.size() * classes_; ++head) {
+    const size_t t = head / classes_;
+    uint32_t link = heads[head];
     for (uint64_t guard = 0; link != gpu::kLinkEnd && guard < poolCapacity_; ++guard) {
       if (linkFormat_ == gpu::kLinkCompact) {
         if (link == gpu::kCompactLinkEnd) break;

@@ -229,6 +229,10 @@ void GpuScene::uploadLights(const std::vector<Light>& lights) {
     lights_ = Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device, "lights");
   lights_.upload(std::span<const gpu::GpuLight>(gpuLights));
   lightCount_ = uint32_t(lights.size());
+  firstTrailingVpl_ = lightCount_;
+  while (firstTrailingVpl_ > 0 && lights[firstTrailingVpl_ - 1].type == LightType::Vpl) --firstTrailingVpl_;
+  vplsTrail_ = std::none_of(lights.begin(), lights.begin() + firstTrailingVpl_,
+                            [](const Light& l) { return l.type == LightType::Vpl; });
 }
 
 void GpuScene::uploadTextures() {

@@ -54,6 +54,10 @@ class GpuScene {
   // render/frame.h). Shadow views set in it by LocalShadows are cleared (Renderer::updateLights).
   void uploadLights(const std::vector<Light>& lights);
   uint32_t lightCount() const { return lightCount_; }
+  // Where the block of VPLs at the end of the light array starts (lightCount() without VPLs), and
+  // whether every VPL is in it (as --gi appends them): --vpl-interleave classes them by index.
+  uint32_t firstTrailingVpl() const { return firstTrailingVpl_; }
+  bool vplsTrail() const { return vplsTrail_; }
   // Whether local lights cast shadows this run (--shadows all): set by the renderer before any pass
   // specializes its light evaluation on it (lightTypeConstants, render/frame.h).
   bool shadowedLights() const { return shadowedLights_; }
@@ -132,6 +136,8 @@ class GpuScene {
   Buffer materials_;
   Buffer lights_;
   uint32_t lightCount_ = 0;
+  uint32_t firstTrailingVpl_ = 0;
+  bool vplsTrail_ = true;
   bool shadowedLights_ = false;
   std::vector<Image> textures_;  // scene textures, then neutral white, neutral normal, black
   std::vector<DrawItem> draws_;  // grouped by material

@@ -12,19 +12,28 @@ namespace lll {
 
 LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets& targets,
                      const VisibilityBuffer* visibility, OpaqueShading opaque, LightingInterface lighting,
-                     bool computeGlass)
+                     bool computeGlass, uint32_t vplInterleave)
     : context_(context),
       opaque_(opaque),
       lighting_(std::move(lighting)),
       pixels_(double(targets.width) * targets.height),
       computeGlass_(computeGlass && scene.hasBlendDraws()) {
+  checkVplInterleave(vplInterleave);
   SpecializationConstants constants = lightTypeConstants(scene);
+  // --gi appends the VPLs: classed by their index (render/interleaved_vpls.h).
+  const bool sceneHasVpls = constants.at(32) != 0 && scene.vplsTrail();
   if (opaque_ == OpaqueShading::Visibility) {
     if (!visibility) throw std::logic_error("LitPasses: visibility shading without a visibility buffer");
-    constants.merge(visibility->surfaceConstants(scene));
-    const std::string shader = litShader(lighting_, "shade_visibility.comp");
-    computeLayout_ = PipelineLayout(context, {shader}, {scene.textureTableLayout()}, constants);
-    compute_ = Pipeline(context, computeLayout_, shader, constants);
+    SpecializationConstants opaqueConstants = constants;
+    opaqueConstants.merge(visibility->surfaceConstants(scene));
+    std::string shader = litShader(lighting_, "shade_visibility.comp");
+    if (vplInterleave > 1 && sceneHasVpls) {
+      interleaved_ = std::make_unique<InterleavedVpls>(context, targets, vplInterleave);
+      opaqueConstants.merge(interleaved_->constants());
+      shader = litShader(lighting_, "shade_visibility_interleaved.comp");
+    }
+    computeLayout_ = PipelineLayout(context, {shader}, {scene.textureTableLayout()}, opaqueConstants);
+    compute_ = Pipeline(context, computeLayout_, shader, opaqueConstants);
   } else if (opaque_ == OpaqueShading::GBuffer) {
     gbuffer_ = std::make_unique<GBuffer>(context, scene, targets);
     const std::string shader = litShader(lighting_, "shade_gbuffer.comp");
@@ -190,15 +199,18 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
       frame.graph.pass("shade-opaque",
                        std::vector<ResourceUse>{uses(t.hdr, Use::StorageWrite, kCompute),
                                                 uses(t.visibility, Use::StorageRead, kCompute)} +
-                           lighting_.reads(kCompute),
+                           lighting_.reads(kCompute) +
+                           (interleaved_ ? interleaved_->shadingWrites() : std::vector<ResourceUse>{}),
                        [&](VkCommandBuffer cmd) {
                          DescriptorWriter writer = litDescriptors(frame);
                          frame.visibility->bindSurfaceData(writer, frame);
+                         if (interleaved_) interleaved_->bindImages(writer);
                          const VkDescriptorSet textures = frame.scene.textureTable();
                          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, computeLayout_.handle(),
                                                  1, 1, &textures, 0, nullptr);
                          dispatch(frame, cmd, writer);
                        });
+      if (interleaved_) interleaved_->filter(frame);
       return;
   }
 }
@@ -207,7 +219,10 @@ void LitPasses::dispatch(FrameContext& frame, VkCommandBuffer cmd, DescriptorWri
   compute_.bind(cmd);
   writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, frame.targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
       .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, computeLayout_);
-  dispatchPerPixel(cmd, frame.targets);
+  if (interleaved_)
+    interleaved_->dispatch(cmd, frame.targets);
+  else
+    dispatchPerPixel(cmd, frame.targets);
 }
 
 void LitPasses::shadeGlass(FrameContext& frame) {
@@ -233,9 +248,10 @@ void LitPasses::drawGeometry(FrameContext& frame, const Pipeline& pipeline, Draw
 
 std::vector<std::pair<std::string, double>> LitPasses::stats() const {
   std::vector<std::pair<std::string, double>> s;
+  if (interleaved_) s = interleaved_->stats();
   if (gbuffer_)
-    s = {{"gbuffer-bytes-per-pixel", GBuffer::kBytesPerPixel},
-         {"gbuffer_bytes", GBuffer::kBytesPerPixel * pixels_}};
+    s.insert(s.end(), {{"gbuffer-bytes-per-pixel", GBuffer::kBytesPerPixel},
+                       {"gbuffer_bytes", GBuffer::kBytesPerPixel * pixels_}});
   if (computeGlass_)
     s.insert(s.end(), {{"glass-fragments", double(lastGlass_.fragments)},
                        {"glass-fragment-capacity", double(glassCapacity_)},

@@ -8,6 +8,9 @@
 //                  (the default) a "glass-fragments" geometry pass stores each pixel's glass
 //                  fragments and a compute pass lights and blends them (shared/glass_types.h);
 //                  with --glass raster a geometry pass lights each fragment and blends it
+//   vpl-filter     with --vpl-interleave K > 1, a scene with VPLs and opaque surfaces from the
+//                  visibility buffer: shade-opaque evaluates a K*K-th of the VPLs per pixel and this
+//                  gathers the rest (render/interleaved_vpls.h)
 // (particles are drawn by the particle system with the same interface: particles/particle_system.h).
 #include <memory>
 #include <string>
@@ -17,6 +20,7 @@
 #include "gpu/pipeline.h"
 #include "render/frame.h"
 #include "render/gbuffer.h"
+#include "render/interleaved_vpls.h"
 #include "render/lighting_interface.h"
 #include "shared/glass_types.h"
 
@@ -26,7 +30,7 @@ class LitPasses {
  public:
   LitPasses(Context& context, const GpuScene& scene, const FrameTargets& targets,
             const VisibilityBuffer* visibility, OpaqueShading opaque, LightingInterface lighting,
-            bool computeGlass);
+            bool computeGlass, uint32_t vplInterleave = 1);
   ~LitPasses();
   LitPasses(const LitPasses&) = delete;
   LitPasses& operator=(const LitPasses&) = delete;
@@ -57,6 +61,7 @@ class LitPasses {
   PipelineLayout computeLayout_;
   Pipeline compute_;
   std::unique_ptr<GBuffer> gbuffer_;
+  std::unique_ptr<InterleavedVpls> interleaved_;
   VkSampler depthSampler_ = VK_NULL_HANDLE;
   PipelineLayout meshLayout_;
   Pipeline geometryOpaque_;

@@ -96,7 +96,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
       findTechnique(settings.technique).create(context, *gpuScene_, settings_, targets_, visibility_.get());
   lit_ = std::make_unique<LitPasses>(context, *gpuScene_, targets_, visibility_.get(),
                                      technique_->opaqueShading(), technique_->lighting(),
-                                     settings_.glass == "compute");
+                                     settings_.glass == "compute", settings_.vplInterleave);
 }
 
 void Renderer::chooseSurfaces() {
@@ -207,8 +207,9 @@ void Renderer::updateUniforms() {
                         divideRoundingUp(settings_.height, tile));
   u.ambient = glm::vec4(glm::vec3(settings_.ambient), settings_.exposure);
   const bool debugColors = settings_.debugView == "heatmap" || settings_.debugView == "bounds";
-  u.display = glm::uvec4(debugColors ? gpu::kDisplayDebug : gpu::kDisplayFilmic,
-                         settings_.debugView == "heatmap" ? kHeatmapScale : 0u, 0u, 0u);
+  u.display =
+      glm::uvec4(debugColors ? gpu::kDisplayDebug : gpu::kDisplayFilmic,
+                 settings_.debugView == "heatmap" ? kHeatmapScale : 0u, 0u, gpuScene_->firstTrailingVpl());
   const std::vector<DirectionalLight>& suns = gpuScene_->scene().directionalLights;
   u.display.z = uint32_t(std::min<size_t>(suns.size(), gpu::kMaxDirectionalLights));  // loaders refuse more
   // The sun that casts the shadow goes first (shaders read its shadow as the first's).

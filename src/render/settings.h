@@ -31,6 +31,10 @@ struct RenderSettings {
   // Who rasterizes the visibility buffer's opaque triangles: hardware | compute
   // (render/compute_raster.h) | auto (compute where it was measured faster: a discrete GPU).
   std::string raster = "auto";
+  // Interleaved sampling of the virtual point lights (render/interleaved_vpls.h): each pixel of a
+  // K x K block evaluates a K*K-th of them and a filter gathers the rest from its neighbours on the
+  // same surface; 1 (off) to kMaxVplInterleave. Opaque shading from the visibility buffer only.
+  uint32_t vplInterleave = 1;
   uint32_t tileSize = 8;
   uint32_t linksPerTile = 32;  // initial link pool: tiles * this, grown on overflow
   // Workgroups sharing each cell's lights in lll's compute fill (1 to 64); 0: by light count.

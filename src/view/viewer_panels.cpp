@@ -189,6 +189,8 @@ void Viewer::drawControls() {
     float range = request_.gi.vplRange;
     ImGui::DragFloat("VPL range m (0: cutoff)", &range, 0.05f, 0.0f, 1e6f);
     if (ImGui::IsItemDeactivatedAfterEdit()) request_.gi.vplRange = std::clamp(range, 0.0f, 1e6f);
+    // Each pixel of a KxK block evaluates a (K*K)th of the VPLs (render/interleaved_vpls.h).
+    choice("VPL interleave K", settings_.vplInterleave, {1u, 2u, 3u, 4u});
     // With moving lights: the photons traced again each frame (gi/moving_vpls.h; 0: the VPLs stay).
     committedUint("re-traced photons a frame", request_.gi.retrace, 0, gi::kMaxPhotons);
   }

@@ -16,7 +16,8 @@
 // allocates all its links of a batch with one atomic on the global counter (shared-memory offsets
 // within the group) instead of one per link: 16 full-screen lights at 1080p are 518,400 links.
 // With depth-sliced lists (--lll-slices) a light gets a link in each of its tile's slices its depth
-// bounds overlap, pushed at that slice's head with an atomic exchange (the cell's parts share them).
+// bounds overlap, pushed at that slice's head with an atomic exchange (the cell's parts share them);
+// so is each link with --vpl-interleave's class lists (at its light's class's head).
 #include "common/light_bins.glsl"
 #include "lighting/lll/light_shape.glsl"
 
@@ -49,8 +50,9 @@ void main() {
   float zNear = frame.depthParams.x;
   vec2 range = valid ? tileRange[tileIndex] : vec2(zNear);
   float far = valid ? range.y : 0.0;
-  uint slices = listSlices();
-  bool sliced = slices > 1u;
+  uint slices = listSlices(), classes = listClasses();
+  // Links pushed at shared heads with an atomic exchange: depth slices or class lists.
+  bool sliced = slices > 1u || classes > 1u;
   uvec2 split = lllSliceSplit(range, slices);
   if (gl_LocalInvocationIndex == 0u) groupFarBits = 0u;
   barrier();
@@ -109,7 +111,7 @@ void main() {
       hits[i >> 5] |= 1u << (i & 31u);
     }
     uint own = bitCount(hits.x) + bitCount(hits.y);
-    for (uint word = 0u; sliced && word < 2u; ++word) {
+    for (uint word = 0u; slices > 1u && word < 2u; ++word) {
       own -= bitCount(hits[word]);
       for (uint bits = hits[word]; bits != 0u; bits &= bits - 1u) {
         vec2 depths = candidateDepths[word * 32u + uint(findLSB(bits))];
@@ -131,9 +133,13 @@ void main() {
         uint index = candidates[i] & ~kShapedCandidate;
         vec2 depths = candidateDepths[i];
         if (sliced) {
-          uvec2 lists = tileIndex * slices + depthSlicesOverlapping(range, depths.x, depths.y, split, zNear);
+          uvec2 lists = slices > 1u ? tileIndex * slices +
+                                          depthSlicesOverlapping(range, depths.x, depths.y, split, zNear)
+                                    : uvec2(tileIndex);
+          uint lightClass = lightListClass(index);
           for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
-            writeLink(link, index, depths.x, depths.y, atomicExchange(tileHeads[list], link));
+            writeLink(link, index, depths.x, depths.y,
+                      atomicExchange(tileHeads[list * classes + lightClass], link));
           continue;
         }
         writeLink(link, index, depths.x, depths.y, head);

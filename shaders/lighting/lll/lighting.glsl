@@ -6,18 +6,41 @@
 #include "common/debug_colors.glsl"
 #include "common/lll_walk.glsl"
 
+// The list's first head, then `headsLeft` more from nextHead on (the VPL classes with
+// --vpl-interleave).
 struct LightCursor {
   uint link;
   uint steps;
   float viewDepth;
+  uint nextHead;
+  uint headsLeft;
 };
 
 LightCursor lightsAt(uvec2 pixel, float viewDepth) {
-  return LightCursor(tileHeads[listIndexOf(tileIndexOf(pixel), viewDepth)], 0u, viewDepth);
+  uint head = listIndexOf(tileIndexOf(pixel), viewDepth) * listClasses();
+  return LightCursor(tileHeads[head], 0u, viewDepth, head + 1u, listClasses() - 1u);
+}
+
+// The lights a pixel that evaluates only VPL class `vplClass` needs (gi/interleaved_vpls.glsl):
+// with class lists, the first head and that class's; without, the whole list (the shading pass
+// skips the other classes by index).
+#define LIGHTING_CLASS_LISTS
+LightCursor lightsAtInClass(uvec2 pixel, float viewDepth, uint vplClass) {
+  LightCursor cursor = lightsAt(pixel, viewDepth);
+  if (listClasses() > 1u) {
+    cursor.nextHead += vplClass;
+    cursor.headsLeft = 1u;
+  }
+  return cursor;
 }
 
 bool nextLight(inout LightCursor cursor, out uint light) {
-  return nextListedLight(cursor.link, cursor.steps, cursor.viewDepth, light);
+  while (!nextListedLight(cursor.link, cursor.steps, cursor.viewDepth, light)) {
+    if (cursor.headsLeft == 0u) return false;
+    --cursor.headsLeft;
+    cursor.link = tileHeads[cursor.nextHead++];
+  }
+  return true;
 }
 
 // As ThreeL's view: a listed light's colour where it reaches the surface, grey where the list has
@@ -41,7 +64,8 @@ vec3 lightingView(Surface s, uvec2 pixel, float viewDepth, vec3 color, out bool 
   uint view = lll.params.z;
   replaced = view == kDebugHeatmap || view == kDebugBounds;
   if (view == kDebugHeatmap) {
-    uint count = listLength(listIndexOf(tileIndexOf(pixel), viewDepth));
+    uint head = listIndexOf(tileIndexOf(pixel), viewDepth) * listClasses(), count = 0u;
+    for (uint c = 0u; c < listClasses(); ++c) count += listLength(head + c);
     return count == 0u ? vec3(0.0) : heat(float(count) / float(frame.display.y));
   }
   if (view == kDebugBounds) return boundsView(s, pixel, viewDepth);

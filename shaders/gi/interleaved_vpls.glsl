@@ -1,0 +1,61 @@
+// Interleaved sampling of the virtual point lights (render/interleaved_vpls.h): the pixels of each
+// k x k block of the screen split the VPLs k*k ways, each pixel evaluating only the VPLs of its
+// class (a VPL's class is its place among the VPLs, which end the light array, modulo k*k), and
+// gi/vpl_filter.comp adds up the classes of the neighbouring pixels that lie on the same surface.
+// A shading pass that includes this stores, per pixel, the class's sum divided by the surface's
+// albedo key (so that the filter carries light, not texture) and the key and normal the filter
+// compares.
+#ifndef LLL_INTERLEAVED_VPLS_GLSL
+#define LLL_INTERLEAVED_VPLS_GLSL
+#include "common/brdf.glsl"
+#include "gi/vpl_interleave_data.glsl"
+
+layout(set = 0, binding = 38, rgba16f) uniform writeonly image2D vplIndirect;
+layout(set = 0, binding = 39, rgba32ui) uniform writeonly uimage2D vplSurfaceKey;
+
+// The light sums of one pixel: everything but the VPLs, and the VPLs of the pixel's class.
+struct InterleavedSums {
+  vec3 direct;
+  vec3 indirect;
+  uint pixelClass;
+};
+
+// The pixel an invocation shades (Segovia et al.'s "non-interleaved" shading of the pattern): the
+// dispatch covers each class's sub-image (every k-th pixel from the class's offset) with whole 8x8
+// workgroups, so every invocation of a group has the same class and skips the same lights; a
+// pixel-order dispatch would mix k*k classes in each group, whose lanes then wait for each other's
+// lights (InterleavedVpls::dispatch sizes the grid: group (gx, gy) serves class (gx % k, gy % k)).
+uvec2 interleavedPixel(uvec2 group, uvec2 local) {
+  return ((group / kVplInterleave) * kTileGroupSize + local) * kVplInterleave + group % kVplInterleave;
+}
+
+InterleavedSums startInterleavedSums(uvec2 pixel) {
+  return InterleavedSums(vec3(0.0), vec3(0.0), vplClassOfPixel(pixel));
+}
+
+// What light `index` is to the pixel: the VPLs are the lights from `firstVpl` on (FrameUniforms'
+// display.w), each in class (index - firstVpl) mod k*k; the pixel skips the other classes' without
+// reading their records.
+const uint kLightSkipped = 0u, kLightDirect = 1u, kLightIndirect = 2u;
+uint interleavedRole(uint index, uint firstVpl, uint pixelClass) {
+  if (index < firstVpl) return kLightDirect;
+  return (index - firstVpl) % kVplClasses == pixelClass ? kLightIndirect : kLightSkipped;
+}
+
+// What gi/vpl_filter.comp needs of this pixel; `lit` false where it must add nothing (no surface,
+// or a debug view replaced the colour).
+void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, InterleavedSums sums, mat4 view) {
+  if (!lit) {
+    imageStore(vplIndirect, ivec2(pixel), vec4(0.0, 0.0, 0.0, -1.0));
+    imageStore(vplSurfaceKey, ivec2(pixel), uvec4(0u));
+    return;
+  }
+  vec3 key = albedoKey(s.baseColor);
+  vec3 normal = normalize(mat3(view) * s.normal);
+  imageStore(vplIndirect, ivec2(pixel), vec4(sums.indirect / key, viewDepth));
+  imageStore(vplSurfaceKey, ivec2(pixel),
+             uvec4(packSnorm2x16(octahedralEncode(normal)), packHalf2x16(key.rg),
+                   packHalf2x16(vec2(key.b, 0.0)), 0u));
+}
+
+#endif

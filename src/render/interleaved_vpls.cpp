@@ -1,0 +1,69 @@
+#include "render/interleaved_vpls.h"
+
+#include <fmt/format.h>
+
+#include "scene/errors.h"
+#include "shared/limits.h"
+
+namespace lll {
+
+void checkVplInterleave(uint32_t side) {
+  if (side < 1 || side > gpu::kMaxVplInterleave)
+    throw InputError(
+        fmt::format("--vpl-interleave {}: expected 1 (every pixel evaluates every VPL) to {} "
+                    "(each pixel of a {}x{} block a {}th of them)",
+                    side, gpu::kMaxVplInterleave, gpu::kMaxVplInterleave, gpu::kMaxVplInterleave,
+                    gpu::kMaxVplInterleave * gpu::kMaxVplInterleave));
+}
+
+InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, uint32_t side)
+    : context_(context), side_(side) {
+  checkVplInterleave(side);
+  constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT;
+  indirect_ = Image(context, targets.width, targets.height, VK_FORMAT_R16G16B16A16_SFLOAT, kStorage,
+                    "interleaved VPL light");
+  key_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
+               "interleaved VPL surface key");
+  layout_ = PipelineLayout(context, {"gi/vpl_filter.comp"}, {}, constants());
+  filter_ = Pipeline(context, layout_, "gi/vpl_filter.comp", constants());
+}
+
+std::vector<ResourceUse> InterleavedVpls::shadingWrites() const {
+  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  return {uses(indirect_, Use::StorageWrite, kCompute), uses(key_, Use::StorageWrite, kCompute)};
+}
+
+DescriptorWriter& InterleavedVpls::bindImages(DescriptorWriter& writer) const {
+  return writer.image(38, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, indirect_.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(39, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, key_.view(), VK_IMAGE_LAYOUT_GENERAL);
+}
+
+void InterleavedVpls::dispatch(VkCommandBuffer cmd, const FrameTargets& targets) const {
+  // Per class a sub-image of ceil(size / k) pixels a side, in whole groups; the classes side by side.
+  const uint32_t groupsX = divideRoundingUp(divideRoundingUp(targets.width, side_), gpu::kTileGroupSize);
+  const uint32_t groupsY = divideRoundingUp(divideRoundingUp(targets.height, side_), gpu::kTileGroupSize);
+  vkCmdDispatch(cmd, groupsX * side_, groupsY * side_, 1);
+}
+
+void InterleavedVpls::filter(FrameContext& frame) {
+  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  const FrameTargets& t = frame.targets;
+  frame.graph.pass("vpl-filter",
+                   {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::StorageRead, kCompute),
+                    uses(key_, Use::StorageRead, kCompute)},
+                   [&](VkCommandBuffer cmd) {
+                     filter_.bind(cmd);
+                     DescriptorWriter writer;
+                     writer.storage(0, frame.uniformBuffer.handle())
+                         .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
+                     bindImages(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+                     dispatchPerPixel(cmd, t);
+                   });
+}
+
+std::vector<std::pair<std::string, double>> InterleavedVpls::stats() const {
+  const double pixels = double(indirect_.width()) * indirect_.height();
+  return {{"vpl-interleave", double(side_)}, {"vpl_interleave_bytes", pixels * (8.0 + 16.0)}};
+}
+
+}  // namespace lll

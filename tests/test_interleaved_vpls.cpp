@@ -1,0 +1,167 @@
+// Interleaved sampling of the VPLs (--vpl-interleave, render/interleaved_vpls.h): each pixel of a
+// K x K block evaluates one class of the VPLs, and the filter gathers the others from neighbours
+// on the same surface.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include <algorithm>
+#include <vector>
+
+#include "cli_test_support.h"
+#include "lighting/lll.h"
+#include "render/image_compare.h"
+#include "scene/builtin_gi_scenes.h"
+#include "test_support.h"
+
+namespace lll {
+namespace {
+
+Scene cornellVpls(uint32_t count) {
+  SceneRequest request{"cornell"};
+  request.gi.mode = "vpl-only";
+  request.gi.photons = 20000;
+  request.gi.vplCount = count;
+  return loadScene(request);
+}
+
+RenderSettings vplSettings(const char* technique, uint32_t interleave) {
+  RenderSettings settings;
+  settings.width = 190;  // sides no pattern divides: the last blocks are partial
+  settings.height = 143;
+  settings.ambient = 0.0f;
+  settings.exposure = 16.0f;  // the indirect light fills the display range
+  settings.technique = technique;
+  settings.vplInterleave = interleave;
+  return settings;
+}
+
+// The gather smooths the light over at most 2K-1 pixels of one surface: where it changes within a
+// pixel or two (the room's corners at this size) the smoothing shows. A lost, doubled or unskipped
+// class moves the whole image by a quarter or more.
+constexpr test::ImageBound kGatherBound{45.0, 2, 0.95, 24};
+
+double meanRed(const HdrImage& image) {
+  double sum = 0.0;
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) sum += image.at(x, y).r;
+  return sum / (double(image.width) * image.height);
+}
+
+double statOf(const test::Rendered& r, const std::string& name) {
+  for (const auto& [key, value] : r.stats)
+    if (key == name) return value;
+  return -1.0;
+}
+
+// Every VPL copied K*K times at a K*K-th of its intensity, the copies in consecutive places: every
+// class then holds the same light, so a pixel's one class times K*K is the whole, and the gather
+// must give back the image of every pixel evaluating every VPL. Were the classes not skipped, the
+// image would be K*K times too bright; were a class lost or counted twice, a K*K-th too dark or
+// bright. Through each lighting interface (lll's lists, tiled's and clustered's grid, forward's
+// every light).
+TEST(InterleavedVpls, IdenticalClassesGiveBackTheWholeImage) {
+  const Scene base = cornellVpls(128);
+  for (uint32_t side : {2u, 3u}) {
+    Scene scene = base;
+    scene.lights.clear();
+    for (const Light& vpl : base.lights) {
+      ASSERT_EQ(vpl.type, LightType::Vpl);
+      Light copy = vpl;
+      copy.intensity /= float(side * side);
+      for (uint32_t c = 0; c < side * side; ++c) scene.lights.push_back(copy);
+    }
+    const test::Rendered whole = test::render(scene, vplSettings("forward", 1));
+    EXPECT_GT(test::shareAboveBlack(whole.ldr), 0.9);
+    for (const char* technique : {"forward", "lll", "tiled", "clustered"}) {
+      if (side == 3 && std::string(technique) != "lll") continue;  // one interface is enough for 3
+      const std::string label = std::string(technique) + " interleave " + std::to_string(side);
+      SCOPED_TRACE(label);
+      const test::Rendered r = test::render(scene, vplSettings(technique, side));
+      EXPECT_EQ(statOf(r, "vpl-interleave"), double(side));
+      test::expectWithinBound(r.ldr, whole.ldr, kGatherBound, label);
+      EXPECT_NEAR(meanRed(r.hdr) / meanRed(whole.hdr), 1.0, 0.01) << "the gather keeps the light's total";
+    }
+  }
+}
+
+// With the VPLs as the merge made them, each class is a different quarter (ninth) of them: the
+// gathered image stays close to the whole one, and the K*K-th of the work shows as a difference
+// (the classes are not the same light).
+TEST(InterleavedVpls, StaysCloseToEveryPixelEvaluatingEveryVpl) {
+  const Scene scene = cornellVpls(1024);
+  const test::Rendered whole = test::render(scene, vplSettings("lll", 1));
+  EXPECT_EQ(statOf(whole, "vpl-interleave"), -1.0) << "off: no pass, no images";
+  for (uint32_t side : {2u, 3u, 4u}) {
+    const test::Rendered r = test::render(scene, vplSettings("lll", side));
+    const ImageDifference d = compareImages(r.ldr, whole.ldr);
+    std::printf("[ gi ] cornell, 1,024 VPLs, --vpl-interleave %u: %.2f dB against 1, worst %d, 99.9th %d\n",
+                side, d.psnr, d.worst, d.p999);
+    EXPECT_GT(d.psnr, 40.0) << side;
+    EXPECT_TRUE(std::isfinite(d.psnr)) << side << ": identical images: were the VPLs split at all?";
+  }
+}
+
+// lll keeps each class of VPLs in a list of its own (and the other lights in one more), so that a
+// pixel walks only its class: read back with a list's heads one after the other, every tile and
+// slice lists the same lights as without interleaving.
+TEST(InterleavedVpls, LllClassListsHoldTheSameLights) {
+  SceneRequest request{"cornell"};
+  request.gi.mode = "vpl";  // the spot light first, then the VPLs
+  request.gi.photons = 20000;
+  request.gi.vplCount = 256;
+  const Scene scene = loadScene(request);
+  auto lists = [&](uint32_t side, double* headsPerList) {
+    RenderSettings settings = vplSettings("lll", side);
+    Renderer renderer(test::gpuContext(), scene, settings);
+    renderer.renderFrame(false);
+    for (const auto& [key, value] : renderer.technique().stats())
+      if (key == "heads_per_list") *headsPerList = value;
+    TileLightLists read = readTileLightLists(renderer.technique());
+    std::vector<std::vector<uint32_t>> lights;
+    for (const auto& list : read.lists) {
+      lights.emplace_back();
+      for (const LightLinkRecord& link : list) lights.back().push_back(link.light);
+      std::sort(lights.back().begin(), lights.back().end());
+    }
+    return lights;
+  };
+  double plainHeads = 0.0, classHeads = 0.0;
+  const auto plain = lists(1, &plainHeads);
+  const auto classed = lists(2, &classHeads);
+  EXPECT_EQ(plainHeads, 1.0);
+  EXPECT_EQ(classHeads, 5.0) << "the lights before the VPLs, and four classes";
+  ASSERT_EQ(plain.size(), classed.size());
+  size_t links = 0;
+  for (size_t i = 0; i < plain.size(); ++i) {
+    EXPECT_EQ(plain[i], classed[i]) << "list " << i;
+    links += plain[i].size();
+  }
+  EXPECT_GT(links, plain.size()) << "the lists should hold many VPLs";
+}
+
+// Without VPLs, or with surfaces that do not come from the visibility buffer, nothing changes: no
+// filter pass, the same image.
+TEST(InterleavedVpls, NothingToInterleaveChangesNothing) {
+  const Scene scene = builtin::makeCornell();
+  const test::Rendered plain = test::render(scene, vplSettings("lll", 1));
+  const test::Rendered asked = test::render(scene, vplSettings("lll", 2));
+  EXPECT_EQ(statOf(asked, "vpl-interleave"), -1.0);
+  EXPECT_EQ(compareImages(asked.ldr, plain.ldr).worst, 0);
+  const Scene vpls = cornellVpls(256);
+  RenderSettings gbuffer = vplSettings("lll", 2);
+  gbuffer.surfaces = "gbuffer";
+  EXPECT_EQ(statOf(test::render(vpls, gbuffer), "vpl-interleave"), -1.0);
+}
+
+using test::CliTest;
+
+TEST_F(CliTest, VplInterleaveOutOfRange) {
+  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-interleave", "0"}), {"--vpl-interleave"});
+  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-interleave", "5"}), {"--vpl-interleave"});
+  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-interleave", "two"}), {"--vpl-interleave"});
+}
+
+}  // namespace
+}  // namespace lll
