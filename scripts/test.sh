@@ -48,7 +48,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # The soak's 120 frames per technique ran in the release build; here its shortest run (70 frames)
 # checks AddressSanitizer's own heap count.
 export LLL_SOAK_FRAMES=70
-# Every test but the sweeps and four soak cases (412 of 830): every technique is drawn under the
+# Every test but the sweeps and four soak cases (418 of 836): every technique is drawn under the
 # sanitizers.
 (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs" --timeout 900 -E "$sweeps|$soakReleaseOnly")
 unset ASAN_OPTIONS UBSAN_OPTIONS LLL_SOAK_FRAMES

@@ -29,6 +29,9 @@ uvec2 interleavedPixel(uvec2 group, uvec2 local) {
   return ((group / kVplInterleave) * kTileGroupSize + local) * kVplInterleave + group % kVplInterleave;
 }
 
+// pixelClass of a pixel that evaluates every class (evaluatesEveryClass).
+const uint kEveryClass = 0xFFFFFFFFu;
+
 InterleavedSums startInterleavedSums(uvec2 pixel) {
   return InterleavedSums(vec3(0.0), vec3(0.0), vplClassOfPixel(pixel));
 }
@@ -39,11 +42,13 @@ InterleavedSums startInterleavedSums(uvec2 pixel) {
 const uint kLightSkipped = 0u, kLightDirect = 1u, kLightIndirect = 2u;
 uint interleavedRole(uint index, uint firstVpl, uint pixelClass) {
   if (index < firstVpl) return kLightDirect;
+  if (pixelClass == kEveryClass) return kLightIndirect;
   return (index - firstVpl) % kVplClasses == pixelClass ? kLightIndirect : kLightSkipped;
 }
 
 // What gi/vpl_filter.comp needs of this pixel; `lit` false where it must add nothing (no surface,
-// or a debug view replaced the colour).
+// or a debug view replaced the colour). A pixel that evaluated every class is marked (key w 1): the
+// filter takes its own sum and leaves it out of its neighbours' gathers.
 void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, InterleavedSums sums, mat4 view) {
   if (!lit) {
     imageStore(vplIndirect, ivec2(pixel), vec4(0.0, 0.0, 0.0, -1.0));
@@ -55,7 +60,7 @@ void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, Interle
   imageStore(vplIndirect, ivec2(pixel), vec4(sums.indirect / key, viewDepth));
   imageStore(vplSurfaceKey, ivec2(pixel),
              uvec4(packSnorm2x16(octahedralEncode(normal)), packHalf2x16(key.rg),
-                   packHalf2x16(vec2(key.b, 0.0)), 0u));
+                   packHalf2x16(vec2(key.b, 0.0)), sums.pixelClass == kEveryClass ? 1u : 0u));
 }
 
 #endif

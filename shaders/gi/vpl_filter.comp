@@ -5,7 +5,8 @@
 // its counting neighbours with tent weights (k-|dx|)(k-|dy|), which give every class the same total
 // weight where all count; the class means are summed, since the classes split the VPLs between
 // them; a class no neighbour brings is stood for by the mean of the classes found (the sum scaled
-// by k*k over their number). The sum is multiplied back by p's albedo key.
+// by k*k over their number). The sum is multiplied back by p's albedo key. A pixel that evaluated
+// every class (a glossy metal: gi/vpl_interleave_data.glsl) keeps its own sum and is no sample.
 #include "gi/vpl_interleave_data.glsl"
 #include "shared/gpu_types.h"
 
@@ -34,6 +35,11 @@ void main() {
   if (centre.w < 0.0) return;  // no surface, or a debug view
   uvec4 centreKey = imageLoad(vplSurfaceKey, p);
   vec3 normal = octahedralDecode(unpackSnorm2x16(centreKey.x));
+  vec3 key = vec3(unpackHalf2x16(centreKey.y), unpackHalf2x16(centreKey.z).x);
+  if (centreKey.w != 0u) {  // it evaluated every class itself (a glossy metal)
+    imageStore(hdr, p, imageLoad(hdr, p) + vec4(centre.rgb * key, 0.0));
+    return;
+  }
   vec3 position = viewPosition(p, centre.w);
   float planeTolerance = kPlaneTolerance * centre.w;
 
@@ -55,7 +61,9 @@ void main() {
           if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
           vec4 sample_ = imageLoad(vplIndirect, q);
           if (sample_.w < 0.0) continue;
-          vec3 n = octahedralDecode(unpackSnorm2x16(imageLoad(vplSurfaceKey, q).x));
+          uvec2 qKey = imageLoad(vplSurfaceKey, q).xw;
+          if (qKey.y != 0u) continue;  // holds every class: no class's sample
+          vec3 n = octahedralDecode(unpackSnorm2x16(qKey.x));
           if (dot(n, normal) < kNormalCos) continue;
           if (abs(dot(viewPosition(q, sample_.w) - position, normal)) > planeTolerance) continue;
           float w = float((k - abs(dx)) * (k - abs(dy)));
@@ -70,7 +78,6 @@ void main() {
     }
   }
   // found >= 1: the centre counts itself.
-  vec3 key = vec3(unpackHalf2x16(centreKey.y), unpackHalf2x16(centreKey.z).x);
   vec3 indirect = sum * (float(kVplClasses) / float(found)) * key;
   imageStore(hdr, p, imageLoad(hdr, p) + vec4(indirect, 0.0));
 }

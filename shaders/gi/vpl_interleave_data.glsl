@@ -11,6 +11,13 @@ uint vplClassOfPixel(uvec2 pixel) {
   return (pixel.x % kVplInterleave) + kVplInterleave * (pixel.y % kVplInterleave);
 }
 
+// A pixel whose surface is a glossy metal evaluates every class itself: its VPL light is a spray of
+// sharp view-dependent glints, which the gather would smear into blocks (the atrium's metal ball
+// behind its glass). Dielectrics reflect 4% at normal incidence: their VPL light is mostly diffuse.
+bool evaluatesEveryClass(float metallic, float roughness) {
+  return metallic >= 0.5 && roughness <= 0.5;
+}
+
 // The light is divided by this before filtering and multiplied by the centre pixel's after: the
 // base colour, kept away from zero so that a black surface's specular survives the division.
 vec3 albedoKey(vec3 baseColor) {

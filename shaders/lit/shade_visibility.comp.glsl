@@ -69,13 +69,17 @@ void main() {
   bool covered = rebuildSurface(pixel, inside, s, viewDepth);  // every invocation: it has barriers
   vec3 color = vec3(0.0);
   LightSums sums = startSums(pixel);
+#ifdef LLL_INTERLEAVED_VPLS
+  if (covered && evaluatesEveryClass(s.metallic, s.roughness)) sums.pixelClass = kEveryClass;
+#endif
 #ifdef LIGHTING_EVERY_LIGHT
   lightFromChunks(s, covered, sums);
 #else
   if (covered) {
 #if defined(LLL_INTERLEAVED_VPLS) && defined(LIGHTING_CLASS_LISTS)
     // Lists split by class (lll): walk only the lights this pixel evaluates.
-    LightCursor cursor = lightsAtInClass(pixel, viewDepth, sums.pixelClass);
+    LightCursor cursor = sums.pixelClass == kEveryClass ? lightsAt(pixel, viewDepth)
+                                                        : lightsAtInClass(pixel, viewDepth, sums.pixelClass);
 #else
     LightCursor cursor = lightsAt(pixel, viewDepth);
 #endif
