@@ -335,7 +335,7 @@ TEST(BenchSuites, GiSuitesVaryTheVplCountAndCutoff) {
   EXPECT_EQ(interleaved, 8) << "2 cutoffs x 2 patterns x 2 techniques";
   EXPECT_EQ(cutoffs.size(), 2u);
   const auto error = buildSuite("gi-error", SuiteOptions{});
-  EXPECT_EQ(error.size(), 16u);
+  EXPECT_EQ(error.size(), 28u) << "4 counts x (4 reaches + 3 interleaved)";
   for (const Scenario& s : error) {
     EXPECT_TRUE(s.compareWithReference);
     EXPECT_EQ(s.scene.scene, "cornell");
@@ -350,7 +350,7 @@ TEST(BenchQuick, GiErrorSuiteMeasuresTheErrorAgainstTheReference) {
   options.suites = {"gi-error"};
   options.quick = true;
   const BenchReport report = runBench(context, options);
-  ASSERT_EQ(report.results.size(), 8u);
+  ASSERT_EQ(report.results.size(), 14u) << "2 counts x (4 reaches + 3 interleaved)";
   for (const ScenarioResult& r : report.results) {
     ASSERT_EQ(r.status, Status::Ok) << r.scenario.name << ": " << r.message;
     std::optional<double> error, traceMs;

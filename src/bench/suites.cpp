@@ -488,7 +488,7 @@ std::vector<Scenario> giMovingSuite(const SuiteOptions& options) {
 // Instant radiosity against ground truth: the Cornell room's indirect light (VPLs alone, lll) against
 // the path-traced reference, as the VPL count grows, with ranges that reach the whole room (cutoff
 // 1e-6), the default cutoff, the short one, and a fixed 8 m range (--vpl-range: most of the room's 9.5 m
-// diagonal).
+// diagonal); the three cutoffs also with --vpl-interleave 2.
 std::vector<Scenario> giErrorSuite(const SuiteOptions& options) {
   const std::vector<uint32_t> counts =
       options.quick ? std::vector<uint32_t>{64, 512} : std::vector<uint32_t>{64, 512, 5144, 65536};
@@ -511,6 +511,11 @@ std::vector<Scenario> giErrorSuite(const SuiteOptions& options) {
       s.settings.ambient = 0.0f;
       s.series = reach.name;
       s.compareWithReference = true;
+      out.push_back(s);
+      // The interleaving's share of the error (--vpl-interleave 2), where the ranges come from a cutoff.
+      if (reach.range > 0.0f) continue;
+      s.settings.vplInterleave = 2;
+      s.series = reach.name + ", interleave 2";
       out.push_back(s);
     }
   }
