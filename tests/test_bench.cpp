@@ -319,7 +319,7 @@ TEST(BenchSuites, GiSuitesVaryTheVplCountAndCutoff) {
       ++interleaved;
       EXPECT_EQ(s.scene.gi.vplCount, 5144u);
       EXPECT_TRUE(s.settings.technique == "lll" || s.settings.technique == "tiled") << s.settings.technique;
-      EXPECT_NE(s.series.find(fmt::format("interleave {}", s.settings.vplInterleave)), std::string::npos);
+      EXPECT_NE(s.series.find(fmt::format("/interleave{}", s.settings.vplInterleave)), std::string::npos);
     }
     EXPECT_EQ(s.scene.gi.mode, "vpl-only");
     EXPECT_GE(s.scene.gi.photons, 2 * s.scene.gi.vplCount) << "too few deposits to merge into the count";

@@ -445,7 +445,7 @@ std::vector<Scenario> giSuite(const SuiteOptions& options) {
           Scenario s = base;
           s.settings.technique = technique;
           s.settings.vplInterleave = side;
-          s.series = fmt::format("{} interleave {}, cutoff {}", techniqueLabel(s.settings), side, cutoff);
+          s.series = fmt::format("{}, cutoff {}", techniqueLabel(s.settings), cutoff);
           out.push_back(s);
         }
       }
@@ -540,7 +540,9 @@ std::string lllVariant(const RenderSettings& settings) {
 }
 
 std::string techniqueLabel(const RenderSettings& settings) {
-  return settings.technique == "lll" ? "lll/" + lllVariant(settings) : settings.technique;
+  std::string label = settings.technique == "lll" ? "lll/" + lllVariant(settings) : settings.technique;
+  if (settings.vplInterleave > 1) label += fmt::format("/interleave{}", settings.vplInterleave);
+  return label;
 }
 
 const std::vector<std::string>& suiteNames() {

@@ -15,6 +15,7 @@
 #include "lighting/light_bins.h"
 #include "lighting/light_volumes.h"
 #include "particles/particle_system.h"
+#include "render/interleaved_vpls.h"
 #include "render/renderer.h"
 #include "render/visibility.h"
 #include "scene/errors.h"
@@ -200,8 +201,8 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   slices_ = lllListsPerTile(settings);
   // --vpl-interleave: the lights before the VPLs in one list, each class of VPLs in its own, so
   // that a pixel walks only the class it evaluates (render/interleaved_vpls.h).
-  if (settings.vplInterleave > 1 && scene.vplsTrail() && scene.firstTrailingVpl() < scene.lightCount())
-    classes_ = 1 + settings.vplInterleave * settings.vplInterleave;
+  if (const uint32_t k = vplInterleaveIn(scene, opaqueShading_, settings.vplInterleave); k > 1)
+    classes_ = 1 + k * k;
   uniforms_.slicing = glm::uvec4(slices_, classes_, 0, 0);
   uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),

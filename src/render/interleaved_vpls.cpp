@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "render/gpu_scene.h"
 #include "scene/errors.h"
 #include "shared/limits.h"
 
@@ -14,6 +15,12 @@ void checkVplInterleave(uint32_t side) {
                     "(each pixel of a {}x{} block a {}th of them)",
                     side, gpu::kMaxVplInterleave, gpu::kMaxVplInterleave, gpu::kMaxVplInterleave,
                     gpu::kMaxVplInterleave * gpu::kMaxVplInterleave));
+}
+
+uint32_t vplInterleaveIn(const GpuScene& scene, OpaqueShading opaque, uint32_t requested) {
+  checkVplInterleave(requested);
+  const bool vpls = scene.vplsTrail() && scene.firstTrailingVpl() < scene.lightCount();
+  return vpls && opaque == OpaqueShading::Visibility ? requested : 1u;
 }
 
 InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, uint32_t side)

@@ -18,17 +18,15 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
       lighting_(std::move(lighting)),
       pixels_(double(targets.width) * targets.height),
       computeGlass_(computeGlass && scene.hasBlendDraws()) {
-  checkVplInterleave(vplInterleave);
+  const uint32_t interleave = vplInterleaveIn(scene, opaque_, vplInterleave);
   SpecializationConstants constants = lightTypeConstants(scene);
-  // --gi appends the VPLs: classed by their index (render/interleaved_vpls.h).
-  const bool sceneHasVpls = constants.at(32) != 0 && scene.vplsTrail();
   if (opaque_ == OpaqueShading::Visibility) {
     if (!visibility) throw std::logic_error("LitPasses: visibility shading without a visibility buffer");
     SpecializationConstants opaqueConstants = constants;
     opaqueConstants.merge(visibility->surfaceConstants(scene));
     std::string shader = litShader(lighting_, "shade_visibility.comp");
-    if (vplInterleave > 1 && sceneHasVpls) {
-      interleaved_ = std::make_unique<InterleavedVpls>(context, targets, vplInterleave);
+    if (interleave > 1) {
+      interleaved_ = std::make_unique<InterleavedVpls>(context, targets, interleave);
       opaqueConstants.merge(interleaved_->constants());
       shader = litShader(lighting_, "shade_visibility_interleaved.comp");
     }
