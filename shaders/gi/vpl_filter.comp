@@ -1,18 +1,22 @@
 #version 460
 // Adds the interleaved VPL light (gi/interleaved_vpls.glsl) to the lit frame. For each pixel p with
 // a surface, the neighbours q within k-1 pixels count where they lie on p's surface: normals within
-// about 25 degrees, and q within 2% of p's depth of p's tangent plane. Each class is averaged over
-// its counting neighbours with tent weights (k-|dx|)(k-|dy|), which give every class the same total
-// weight where all count; the class means are summed, since the classes split the VPLs between
-// them; a class no neighbour brings is stood for by the mean of the classes found (the sum scaled
-// by k*k over their number). The sum is multiplied back by p's albedo key. A pixel that evaluated
-// every class (a glossy metal: gi/vpl_interleave_data.glsl) keeps its own sum and is no sample.
+// about 37 degrees (kNormalCos), q within 5% of p's depth of p's tangent plane (kPlaneTolerance; 25
+// degrees and 2% gave 40.66 against 40.76 dB, K = 2 against 1, the atrium's VPLs at 640x360 on
+// lavapipe). Each class is averaged over its counting neighbours with tent weights
+// (k-|dx|)(k-|dy|), which give every class the same total weight where all count; the class means
+// are summed, since the classes split the VPLs between them; a class no neighbour brings is stood
+// for by the mean of the classes found (the sum scaled by k*k over their number). The sum is
+// multiplied back by p's albedo key. A pixel that evaluated every class (a glossy metal:
+// gi/vpl_interleave_data.glsl) keeps its own sum and is no sample.
 #include "gi/vpl_interleave_data.glsl"
 #include "shared/gpu_types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+
 const float kNormalCos = 0.8;
 const float kPlaneTolerance = 0.05;
+
 layout(std430, set = 0, binding = 0) readonly buffer FrameBlock {  // see common/frame.glsl
   FrameUniforms frame;
 };
