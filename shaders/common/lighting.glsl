@@ -5,10 +5,21 @@
 //   bool nextLight(inout LightCursor cursor, out uint light); the next one (index into lights[])
 //   vec3 lightingView(Surface s, uvec2 pixel, float viewDepth, vec3 color, out bool replaced);
 //                                                             a debug view over or instead of color
+// and may provide (defining LIGHTING_CLASS_LISTS)
+//   LightCursor lightsAtInClass(uvec2 pixel, float viewDepth, uint vplClass);
+//                                   the lights a pixel that evaluates one class of VPLs walks
+//                                   (--vpl-interleave, gi/interleaved_vpls.glsl); by default all
+//                                   of lightsAt's, the shading pass skipping the other classes
 // and cmake/EmbedShaders.cmake compiles every template with every interface.
 #ifndef LLL_LIGHTING_GLSL
 #define LLL_LIGHTING_GLSL
 #include "common/material_surface.glsl"
+
+#ifndef LIGHTING_CLASS_LISTS
+LightCursor lightsAtInClass(uvec2 pixel, float viewDepth, uint vplClass) {
+  return lightsAt(pixel, viewDepth);
+}
+#endif
 
 // Radiance the lights reflect from `s` towards the eye.
 vec3 lightSurface(Surface s, uvec2 pixel, float viewDepth) {

@@ -76,8 +76,8 @@ void main() {
   lightFromChunks(s, covered, sums);
 #else
   if (covered) {
-#if defined(LLL_INTERLEAVED_VPLS) && defined(LIGHTING_CLASS_LISTS)
-    // Lists split by class (lll): walk only the lights this pixel evaluates.
+#ifdef LLL_INTERLEAVED_VPLS
+    // Only the lights this pixel evaluates where the interface keeps the classes apart (lll's lists).
     LightCursor cursor = sums.pixelClass == kEveryClass ? lightsAt(pixel, viewDepth)
                                                         : lightsAtInClass(pixel, viewDepth, sums.pixelClass);
 #else

@@ -7,6 +7,7 @@
 #include "shared/limits.h"
 
 namespace lll {
+namespace {
 
 void checkVplInterleave(uint32_t side) {
   if (side < 1 || side > gpu::kMaxVplInterleave)
@@ -16,6 +17,8 @@ void checkVplInterleave(uint32_t side) {
                     side, gpu::kMaxVplInterleave, gpu::kMaxVplInterleave, gpu::kMaxVplInterleave,
                     gpu::kMaxVplInterleave * gpu::kMaxVplInterleave));
 }
+
+}  // namespace
 
 uint32_t vplInterleaveIn(const GpuScene& scene, OpaqueShading opaque, uint32_t requested) {
   checkVplInterleave(requested);

@@ -22,13 +22,11 @@
 
 namespace lll {
 
-// Throws InputError unless 1 <= side <= kMaxVplInterleave (1: every pixel evaluates every VPL).
-void checkVplInterleave(uint32_t side);
-
 // The pattern side a frame of `scene` whose opaque surfaces are shaded by `opaque` uses for
 // --vpl-interleave `requested`: `requested` where the scene has VPLs at the end of its light array
 // (as --gi appends them: their index gives their class) and the shading is the visibility-buffer
-// pass; 1 otherwise. LitPasses and lll's class lists both follow it.
+// pass; 1 otherwise. LitPasses and lll's class lists both follow it. Throws InputError unless
+// 1 <= requested <= kMaxVplInterleave.
 uint32_t vplInterleaveIn(const GpuScene& scene, OpaqueShading opaque, uint32_t requested);
 
 class InterleavedVpls {

@@ -21,9 +21,9 @@ LightCursor lightsAt(uvec2 pixel, float viewDepth) {
   return LightCursor(tileHeads[head], 0u, viewDepth, head + 1u, listClasses() - 1u);
 }
 
-// The lights a pixel that evaluates only VPL class `vplClass` needs (gi/interleaved_vpls.glsl):
-// with class lists, the first head and that class's; without, the whole list (the shading pass
-// skips the other classes by index).
+// The lights a pixel that evaluates only VPL class `vplClass` needs (gi/interleaved_vpls.glsl;
+// common/lighting.glsl's optional part of the interface): with class lists, the first head and that
+// class's; without, the whole list (the shading pass skips the other classes by index).
 #define LIGHTING_CLASS_LISTS
 LightCursor lightsAtInClass(uvec2 pixel, float viewDepth, uint vplClass) {
   LightCursor cursor = lightsAt(pixel, viewDepth);
