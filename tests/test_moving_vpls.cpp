@@ -128,7 +128,7 @@ TEST(MovingVpls, OneRoundOfTheBudgetEndsWhereAFreshTraceStarts) {
   EXPECT_EQ(countDifferent(std::vector<Light>(lights.begin() + 5, lights.end()), vpls.vpls()), 0u)
       << "the scene's lights should hold the block";
   const Scene end = movingCornell(later);
-  const gi::MovingVpls fresh(end, smallTrace(), budget, kMaxSlots, vpls.cellEdge());
+  const gi::MovingVpls fresh(end, smallTrace(), budget, kMaxSlots, vpls.levels());
   const Bounds bounds = end.worldBounds();
   expectSameLitVpls(vpls.vpls(), fresh.vpls(), glm::length(bounds.extent()));
   EXPECT_EQ(vpls.stats().droppedCells, 0u);
@@ -154,19 +154,19 @@ TEST(MovingVpls, FullSlotsAreCountedNotOverrun) {
   const Scene start = movingCornell(0.0f);
   const gi::MovingVpls probe(start, smallTrace(), 1, kMaxSlots);
   const uint32_t lit = probe.stats().litSlots;
-  gi::MovingVpls tight(start, smallTrace(), 1u << 20, lit, probe.cellEdge());
+  gi::MovingVpls tight(start, smallTrace(), 1u << 20, lit, probe.levels());
   EXPECT_EQ(tight.stats().slots, lit);
   std::vector<Light> lights = tight.vpls();
   const float later = 7.0f;
   tight.moveTo(later, lights, 0);
-  const gi::MovingVpls fresh(movingCornell(later), smallTrace(), 1, kMaxSlots, probe.cellEdge());
+  const gi::MovingVpls fresh(movingCornell(later), smallTrace(), 1, kMaxSlots, probe.levels());
   const uint32_t needed = fresh.stats().litSlots;
   EXPECT_EQ(tight.stats().litSlots, std::min(lit, needed));
   EXPECT_EQ(tight.stats().droppedCells, needed > lit ? needed - lit : 0u);
   EXPECT_EQ(lights.size(), lit);
   std::printf("[ moving  ] %u slots; %u cells lit after the move, %u dropped\n", lit, needed,
               tight.stats().droppedCells);
-  EXPECT_THROW(gi::MovingVpls(start, smallTrace(), 1, lit - 1, probe.cellEdge()), InputError);
+  EXPECT_THROW(gi::MovingVpls(start, smallTrace(), 1, lit - 1, probe.levels()), InputError);
 }
 
 // The bench moves its lights in a copy of a cached scene: the copy's VPLs move, the original's stay.

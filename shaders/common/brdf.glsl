@@ -81,11 +81,24 @@ vec3 brdfCosine(Surface s, vec3 l) {
   return (diffuse + specular) * nDotL;
 }
 
-// KHR_lights_punctual: inverse square with the recommended smooth window to zero at the range.
-float rangeAttenuation(float distance, float range) {
+// KHR_lights_punctual's recommended smooth window, 1 at the light and 0 at its range.
+float rangeWindow(float distance, float range) {
   float ratio = distance / range;
   float window = clamp(1.0 - ratio * ratio * ratio * ratio, 0.0, 1.0);
-  return window * window / max(distance * distance, 1e-4);
+  return window * window;
+}
+
+// KHR_lights_punctual: inverse square with that window.
+float rangeAttenuation(float distance, float range) {
+  return rangeWindow(distance, range) / max(distance * distance, 1e-4);
+}
+
+// The band a VPL of the lighting grid hierarchy lights (gi/vpl_hierarchy.h): rising from `inner`
+// to 2 inner (none when inner is 0), falling from `outer` to 2 outer, smoothstep both ways, so that
+// a level's fall and the next level's rise add up to 1.
+float hierarchyBand(float distance, float inner, float outer) {
+  float rise = inner > 0.0 ? smoothstep(inner, 2.0 * inner, distance) : 1.0;
+  return rise * (1.0 - smoothstep(outer, 2.0 * outer, distance));
 }
 
 float spotAttenuation(GpuLight light, vec3 towardsLight) {
@@ -122,9 +135,13 @@ float lightAttenuation(GpuLight light, vec3 toLight, vec3 l, float distance) {
     return boxWindow(light, -toLight) / max(distance * distance, 1e-4);
   if (kSceneHasVpls && uint(light.directionType.w) == kLightVpl) {
     // A Lambertian emitter: cos(theta) about its normal; its 1/d^2 clamped at its near distance,
-    // where the point stops standing for the patch of surface it was merged from.
+    // where the point stops standing for the patch of surface it was merged from; KHR's window to
+    // its range, or its hierarchy band.
     float cosine = max(dot(light.directionType.xyz, -l), 0.0);
-    return rangeAttenuation(max(distance, light.spotParams.x), light.positionRange.w) * cosine;
+    float clamped = max(distance, light.spotParams.x);
+    float window = light.spotParams.z > 0.0 ? hierarchyBand(distance, light.spotParams.y, light.spotParams.z)
+                                            : rangeWindow(clamped, light.positionRange.w);
+    return window / max(clamped * clamped, 1e-4) * cosine;
   }
   return rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
 }

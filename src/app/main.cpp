@@ -157,6 +157,15 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "--gi: every virtual point light's range in metres instead of --vpl-cutoff's (a range that "
                  "does not shrink as --vpl-count grows)")
       ->check(finiteIn(0.0, 1e6));
+  cmd.add_option("--vpl-hierarchy", job.scene.gi.hierarchy,
+                 "--gi: none | grid (a lighting grid hierarchy: the deposits merged on grids of doubling "
+                 "cells, each level's VPLs lighting a band of distances; --vpl-count is its finest level's, "
+                 "and the bands replace --vpl-cutoff)")
+      ->check(CLI::IsMember({"none", "grid"}));
+  cmd.add_option("--vpl-alpha", job.scene.gi.vplAlpha,
+                 "--vpl-hierarchy grid: the radius of a level's band in its cells (larger: more accurate, "
+                 "longer light lists)")
+      ->check(finiteIn(lll::gi::kMinHierarchyAlpha, lll::gi::kMaxHierarchyAlpha));
   cmd.add_option("--vpl-retrace", job.scene.gi.retrace,
                  "--gi with moving lights (--animate): photons of the moving lights traced again each frame, "
                  "so that their indirect light follows them (0: it stays where it was first traced)")

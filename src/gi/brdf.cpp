@@ -55,8 +55,9 @@ float lightAttenuation(const Light& light, const glm::vec3& l, float distance) {
   if (!(distance < light.range)) return 0.0f;
   if (light.type == LightType::Vpl) {
     const float clamped = std::max(distance, light.nearDistance);
-    return rangeWindow(clamped, light.range) / std::max(clamped * clamped, 1e-4f) *
-           std::max(glm::dot(light.direction, -l), 0.0f);
+    const float window = light.bandOuter > 0.0f ? hierarchyBand(distance, light.bandInner, light.bandOuter)
+                                                : rangeWindow(clamped, light.range);
+    return window / std::max(clamped * clamped, 1e-4f) * std::max(glm::dot(light.direction, -l), 0.0f);
   }
   const float inverseSquare = 1.0f / std::max(distance * distance, 1e-4f);
   if (light.type == LightType::Box) return boxWindow(light, -l * distance) * inverseSquare;

@@ -29,6 +29,19 @@ inline float rangeWindow(float distance, float range) {
   return w * w;
 }
 
+// GLSL's smoothstep, for brdf.glsl's hierarchyBand.
+inline float smoothstep(float edge0, float edge1, float x) {
+  const float t = std::clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// brdf.glsl's hierarchyBand: the band of distances a VPL of the lighting grid hierarchy lights
+// (gi/vpl_hierarchy.h).
+inline float hierarchyBand(float distance, float inner, float outer) {
+  const float rise = inner > 0.0f ? smoothstep(inner, 2.0f * inner, distance) : 1.0f;
+  return rise * (1.0f - smoothstep(outer, 2.0f * outer, distance));
+}
+
 // brdf.glsl's boxWindow, with the axes as the Light keeps them.
 inline float boxWindow(const Light& light, const glm::vec3& offset) {
   const glm::vec3 z = glm::cross(light.boxAxisX, light.boxAxisY);

@@ -11,6 +11,7 @@
 #include "gi/random.h"
 #include "gi/ray_scene.h"
 #include "gi/sampling.h"
+#include "gi/vpl_hierarchy.h"
 #include "scene/errors.h"
 #include "scene/light_animation.h"
 
@@ -23,12 +24,13 @@ using walk::millisecondsSince;
 // Photons per task of a frame's parallel trace.
 constexpr uint32_t kChunk = 256;
 
-// Where traceInto looks up the cells of what it traced (read-only while the threads run).
+// Where traceInto looks up the cells of what it traced, on every level (read-only while the threads
+// run).
 struct CellLookup {
-  const std::unordered_map<uint64_t, uint32_t>* cells = nullptr;
+  const std::vector<std::unordered_map<uint64_t, uint32_t>>* cells = nullptr;  // per level
+  const std::vector<VplLevel>* levels = nullptr;
   glm::vec3 origin{0.0f};
-  float edge = 0.0f;
-  uint32_t* out = nullptr;  // per deposit slot: its cell, or kNoCell when the cell is new
+  uint32_t* out = nullptr;  // per deposit slot and level: its cell, or kNoCell when the cell is new
 };
 constexpr uint32_t kNoCell = ~0u;
 
@@ -38,25 +40,29 @@ void traceInto(const RayScene& rays, const walk::Emitters& emitters, const VplOp
                const uint32_t* photons, size_t count, PhotonDeposit* slots, uint8_t* counts,
                const CellLookup& lookup) {
   const uint32_t chunks = uint32_t((count + kChunk - 1) / kChunk);
-  parallelFor(
-      chunks, options.threads,
-      [&](uint32_t c) {
-        std::vector<PhotonDeposit> out;
-        const size_t end = std::min(count, size_t(c + 1) * kChunk);
-        for (size_t i = size_t(c) * kChunk; i < end; ++i) {
-          out.clear();
-          Random random(options.seed, photons[i]);
-          walk::tracePhoton(rays, emitters, options.photons, options.bounces, random, out);
-          counts[i] = uint8_t(out.size());
-          std::copy(out.begin(), out.end(), slots + i * options.bounces);
-          for (size_t k = 0; k < out.size(); ++k) {
-            const auto found =
-                lookup.cells->find(walk::cellKey(out[k].position, out[k].normal, lookup.origin, lookup.edge));
-            lookup.out[i * options.bounces + k] = found == lookup.cells->end() ? kNoCell : found->second;
-          }
-        }
-      },
-      {});
+  parallelFor(chunks, options.threads,
+              [&](uint32_t c) {
+                std::vector<PhotonDeposit> out;
+                const size_t end = std::min(count, size_t(c + 1) * kChunk);
+                for (size_t i = size_t(c) * kChunk; i < end; ++i) {
+                  out.clear();
+                  Random random(options.seed, photons[i]);
+                  walk::tracePhoton(rays, emitters, options.photons, options.bounces, random, out);
+                  counts[i] = uint8_t(out.size());
+                  std::copy(out.begin(), out.end(), slots + i * options.bounces);
+                  const size_t levels = lookup.levels->size();
+                  for (size_t k = 0; k < out.size(); ++k) {
+                    for (size_t l = 0; l < levels; ++l) {
+                      const auto& cells = (*lookup.cells)[l];
+                      const auto found = cells.find(walk::cellKey(
+                          out[k].position, out[k].normal, lookup.origin, (*lookup.levels)[l].cellEdge));
+                      lookup.out[(i * options.bounces + k) * levels + l] =
+                          found == cells.end() ? kNoCell : found->second;
+                    }
+                  }
+                }
+              },
+              {});
 }
 
 bool sameDeposits(const PhotonDeposit* a, uint8_t countA, const PhotonDeposit* b, uint8_t countB) {
@@ -73,7 +79,7 @@ std::shared_ptr<MovingVpls> cloneMovingVpls(const MovingVpls& vpls) {
 }
 
 MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t retracePerFrame,
-                       uint32_t maxSlots, float cellEdge, PhotonStats* stats)
+                       uint32_t maxSlots, std::vector<VplLevel> grids, PhotonStats* stats)
     : rays_(std::make_shared<const RayScene>(scene, RayScene::Keep::OwnMaterials)),
       lights_(scene.lights),
       suns_(scene.directionalLights),
@@ -114,27 +120,42 @@ MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t r
       movingDeposits_[k * options.bounces + movingCounts_[k]++] = all[i];
   }
 
-  // The grid: the merge's edge for the target, fixed from now on.
+  // The grids, fixed from now on: the merge's edge for the target, and with the hierarchy its levels
+  // as the load's deposits give them (their bands too); without it one grid whose VPLs' ranges come
+  // from the cutoff.
   const auto mergeBegin = std::chrono::steady_clock::now();
-  if (cellEdge > 0.0f) {
-    cellEdge_ = cellEdge;
-  } else if (options.vplCount == 0) {
-    throw InputError(
-        "--vpl-count 0 keeps every deposit as its own light, but with moving lights (--animate, --time) the "
-        "deposits are merged on a fixed grid: give a count, or --vpl-retrace 0 to leave the VPLs where they "
-        "are first traced");
-  } else if (all.size() <= options.vplCount) {
-    cellEdge_ = diagonal / walk::kCellSteps;  // about one cell per deposit
+  banded_ = options.hierarchy;
+  const float minNear = 1e-3f * diagonal;
+  if (!grids.empty()) {
+    levels_ = std::move(grids);
   } else {
-    cellEdge_ = walk::mergeCellEdge(all, options.vplCount, bounds_.min, diagonal);
+    float finest = 0.0f;
+    if (options.vplCount == 0) {
+      throw InputError(
+          "--vpl-count 0 keeps every deposit as its own light, but with moving lights (--animate, --time) "
+          "the deposits are merged on a fixed grid: give a count, or --vpl-retrace 0 to leave the VPLs where "
+          "they are first traced");
+    } else if (all.size() <= options.vplCount) {
+      finest = diagonal / walk::kCellSteps;  // about one cell per deposit
+    } else {
+      finest = walk::mergeCellEdge(all, options.vplCount, bounds_.min, diagonal);
+    }
+    if (banded_)
+      levels_ = buildVplHierarchy(all, bounds_.min, finest, options.alpha, diagonal, minNear).levels;
+    if (levels_.empty())
+      levels_ = {VplLevel{finest, std::max(0.5f * finest, minNear), 0.0f, banded_ ? diagonal : 0.0f}};
   }
-  near_ = std::max(0.5f * cellEdge_, 1e-3f * diagonal);
+  cellOf_.resize(levels_.size());
   reach_ = {vplCutoffIrradiance(rays_->surfaceArea(), all, options.cutoff), options.range};
-  for (const PhotonDeposit& d : all) add(cellFor(d), d, 1.0);
-  movingCells_.resize(movingDeposits_.size());
+  const uint32_t levels = uint32_t(levels_.size());
+  for (const PhotonDeposit& d : all)
+    for (uint32_t l = 0; l < levels; ++l) add(cellFor(d, l), d, 1.0);
+  movingCells_.resize(movingDeposits_.size() * levels);
   for (size_t k = 0; k < movingCounts_.size(); ++k)
     for (size_t i = 0; i < movingCounts_[k]; ++i)
-      movingCells_[k * options.bounces + i] = cellFor(movingDeposits_[k * options.bounces + i]);
+      for (uint32_t l = 0; l < levels; ++l)
+        movingCells_[(k * options.bounces + i) * levels + l] =
+            cellFor(movingDeposits_[k * options.bounces + i], l);
 
   // Slots: the load's lit cells in key order, then room for the cells the moving lights reach later.
   const uint32_t lit = uint32_t(cells_.size());
@@ -147,8 +168,9 @@ MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t r
   vpls_.assign(capacity, darkVpl(bounds_.center()));
   std::vector<uint32_t> order(lit);
   for (uint32_t i = 0; i < lit; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](uint32_t a, uint32_t b) { return cells_[a].key < cells_[b].key; });
+  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    return std::pair(cells_[a].level, cells_[a].key) < std::pair(cells_[b].level, cells_[b].key);
+  });
   for (uint32_t i = 0; i < lit; ++i) cells_[order[i]].slot = int32_t(i);
   for (uint32_t slot = lit; slot < capacity; ++slot) freeSlots_.push_back(slot);
   std::make_heap(freeSlots_.begin(), freeSlots_.end(), std::greater<>());
@@ -161,7 +183,8 @@ MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t r
   if (stats) {
     *stats = traced;
     stats->mergeMs = millisecondsSince(mergeBegin);
-    stats->cellSize = cellEdge_;
+    stats->cellSize = levels_[0].cellEdge;
+    stats->levels = banded_ ? levels : 0;
     stats->vpls = stats_.litSlots;
   }
 }
@@ -173,15 +196,15 @@ Light MovingVpls::darkVpl(const glm::vec3& position) const {
   dark.direction = glm::vec3(0.0f, 1.0f, 0.0f);
   dark.color = glm::vec3(0.0f);
   dark.intensity = 0.0f;
-  dark.range = 2.0f * near_;
-  dark.nearDistance = near_;
+  dark.nearDistance = levels_[0].nearDistance;
+  dark.range = 2.0f * dark.nearDistance;
   return dark;
 }
 
-uint32_t MovingVpls::cellFor(const PhotonDeposit& d) {
-  const uint64_t key = walk::cellKey(d.position, d.normal, bounds_.min, cellEdge_);
-  const auto [it, inserted] = cellOf_.try_emplace(key, uint32_t(cells_.size()));
-  if (inserted) cells_.push_back(Cell{.key = key});
+uint32_t MovingVpls::cellFor(const PhotonDeposit& d, uint32_t level) {
+  const uint64_t key = walk::cellKey(d.position, d.normal, bounds_.min, levels_[level].cellEdge);
+  const auto [it, inserted] = cellOf_[level].try_emplace(key, uint32_t(cells_.size()));
+  if (inserted) cells_.push_back(Cell{.key = key, .level = level});
   return it->second;
 }
 
@@ -240,8 +263,10 @@ void MovingVpls::refresh(uint32_t index) {
       normal[int(bucket / 2)] = bucket & 1u ? -1.0f : 1.0f;
     }
     const glm::vec3 position = c.weight > 0.0 ? glm::vec3(c.position / c.weight) : c.lastPosition;
-    vpls_[size_t(c.slot)] =
-        makeVpl(position, normal, glm::max(glm::vec3(c.flux), glm::vec3(0.0f)), near_, reach_);
+    const VplLevel& level = levels_[c.level];
+    Light& vpl = vpls_[size_t(c.slot)];
+    vpl = makeVpl(position, normal, glm::max(glm::vec3(c.flux), glm::vec3(0.0f)), level.nearDistance, reach_);
+    if (banded_) setVplBand(vpl, level);
     changedSlots_.push_back(uint32_t(c.slot));
   }
   stats_.droppedCells = stats_.droppedCells + (c.dropped ? 1u : 0u) - (wasDropped ? 1u : 0u);
@@ -279,8 +304,9 @@ void MovingVpls::moveTo(float seconds, std::vector<Light>& lights, uint32_t firs
     std::vector<PhotonDeposit> slots(count * bounces);
     std::vector<uint8_t> counts(count);
     const auto traceBegin = std::chrono::steady_clock::now();
-    std::vector<uint32_t> cells(count * bounces);
-    const CellLookup lookup{&cellOf_, bounds_.min, cellEdge_, cells.data()};
+    const uint32_t levels = uint32_t(levels_.size());
+    std::vector<uint32_t> cells(count * bounces * levels);
+    const CellLookup lookup{&cellOf_, &levels_, bounds_.min, cells.data()};
     traceInto(*rays_, emitters, options_, photons.data(), count, slots.data(), counts.data(), lookup);
     stats_.traceMs = millisecondsSince(traceBegin);
     const auto mergeBegin = std::chrono::steady_clock::now();
@@ -289,14 +315,18 @@ void MovingVpls::moveTo(float seconds, std::vector<Light>& lights, uint32_t firs
     for (size_t k = 0; k < count; ++k) {
       const size_t stored = size_t(which[k]) * bounces;
       PhotonDeposit* old = movingDeposits_.data() + stored;
-      uint32_t* oldCells = movingCells_.data() + stored;
+      uint32_t* oldCells = movingCells_.data() + stored * levels;
       const PhotonDeposit* fresh = slots.data() + k * bounces;
       if (sameDeposits(old, movingCounts_[which[k]], fresh, counts[k])) continue;
-      for (uint8_t i = 0; i < movingCounts_[which[k]]; ++i) add(oldCells[i], old[i], -1.0);
+      for (uint8_t i = 0; i < movingCounts_[which[k]]; ++i)
+        for (uint32_t l = 0; l < levels; ++l) add(oldCells[i * levels + l], old[i], -1.0);
       for (uint8_t i = 0; i < counts[k]; ++i) {
-        const uint32_t found = cells[k * bounces + i];
-        oldCells[i] = found != kNoCell ? found : cellFor(fresh[i]);
-        add(oldCells[i], fresh[i], 1.0);
+        for (uint32_t l = 0; l < levels; ++l) {
+          const uint32_t found = cells[(k * bounces + i) * levels + l];
+          uint32_t& cell = oldCells[i * levels + l];
+          cell = found != kNoCell ? found : cellFor(fresh[i], l);
+          add(cell, fresh[i], 1.0);
+        }
       }
       std::copy(fresh, fresh + counts[k], old);
       movingCounts_[which[k]] = counts[k];

@@ -17,12 +17,17 @@
 //   none and its light is missing until one frees; stats().droppedCells counts such cells.
 // - Ranges use the cutoff irradiance of the load (gi/photons.h): a VPL's range follows its own flux
 //   only, so ranges do not pulse with the scene's total.
+// - With the lighting grid hierarchy (VplOptions::hierarchy, gi/vpl_hierarchy.h) every level is such
+//   a grid: its levels and their bands are those the load's deposits give, fixed from then on, and
+//   every deposit is added to (and taken from) its cell on each level; the slots hold every level's
+//   VPLs.
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
 #include <vector>
 
 #include "gi/photons.h"
+#include "gi/vpl_hierarchy.h"
 #include "scene/scene.h"
 
 namespace lll::gi {
@@ -41,17 +46,20 @@ struct MovingVplStats {
 class MovingVpls {
  public:
   // `scene`: its lights placed where they are now, VPLs not yet added; `scene.lightAnimation` says
-  // which lights move. `cellEdge` 0 lets the merge choose the edge for options.vplCount (which must
-  // not be 0); `maxSlots` caps the VPL block. `stats` (optional) receives the initial trace's numbers.
+  // which lights move. `grids` empty lets the load's deposits choose them (the merge's edge for
+  // options.vplCount, which must not be 0, and with options.hierarchy the levels above it); else
+  // they are another MovingVpls' levels(). `maxSlots` caps the VPL block. `stats` (optional)
+  // receives the initial trace's numbers.
   MovingVpls(const Scene& scene, const VplOptions& options, uint32_t retracePerFrame, uint32_t maxSlots,
-             float cellEdge = 0.0f, PhotonStats* stats = nullptr);
+             std::vector<VplLevel> grids = {}, PhotonStats* stats = nullptr);
   MovingVpls(const MovingVpls&);  // the ray scene shared (read-only), the rest copied
   MovingVpls& operator=(const MovingVpls&) = delete;
   ~MovingVpls();
 
   // The VPL block: every slot, dark ones included.
   const std::vector<Light>& vpls() const { return vpls_; }
-  float cellEdge() const { return cellEdge_; }
+  // The grids the deposits merge on: one, or the hierarchy's levels.
+  const std::vector<VplLevel>& levels() const { return levels_; }
   const MovingVplStats& stats() const { return stats_; }
 
   // Moves the emitting lights to `seconds`, traces the next `retracePerFrame` of the moving lights'
@@ -61,7 +69,8 @@ class MovingVpls {
 
  private:
   struct Cell {
-    uint64_t key = 0;  // walk::cellKey
+    uint64_t key = 0;  // walk::cellKey on its level's grid
+    uint32_t level = 0;
     glm::dvec3 flux{0.0}, position{0.0}, normal{0.0};
     double weight = 0.0;
     uint32_t deposits = 0;
@@ -70,7 +79,7 @@ class MovingVpls {
     bool dirty = false;    // changed since its VPL was last written
     glm::vec3 lastPosition{0.0f};
   };
-  uint32_t cellFor(const PhotonDeposit& d);  // its cell, made when new
+  uint32_t cellFor(const PhotonDeposit& d, uint32_t level);  // its cell on a level, made when new
   void add(uint32_t cell, const PhotonDeposit& d, double sign);
   void refresh(uint32_t cell);
   void refreshDirtyCells();
@@ -83,16 +92,18 @@ class MovingVpls {
   Bounds bounds_;
   VplOptions options_;
   uint32_t retracePerFrame_ = 0;
-  float cellEdge_ = 0.0f, near_ = 0.0f;
+  // The grids: one without the hierarchy (its VPLs' ranges from reach_), else its levels (their bands).
+  std::vector<VplLevel> levels_;
+  bool banded_ = false;
   VplReach reach_;
 
   std::vector<uint32_t> movingPhotons_;        // photon indices, ascending
   std::vector<PhotonDeposit> movingDeposits_;  // options.bounces slots per moving photon
-  std::vector<uint32_t> movingCells_;          // the cell of each of those deposits
+  std::vector<uint32_t> movingCells_;          // the cell of each of those deposits on each level
   std::vector<uint8_t> movingCounts_;
   size_t cursor_ = 0;  // the next moving photon to trace again
 
-  std::unordered_map<uint64_t, uint32_t> cellOf_;
+  std::vector<std::unordered_map<uint64_t, uint32_t>> cellOf_;  // per level
   std::vector<Cell> cells_;
   std::vector<uint32_t> dirty_;
   std::vector<uint32_t> freeSlots_;  // a min-heap: the lowest free slot is reused first

@@ -56,6 +56,18 @@ inline float depositWeight(const glm::vec3& flux) {
   return std::max(0.2126f * flux.r + 0.7152f * flux.g + 0.0722f * flux.b, 1e-30f);
 }
 
+// The box the deposits' positions span, and its diagonal (at least 1e-6: never a zero cell).
+Bounds depositBounds(const std::vector<PhotonDeposit>& deposits);
+inline float boundsDiagonal(const Bounds& bounds) {
+  return std::max(glm::length(bounds.extent()), 1e-6f);
+}
+
+// The deposits merged on the grid of edge `cell` from `origin` (cellKey's cells): one VPL per cell
+// that holds any, its flux the cell's sum, its position and normal flux-weighted (depositWeight),
+// in key order.
+std::vector<Light> mergeOnGrid(const std::vector<PhotonDeposit>& deposits, const glm::vec3& origin,
+                               float cell, float nearDistance, const VplReach& reach);
+
 // The smallest cell edge (within 1%) at which the deposits, keyed from `origin`, fill at most
 // `target` cells; `diagonal` is the extent they span.
 float mergeCellEdge(const std::vector<PhotonDeposit>& deposits, uint32_t target, const glm::vec3& origin,

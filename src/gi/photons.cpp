@@ -9,6 +9,7 @@
 #include "gi/photon_walk.h"
 #include "gi/random.h"
 #include "gi/ray_scene.h"
+#include "gi/vpl_hierarchy.h"
 
 namespace lll::gi {
 namespace {
@@ -243,6 +244,12 @@ size_t countCells(const std::vector<std::pair<uint64_t, uint32_t>>& keys) {
 
 }  // namespace
 
+Bounds walk::depositBounds(const std::vector<PhotonDeposit>& deposits) {
+  Bounds bounds;
+  for (const PhotonDeposit& d : deposits) bounds.expand(d.position);
+  return bounds;
+}
+
 float walk::mergeCellEdge(const std::vector<PhotonDeposit>& deposits, uint32_t target,
                           const glm::vec3& origin, float diagonal) {
   // Bisect the cell edge in log space: the largest is one cell over everything (at most six
@@ -260,6 +267,30 @@ float vplCutoffIrradiance(double surfaceArea, const std::vector<PhotonDeposit>& 
   for (const PhotonDeposit& d : deposits) flux += std::max({d.flux.r, d.flux.g, d.flux.b});
   const double area = std::max(2.0 * surfaceArea, 1e-12);
   return float(std::max(double(cutoff) * flux / area, 1e-30));
+}
+
+std::vector<Light> walk::mergeOnGrid(const std::vector<PhotonDeposit>& deposits, const glm::vec3& origin,
+                                     float cell, float nearDistance, const VplReach& reach) {
+  std::vector<Light> vpls;
+  const auto keys = keyDeposits(deposits, origin, cell);
+  for (size_t first = 0; first < keys.size();) {
+    size_t last = first;
+    glm::vec3 flux(0.0f), position(0.0f), normal(0.0f);
+    float weight = 0.0f;
+    for (; last < keys.size() && keys[last].first == keys[first].first; ++last) {
+      const PhotonDeposit& d = deposits[keys[last].second];
+      const float w = depositWeight(d.flux);
+      flux += d.flux;
+      position += d.position * w;
+      normal += d.normal * w;
+      weight += w;
+    }
+    const float n = glm::length(normal);
+    vpls.push_back(makeVpl(position / weight, n > 0.0f ? normal / n : deposits[keys[first].second].normal,
+                           flux, nearDistance, reach));
+    first = last;
+  }
+  return vpls;
 }
 
 std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uint32_t target,
@@ -280,36 +311,43 @@ std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uin
       vpls.push_back(makeVpl(d.position, d.normal, d.flux, unmergedNearDistance, reach));
     return finish(0.0f);
   }
-  Bounds bounds;
-  for (const PhotonDeposit& d : deposits) bounds.expand(d.position);
-  const float diagonal = std::max(glm::length(bounds.extent()), 1e-6f);
-  const float hi = walk::mergeCellEdge(deposits, target, bounds.min, diagonal);
-  const auto keys = keyDeposits(deposits, bounds.min, hi);
-  for (size_t first = 0; first < keys.size();) {
-    size_t last = first;
-    glm::vec3 flux(0.0f), position(0.0f), normal(0.0f);
-    float weight = 0.0f;
-    for (; last < keys.size() && keys[last].first == keys[first].first; ++last) {
-      const PhotonDeposit& d = deposits[keys[last].second];
-      const float w = walk::depositWeight(d.flux);
-      flux += d.flux;
-      position += d.position * w;
-      normal += d.normal * w;
-      weight += w;
-    }
-    const float n = glm::length(normal);
-    vpls.push_back(makeVpl(position / weight, n > 0.0f ? normal / n : deposits[keys[first].second].normal,
-                           flux, 0.5f * hi, reach));
-    first = last;
-  }
+  const Bounds bounds = walk::depositBounds(deposits);
+  const float hi = walk::mergeCellEdge(deposits, target, bounds.min, walk::boundsDiagonal(bounds));
+  vpls = walk::mergeOnGrid(deposits, bounds.min, hi, 0.5f * hi, reach);
   return finish(hi);
 }
+
+namespace {
+
+// The lighting grid hierarchy over the deposits, its finest level's edge the merge's for the target
+// (every deposit apart when there are no more of them than that).
+std::vector<Light> hierarchyOver(const std::vector<PhotonDeposit>& deposits, const Bounds& sceneBounds,
+                                 const VplOptions& options, float minNear, PhotonStats* stats) {
+  const auto begin = std::chrono::steady_clock::now();
+  const Bounds bounds = walk::depositBounds(deposits);
+  const float diagonal = walk::boundsDiagonal(bounds);
+  const float finest = deposits.size() <= options.vplCount
+                           ? diagonal / walk::kCellSteps
+                           : walk::mergeCellEdge(deposits, options.vplCount, bounds.min, diagonal);
+  const float reach = sceneBounds.valid() ? std::max(glm::length(sceneBounds.extent()), diagonal) : diagonal;
+  VplHierarchy h = buildVplHierarchy(deposits, bounds.min, finest, options.alpha, reach, minNear);
+  if (stats) {
+    stats->cellSize = finest;
+    stats->levels = uint32_t(h.levels.size());
+    stats->vpls = h.lights.size();
+    stats->mergeMs = walk::millisecondsSince(begin);
+  }
+  return std::move(h.lights);
+}
+
+}  // namespace
 
 std::vector<Light> makeVirtualPointLights(const Scene& scene, const VplOptions& options, PhotonStats* stats) {
   const RayScene rays(scene);
   const std::vector<PhotonDeposit> deposits = tracePhotons(rays, scene, options, stats);
   const Bounds bounds = scene.worldBounds();
   const float unmergedNear = bounds.valid() ? 1e-3f * glm::length(bounds.extent()) : 1e-3f;
+  if (options.hierarchy) return hierarchyOver(deposits, bounds, options, unmergedNear, stats);
   const VplReach reach{vplCutoffIrradiance(rays.surfaceArea(), deposits, options.cutoff), options.range};
   return mergeDeposits(deposits, options.vplCount, unmergedNear, reach, stats);
 }

@@ -41,6 +41,11 @@ inline constexpr uint32_t kMaxPhotons = 100000000;
 // truncation it costs is measured against the path-traced reference (bench/README.md).
 inline constexpr float kDefaultVplCutoff = 1e-3f;
 
+// The lighting grid hierarchy's accuracy alpha (--vpl-alpha; gi/vpl_hierarchy.h): the radius of a
+// level's band, in its cells.
+inline constexpr float kDefaultHierarchyAlpha = 1.5f;
+inline constexpr float kMinHierarchyAlpha = 0.5f, kMaxHierarchyAlpha = 8.0f;
+
 // Photons of the moving lights traced again per frame by default (--vpl-retrace,
 // gi/moving_vpls.h).
 inline constexpr uint32_t kDefaultRetracePhotons = 8192;
@@ -53,6 +58,10 @@ struct VplOptions {
   // When positive, every VPL's range in metres instead of the cutoff's (at least twice its near
   // distance): a range that does not shrink as the count grows, so more VPLs cost more but err less.
   float range = 0.0f;
+  // The lighting grid hierarchy (gi/vpl_hierarchy.h) over the VPLs: vplCount is then its finest
+  // level's target, and the levels' bands replace cutoff and range.
+  bool hierarchy = false;
+  float alpha = kDefaultHierarchyAlpha;
   uint32_t seed = 1;
   uint32_t threads = 0;  // 0: one per hardware thread
   // Called with the fraction of photons traced so far (0..1), from the tracing threads, one call at
@@ -74,7 +83,8 @@ struct PhotonStats {
   glm::vec3 depositedFlux{0.0f};  // sum of every deposit
   double traceMs = 0.0;
   double mergeMs = 0.0;
-  float cellSize = 0.0f;  // the merge grid's cell edge (0 when not merged)
+  float cellSize = 0.0f;  // the merge grid's cell edge (0 when not merged); the hierarchy's finest
+  uint32_t levels = 0;    // the hierarchy's levels (0 without one)
   uint64_t vpls = 0;
 };
 
@@ -113,7 +123,8 @@ std::vector<Light> mergeDeposits(const std::vector<PhotonDeposit>& deposits, uin
 Light makeVpl(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& flux, float nearDistance,
               const VplReach& reach);
 
-// tracePhotons then mergeDeposits over the scene's own lights.
+// tracePhotons then mergeDeposits over the scene's own lights, or with options.hierarchy the
+// lighting grid hierarchy (gi/vpl_hierarchy.h) whose finest level has options.vplCount VPLs at most.
 std::vector<Light> makeVirtualPointLights(const Scene& scene, const VplOptions& options,
                                           PhotonStats* stats = nullptr);
 

@@ -70,7 +70,7 @@ gpu::GpuLight toGpuLight(const Light& light) {
   }
   if (light.type == LightType::Vpl) {
     g.directionType = glm::vec4(glm::normalize(light.direction), float(gpu::kLightVpl));
-    g.spotParams = glm::vec4(light.nearDistance, 0.0f, 0.0f, 0.0f);
+    g.spotParams = glm::vec4(light.nearDistance, light.bandInner, light.bandOuter, 0.0f);
     return g;
   }
   const uint32_t type = light.type == LightType::Spot ? gpu::kLightSpot : gpu::kLightPoint;

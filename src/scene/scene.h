@@ -96,6 +96,11 @@ struct Light {
   glm::vec3 boxAxisY{0.0f, 1.0f, 0.0f};
   glm::vec3 halfExtents{0.5f};
   float nearDistance = 0.0f;  // VPLs: 1/d^2 is taken as 1/max(d, nearDistance)^2
+  // VPLs of the lighting grid hierarchy (gi/vpl_hierarchy.h): the band of distances they light,
+  // rising from bandInner to 2 bandInner, falling from bandOuter to 2 bandOuter (the range) in
+  // place of KHR's window. bandOuter 0: an ordinary VPL, KHR's window to its range.
+  float bandInner = 0.0f;
+  float bandOuter = 0.0f;
 };
 
 // KHR_lights_punctual's "directional" light (the sun): parallel light of `illuminance` lux along

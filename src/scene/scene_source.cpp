@@ -38,6 +38,19 @@ void validateGi(const GiRequest& gi) {
   if (!(gi.vplRange >= 0.0f && gi.vplRange <= 1e6f))
     throw InputError(
         fmt::format("--vpl-range {}: expected metres in [0, 1e6] (0: from --vpl-cutoff)", gi.vplRange));
+  if (gi.hierarchy != "none" && gi.hierarchy != "grid")
+    throw InputError(fmt::format("--vpl-hierarchy {}: expected none or grid", gi.hierarchy));
+  if (!(gi.vplAlpha >= gi::kMinHierarchyAlpha && gi.vplAlpha <= gi::kMaxHierarchyAlpha))
+    throw InputError(fmt::format("--vpl-alpha {}: expected {} to {} (cells)", gi.vplAlpha,
+                                 gi::kMinHierarchyAlpha, gi::kMaxHierarchyAlpha));
+  if (gi.hierarchy == "grid" && gi.vplCount == 0)
+    throw InputError(
+        "--vpl-hierarchy grid --vpl-count 0: the hierarchy's finest level needs a count to choose its cells");
+  if (gi.hierarchy == "grid" && gi.vplRange > 0.0f)
+    throw InputError(
+        fmt::format("--vpl-hierarchy grid --vpl-range {}: the hierarchy's levels set every "
+                    "VPL's range; leave --vpl-range out",
+                    gi.vplRange));
 }
 
 // Traces the photons from the scene's lights and adds the VPLs they leave (vpl-only: instead of
@@ -51,6 +64,8 @@ void addIndirectLight(Scene& scene, const SceneRequest& request, std::vector<std
   options.vplCount = request.gi.vplCount;
   options.cutoff = request.gi.vplCutoff;
   options.range = request.gi.vplRange;
+  options.hierarchy = request.gi.hierarchy == "grid";
+  options.alpha = request.gi.vplAlpha;
   options.seed = request.seed;
   if (report) options.progress = report->progress;
   gi::PhotonStats stats;
@@ -60,7 +75,8 @@ void addIndirectLight(Scene& scene, const SceneRequest& request, std::vector<std
   if (request.movingLights && !scene.lightAnimation.empty() && request.gi.retrace > 0) {
     scene.movingIndirect.vpls = std::make_shared<gi::MovingVpls>(
         scene, options, request.gi.retrace,
-        uint32_t(gpu::kMaxLights - std::min<uint64_t>(others, gpu::kMaxLights)), 0.0f, &stats);
+        uint32_t(gpu::kMaxLights - std::min<uint64_t>(others, gpu::kMaxLights)), std::vector<gi::VplLevel>{},
+        &stats);
     vpls = scene.movingIndirect.vpls->vpls();
     scene.movingIndirect.clone = &gi::cloneMovingVpls;
     scene.movingIndirect.first = uint32_t(others);
