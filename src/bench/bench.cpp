@@ -193,7 +193,8 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
                                                      {"gi-deposits", double(g.deposits)},
                                                      {"gi-trace-ms", g.traceMs},
                                                      {"gi-merge-ms", g.mergeMs},
-                                                     {"gi-cell-m", g.cellSize}});
+                                                     {"gi-cell-m", g.cellSize},
+                                                     {"gi-levels", double(g.levels)}});
   }
   moveLightsTo(0.0f);
   renderer.renderFrame(true);  // untimed: the image every technique's is compared on

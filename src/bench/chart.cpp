@@ -318,6 +318,11 @@ bool runGnuplot(const fs::path& dir) {
   return spawned == 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+std::optional<std::string> giHierarchyChart(const BenchReport& report, const fs::path& dir) {
+  return lightCountChart(report, dir, "gi-hierarchy", "gi-hierarchy.png", Measure::Frame,
+                         "Frame time against VPL count (every level's), the lighting grid hierarchy");
+}
+
 }  // namespace
 
 std::vector<fs::path> writeCharts(const BenchReport& report, const fs::path& dir) {
@@ -330,6 +335,7 @@ std::vector<fs::path> writeCharts(const BenchReport& report, const fs::path& dir
                                     {"density-memory.png", densityMemoryChart},
                                     {"gi.png", giChart},
                                     {"gi-error.png", giErrorChart},
+                                    {"gi-hierarchy.png", giHierarchyChart},
                                     {"threel.png", threelChart},
                                     {"tiles.png", tilesChart}}) {
     if (const auto section = chart(report, dir)) {

@@ -413,15 +413,36 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
 // (5,144 is Infinity's figure), at the default cutoff (each VPL reaches far: quality) and at 0.05
 // (short ranges: speed), by every technique that finishes; at the second count lll and tiled also
 // with interleaved VPLs (--vpl-interleave 2 and 3), whose frames are compared with forward's without.
-// A scene lit by its VPLs alone: `vpls` of them from about 1.5 times as many deposits.
-SceneRequest vplScene(const char* scene, uint32_t vpls, float cutoff, float range,
-                      const SuiteOptions& options) {
+// How far the VPLs of a gi scenario reach: a cutoff, a fixed range, or the lighting grid hierarchy
+// (alpha > 0; gi/vpl_hierarchy.h), and the name its series carries.
+struct VplReachSpec {
+  float cutoff = gi::kDefaultVplCutoff;
+  float range = 0.0f;
+  float alpha = 0.0f;
+  std::string name;
+};
+
+VplReachSpec cutoffReach(float cutoff) {
+  return {cutoff, 0.0f, 0.0f, fmt::format("cutoff {}", cutoff)};
+}
+
+VplReachSpec hierarchyReach(float alpha) {
+  return {gi::kDefaultVplCutoff, 0.0f, alpha, fmt::format("hierarchy {}", alpha)};
+}
+
+// A scene lit by its VPLs alone: `vpls` of them (the hierarchy's finest level) from about 1.5 times
+// as many deposits.
+SceneRequest vplScene(const char* scene, uint32_t vpls, const VplReachSpec& reach, const SuiteOptions& options) {
   SceneRequest request{scene, 0, 1};
   request.gi.mode = "vpl-only";
   request.gi.vplCount = vpls;
   request.gi.photons = options.quick ? 20000 : std::max(100000u, 3 * vpls);  // ~2 deposits a photon
-  request.gi.vplCutoff = cutoff;
-  request.gi.vplRange = range;
+  request.gi.vplCutoff = reach.cutoff;
+  request.gi.vplRange = reach.range;
+  if (reach.alpha > 0.0f) {
+    request.gi.hierarchy = "grid";
+    request.gi.vplAlpha = reach.alpha;
+  }
   return request;
 }
 
@@ -433,7 +454,7 @@ std::vector<Scenario> giSuite(const SuiteOptions& options) {
   for (const float cutoff : {gi::kDefaultVplCutoff, kGiShortCutoff}) {
     for (const uint32_t vpls : counts) {
       const Scenario base = makeScenario("gi", fmt::format("{} VPLs, cutoff {}", vpls, cutoff),
-                                         vplScene(kDefaultSceneName, vpls, cutoff, 0.0f, options), size);
+                                         vplScene(kDefaultSceneName, vpls, cutoffReach(cutoff), options), size);
       for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
         s.series = fmt::format("{}, cutoff {}", techniqueLabel(s.settings), cutoff);
         skipWhereTooSlow(s, vpls, options);
@@ -450,6 +471,65 @@ std::vector<Scenario> giSuite(const SuiteOptions& options) {
         }
       }
     }
+  }
+  return out;
+}
+
+// The lighting grid hierarchy over the atrium's VPLs (--vpl-hierarchy grid, alpha 1.5), 512 to a
+// million at the finest level, by every technique that finishes (brute force and the light volumes
+// up to 5,144: the hierarchy adds a third more lights, whose coarse levels reach far); at 5,144 and
+// 65,536 lll and tiled also interleaved (--vpl-interleave 2), lll at tile 16 and at alpha 1 and 3;
+// beside them lll at the short cutoff, which is as fast as the hierarchy but far less accurate
+// (gi-error).
+std::vector<Scenario> giHierarchySuite(const SuiteOptions& options) {
+  const std::vector<uint32_t> counts =
+      options.quick ? std::vector<uint32_t>{64, 512} : std::vector<uint32_t>{512, 5144, 65536, 1048576};
+  const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
+  const VplReachSpec lgh = hierarchyReach(gi::kDefaultHierarchyAlpha);
+  std::vector<Scenario> out;
+  auto add = [&](Scenario s, const VplReachSpec& reach) {
+    s.series = fmt::format("{}, {}", techniqueLabel(s.settings), reach.name);
+    out.push_back(s);
+  };
+  for (const uint32_t vpls : counts) {
+    const Scenario base = makeScenario("gi-hierarchy", fmt::format("{} VPLs, {}", vpls, lgh.name),
+                                       vplScene(kDefaultSceneName, vpls, lgh, options), size);
+    for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
+      const std::string& t = s.settings.technique;
+      if ((t == "forward" || t == "deferred" || t == "prepass") && vpls > counts[1])
+        s.skip = fmt::format("{} over the hierarchy of {} VPLs takes seconds per frame", t, vpls);
+      skipWhereTooSlow(s, vpls, options);
+      add(s, lgh);
+    }
+    if (vpls == counts[1] || vpls == counts[2]) {
+      for (const char* technique : {"lll", "tiled"}) {
+        Scenario s = base;
+        s.settings.technique = technique;
+        s.settings.vplInterleave = 2;
+        add(s, lgh);
+      }
+      Scenario tile16 = makeScenario("gi-hierarchy", fmt::format("{} VPLs, {}, tile 16", vpls, lgh.name),
+                                     vplScene(kDefaultSceneName, vpls, lgh, options), size);
+      tile16.settings.technique = "lll";
+      tile16.settings.tileSize = 16;
+      add(tile16, lgh);
+      tile16.settings.vplInterleave = 2;
+      add(tile16, lgh);
+    }
+    if (vpls == counts[1]) {
+      for (const float alpha : {1.0f, 3.0f}) {
+        const VplReachSpec reach = hierarchyReach(alpha);
+        Scenario s = makeScenario("gi-hierarchy", fmt::format("{} VPLs, {}", vpls, reach.name),
+                                  vplScene(kDefaultSceneName, vpls, reach, options), size);
+        s.settings.technique = "lll";
+        add(s, reach);
+      }
+    }
+    const VplReachSpec shortCut = cutoffReach(kGiShortCutoff);
+    Scenario s = makeScenario("gi-hierarchy", fmt::format("{} VPLs, {}", vpls, shortCut.name),
+                              vplScene(kDefaultSceneName, vpls, shortCut, options), size);
+    s.settings.technique = "lll";
+    add(s, shortCut);
   }
   return out;
 }
@@ -494,26 +574,25 @@ std::vector<Scenario> giErrorSuite(const SuiteOptions& options) {
       options.quick ? std::vector<uint32_t>{64, 512} : std::vector<uint32_t>{64, 512, 5144, 65536};
   const Size size = options.quick ? Size{48, 27} : Size{480, 360};
   std::vector<Scenario> out;
-  struct Reach {
-    float cutoff;
-    float range;
-    std::string name;
-  };
-  const Reach reaches[] = {{1e-6f, 0.0f, "cutoff 1e-06"},
-                           {gi::kDefaultVplCutoff, 0.0f, fmt::format("cutoff {}", gi::kDefaultVplCutoff)},
-                           {kGiShortCutoff, 0.0f, fmt::format("cutoff {}", kGiShortCutoff)},
-                           {gi::kDefaultVplCutoff, 8.0f, "range 8 m"}};
-  for (const Reach& reach : reaches) {
+  const VplReachSpec reaches[] = {cutoffReach(1e-6f),
+                                  cutoffReach(gi::kDefaultVplCutoff),
+                                  cutoffReach(kGiShortCutoff),
+                                  {gi::kDefaultVplCutoff, 8.0f, 0.0f, "range 8 m"},
+                                  hierarchyReach(1.0f),
+                                  hierarchyReach(gi::kDefaultHierarchyAlpha),
+                                  hierarchyReach(3.0f)};
+  for (const VplReachSpec& reach : reaches) {
     for (const uint32_t vpls : counts) {
       Scenario s = makeScenario("gi-error", fmt::format("{} VPLs, {}", vpls, reach.name),
-                                vplScene("cornell", vpls, reach.cutoff, reach.range, options), size);
+                                vplScene("cornell", vpls, reach, options), size);
       s.settings.technique = "lll";
       s.settings.ambient = 0.0f;
       s.series = reach.name;
       s.compareWithReference = true;
       out.push_back(s);
-      // The interleaving's share of the error (--vpl-interleave 2), where the ranges come from a cutoff.
-      if (reach.range > 0.0f) continue;
+      // The interleaving's share of the error (--vpl-interleave 2), where the ranges come from a
+      // cutoff or the hierarchy's default.
+      if (reach.range > 0.0f || (reach.alpha > 0.0f && reach.alpha != gi::kDefaultHierarchyAlpha)) continue;
       s.settings.vplInterleave = 2;
       s.series = reach.name + ", interleave 2";
       out.push_back(s);
@@ -548,7 +627,7 @@ std::string techniqueLabel(const RenderSettings& settings) {
 const std::vector<std::string>& suiteNames() {
   static const std::vector<std::string> names = {"threel", "scaling",  "density",   "slices",
                                                  "moving", "tiles",    "overdraw",  "smoke",
-                                                 "gi",     "gi-error", "gi-moving", "shadows"};
+                                                 "gi",     "gi-error", "gi-hierarchy", "gi-moving", "shadows"};
   return names;
 }
 
@@ -563,6 +642,7 @@ std::vector<Scenario> buildSuite(const std::string& suite, const SuiteOptions& o
   if (suite == "smoke") return smokeSuite(options);
   if (suite == "gi") return giSuite(options);
   if (suite == "gi-error") return giErrorSuite(options);
+  if (suite == "gi-hierarchy") return giHierarchySuite(options);
   if (suite == "gi-moving") return giMovingSuite(options);
   if (suite == "shadows") return shadowsSuite(options);
   throw InputError(

@@ -183,6 +183,14 @@ void Viewer::drawControls() {
     committedUint("photons", request_.gi.photons, 1, gi::kMaxPhotons);
     committedUint("bounces", request_.gi.bounces, 1, gi::kMaxBounces);
     committedUint("VPL count", request_.gi.vplCount, 0, gpu::kMaxLights);
+    // The lighting grid hierarchy (gi/vpl_hierarchy.h): its levels' bands replace cutoff and range.
+    choice("VPL hierarchy", request_.gi.hierarchy, {"none", "grid"});
+    if (request_.gi.hierarchy == "grid") {
+      float alpha = request_.gi.vplAlpha;
+      ImGui::DragFloat("hierarchy alpha", &alpha, 0.05f, gi::kMinHierarchyAlpha, gi::kMaxHierarchyAlpha, "%.2f");
+      if (ImGui::IsItemDeactivatedAfterEdit())
+        request_.gi.vplAlpha = std::clamp(alpha, gi::kMinHierarchyAlpha, gi::kMaxHierarchyAlpha);
+    }
     float cutoff = request_.gi.vplCutoff;
     ImGui::DragFloat("VPL cutoff", &cutoff, 1e-5f, 1e-9f, 1.0f, "%.2e", ImGuiSliderFlags_Logarithmic);
     if (ImGui::IsItemDeactivatedAfterEdit()) request_.gi.vplCutoff = std::clamp(cutoff, 1e-9f, 1.0f);
