@@ -362,9 +362,11 @@ TEST(BenchSuites, GiHierarchySuiteSetsTheHierarchyAndItsComparisons) {
     ++bySeries[s.series];
     const std::string& t = s.settings.technique;
     if (s.scene.gi.hierarchy == "grid") {
-      EXPECT_EQ(!s.skip.empty(), (t == "forward" || t == "deferred" || t == "prepass") && s.scene.gi.vplCount > 5144)
+      EXPECT_EQ(!s.skip.empty(),
+                (t == "forward" || t == "deferred" || t == "prepass") && s.scene.gi.vplCount > 5144)
           << s.name << " " << t;
-      EXPECT_NE(s.series.find(fmt::format("hierarchy {}", s.scene.gi.vplAlpha)), std::string::npos) << s.series;
+      EXPECT_NE(s.series.find(fmt::format("hierarchy {}", s.scene.gi.vplAlpha)), std::string::npos)
+          << s.series;
       EXPECT_EQ(s.settings.tileSize == 16, s.name.ends_with("tile 16")) << s.name;
     } else {
       EXPECT_EQ(t, "lll");

@@ -198,6 +198,7 @@ TEST(Gi, SphereRoomMatchesTheAnalyticBounces) {
     request.gi.bounces = bounces;
     request.gi.photons = 50000;
     request.gi.vplCount = 2048;
+    request.gi.hierarchy = "none";
     request.gi.vplCutoff = 1e-6f;  // every VPL reaches across the sphere
     const Scene scene = loadScene(request);
     float geometric = 0.0f;
@@ -229,10 +230,12 @@ TEST(Gi, SphereRoomMatchesTheAnalyticBounces) {
 }
 
 // Every technique lights the Cornell room's VPLs as forward does (the indirect light alone, exposed
-// so that it fills the display range).
+// so that it fills the display range): one grid, ranges from the cutoff (the hierarchy's VPLs:
+// test_vpl_hierarchy.cpp).
 TEST(Gi, EveryTechniqueMatchesForwardWithTheSameVpls) {
   SceneRequest request{"cornell"};
   request.gi.mode = "vpl-only";
+  request.gi.hierarchy = "none";
   request.gi.photons = 20000;
   request.gi.vplCount = 1024;
   const Scene scene = loadScene(request);
@@ -289,6 +292,7 @@ TEST(Gi, ErrorAgainstTheReferenceFallsAsTheVplCountRises) {
     SceneRequest request{"cornell"};
     request.gi.mode = "vpl-only";
     request.gi.vplCount = count;
+    request.gi.hierarchy = "none";
     request.gi.vplCutoff = 1e-6f;  // every VPL reaches the whole room: only their number varies
     // 6x6-pixel blocks: the reference's per-pixel noise (13% at 1,024 samples) would hide the VPLs'
     // error, which varies slowly across the image; a block's mean has a sixth of it.
@@ -328,6 +332,15 @@ TEST_F(CliTest, GiOptionsOutOfRange) {
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-cutoff", "0"}), {"--vpl-cutoff"});
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-cutoff", "nan"}), {"--vpl-cutoff"});
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-range", "-1"}), {"--vpl-range"});
+  // Options the default hierarchy would ignore or cannot take.
+  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-cutoff", "0.01"}),
+                 {"--vpl-cutoff", "--vpl-hierarchy none"});
+  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-range", "3"}),
+                 {"--vpl-range 3", "--vpl-hierarchy none"});
+  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-count", "0"}),
+                 {"--vpl-count 0", "--vpl-hierarchy none"});
+  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-hierarchy", "none", "--vpl-alpha", "2"}),
+                 {"--vpl-alpha"});
 }
 
 }  // namespace

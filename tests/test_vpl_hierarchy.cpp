@@ -322,9 +322,18 @@ TEST_F(CliTest, VplHierarchyOptions) {
                  {"--vpl-count 0"});
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-hierarchy", "grid", "--vpl-range", "3"}),
                  {"--vpl-range 3"});
-  const test::CliResult ok = render(
-      "cornell", {"--gi", "vpl-only", "--vpl-hierarchy", "grid", "--photons", "4000", "--vpl-count", "256"});
-  EXPECT_EQ(ok.exitCode, 0) << ok.output;
+  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-hierarchy", "grid", "--vpl-cutoff", "0.01"}),
+                 {"--vpl-cutoff"});
+  for (const std::vector<std::string>& good :
+       {std::vector<std::string>{"--vpl-hierarchy", "grid", "--vpl-alpha", "2"},
+        {"--vpl-hierarchy", "none", "--vpl-cutoff", "0.01", "--vpl-range", "3"}}) {
+    std::vector<std::string> args = {"--gi", "vpl-only", "--photons", "4000", "--vpl-count", "256"};
+    args.insert(args.end(), good.begin(), good.end());
+    const test::CliResult ok = render("cornell", args);
+    EXPECT_EQ(ok.exitCode, 0) << ok.output;
+    EXPECT_TRUE(test::fs::exists(outPng()));
+    test::fs::remove(outPng());
+  }
 }
 
 }  // namespace

@@ -78,12 +78,13 @@ class SlowWorkProgress {
 };
 
 void printIndirectLight(const GiRequest& request, const gi::PhotonStats& s) {
-  fmt::print(stderr,
-             "lll: gi {}: {} photons, {} bounces at most: {} deposits in {:.1f} ms; {} virtual point lights "
-             "({}cell {:.3g} m) in {:.1f} ms\n",
-             request.mode, s.photons, request.bounces, s.deposits, s.traceMs, s.vpls,
-             s.levels > 0 ? fmt::format("{} hierarchy levels, alpha {}, finest ", s.levels, request.vplAlpha) : "",
-             s.cellSize, s.mergeMs);
+  fmt::print(
+      stderr,
+      "lll: gi {}: {} photons, {} bounces at most: {} deposits in {:.1f} ms; {} virtual point lights "
+      "({}cell {:.3g} m) in {:.1f} ms\n",
+      request.mode, s.photons, request.bounces, s.deposits, s.traceMs, s.vpls,
+      s.levels > 0 ? fmt::format("{} hierarchy levels, alpha {}, finest ", s.levels, request.vplAlpha) : "",
+      s.cellSize, s.mergeMs);
 }
 
 }  // namespace

@@ -158,9 +158,9 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "does not shrink as --vpl-count grows)")
       ->check(finiteIn(0.0, 1e6));
   cmd.add_option("--vpl-hierarchy", job.scene.gi.hierarchy,
-                 "--gi: none | grid (a lighting grid hierarchy: the deposits merged on grids of doubling "
-                 "cells, each level's VPLs lighting a band of distances; --vpl-count is its finest level's, "
-                 "and the bands replace --vpl-cutoff)")
+                 "--gi: grid (the default: a lighting grid hierarchy, the deposits merged on grids of "
+                 "doubling cells, each level's VPLs lighting a band of distances; --vpl-count is its finest "
+                 "level's, and the bands replace --vpl-cutoff and --vpl-range) | none (one grid)")
       ->check(CLI::IsMember({"none", "grid"}));
   cmd.add_option("--vpl-alpha", job.scene.gi.vplAlpha,
                  "--vpl-hierarchy grid: the radius of a level's band in its cells (larger: more accurate, "
@@ -283,6 +283,17 @@ void addLllMemoryOptions(CLI::App& cmd, lll::LllMemoryQuery& query) {
       ->capture_default_str();
 }
 
+// An option that the other --vpl-hierarchy would ignore: the cutoff under the hierarchy (its bands
+// set the ranges), the alpha without it. Empty when there is none.
+std::string giOptionConflict(const CLI::App& cmd, const lll::GiRequest& gi) {
+  if (gi.hierarchy == "grid" && cmd.count("--vpl-cutoff") > 0)
+    return "--vpl-cutoff: the lighting grid hierarchy (--vpl-hierarchy grid, the default) sets every VPL's "
+           "range from its level; add --vpl-hierarchy none to cut the ranges off instead";
+  if (gi.hierarchy != "grid" && cmd.count("--vpl-alpha") > 0)
+    return "--vpl-alpha: it sets the lighting grid hierarchy's accuracy, but --vpl-hierarchy is none";
+  return {};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -343,6 +354,12 @@ int main(int argc, char** argv) {
   view.settings = viewRender.settings;
   view.device = viewRender.device;
   view.frames = viewCmd->count("--frames") > 0 ? viewRender.settings.frames : 0;
+  for (const auto& [cmd, gi] : {std::pair{render, &job.scene.gi}, std::pair{viewCmd, &viewRender.scene.gi}}) {
+    if (const std::string error = giOptionConflict(*cmd, *gi); !error.empty()) {
+      fmt::print(stderr, "lll: error: {}\n", error);
+      return 2;
+    }
+  }
   if (view.screenshot && view.frames == 0) {
     fmt::print(stderr, "lll: error: view --screenshot needs --frames N (the frame it writes)\n");
     return 2;

@@ -432,17 +432,16 @@ VplReachSpec hierarchyReach(float alpha) {
 
 // A scene lit by its VPLs alone: `vpls` of them (the hierarchy's finest level) from about 1.5 times
 // as many deposits.
-SceneRequest vplScene(const char* scene, uint32_t vpls, const VplReachSpec& reach, const SuiteOptions& options) {
+SceneRequest vplScene(const char* scene, uint32_t vpls, const VplReachSpec& reach,
+                      const SuiteOptions& options) {
   SceneRequest request{scene, 0, 1};
   request.gi.mode = "vpl-only";
   request.gi.vplCount = vpls;
   request.gi.photons = options.quick ? 20000 : std::max(100000u, 3 * vpls);  // ~2 deposits a photon
   request.gi.vplCutoff = reach.cutoff;
   request.gi.vplRange = reach.range;
-  if (reach.alpha > 0.0f) {
-    request.gi.hierarchy = "grid";
-    request.gi.vplAlpha = reach.alpha;
-  }
+  request.gi.hierarchy = reach.alpha > 0.0f ? "grid" : "none";
+  if (reach.alpha > 0.0f) request.gi.vplAlpha = reach.alpha;
   return request;
 }
 
@@ -453,8 +452,9 @@ std::vector<Scenario> giSuite(const SuiteOptions& options) {
   std::vector<Scenario> out;
   for (const float cutoff : {gi::kDefaultVplCutoff, kGiShortCutoff}) {
     for (const uint32_t vpls : counts) {
-      const Scenario base = makeScenario("gi", fmt::format("{} VPLs, cutoff {}", vpls, cutoff),
-                                         vplScene(kDefaultSceneName, vpls, cutoffReach(cutoff), options), size);
+      const Scenario base =
+          makeScenario("gi", fmt::format("{} VPLs, cutoff {}", vpls, cutoff),
+                       vplScene(kDefaultSceneName, vpls, cutoffReach(cutoff), options), size);
       for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
         s.series = fmt::format("{}, cutoff {}", techniqueLabel(s.settings), cutoff);
         skipWhereTooSlow(s, vpls, options);
@@ -545,6 +545,7 @@ std::vector<Scenario> giMovingSuite(const SuiteOptions& options) {
   request.gi.mode = "vpl";
   request.gi.vplCount = options.quick ? 64 : gi::kDefaultVplCount;
   request.gi.photons = options.quick ? 20000 : gi::kDefaultPhotons;
+  request.gi.hierarchy = "none";  // as measured before the hierarchy (bench/README.md)
   request.gi.vplCutoff = kGiShortCutoff;
   std::vector<Scenario> out;
   const uint32_t budget = options.quick ? 1024 : gi::kDefaultRetracePhotons;
@@ -574,13 +575,11 @@ std::vector<Scenario> giErrorSuite(const SuiteOptions& options) {
       options.quick ? std::vector<uint32_t>{64, 512} : std::vector<uint32_t>{64, 512, 5144, 65536};
   const Size size = options.quick ? Size{48, 27} : Size{480, 360};
   std::vector<Scenario> out;
-  const VplReachSpec reaches[] = {cutoffReach(1e-6f),
-                                  cutoffReach(gi::kDefaultVplCutoff),
-                                  cutoffReach(kGiShortCutoff),
-                                  {gi::kDefaultVplCutoff, 8.0f, 0.0f, "range 8 m"},
-                                  hierarchyReach(1.0f),
-                                  hierarchyReach(gi::kDefaultHierarchyAlpha),
-                                  hierarchyReach(3.0f)};
+  const VplReachSpec reaches[] = {
+      cutoffReach(1e-6f),          cutoffReach(gi::kDefaultVplCutoff),
+      cutoffReach(kGiShortCutoff), {gi::kDefaultVplCutoff, 8.0f, 0.0f, "range 8 m"},
+      hierarchyReach(1.0f),        hierarchyReach(gi::kDefaultHierarchyAlpha),
+      hierarchyReach(3.0f)};
   for (const VplReachSpec& reach : reaches) {
     for (const uint32_t vpls : counts) {
       Scenario s = makeScenario("gi-error", fmt::format("{} VPLs, {}", vpls, reach.name),
@@ -625,9 +624,9 @@ std::string techniqueLabel(const RenderSettings& settings) {
 }
 
 const std::vector<std::string>& suiteNames() {
-  static const std::vector<std::string> names = {"threel", "scaling",  "density",   "slices",
-                                                 "moving", "tiles",    "overdraw",  "smoke",
-                                                 "gi",     "gi-error", "gi-hierarchy", "gi-moving", "shadows"};
+  static const std::vector<std::string> names = {"threel",       "scaling",   "density", "slices", "moving",
+                                                 "tiles",        "overdraw",  "smoke",   "gi",     "gi-error",
+                                                 "gi-hierarchy", "gi-moving", "shadows"};
   return names;
 }
 

@@ -45,11 +45,12 @@ void validateGi(const GiRequest& gi) {
                                  gi::kMinHierarchyAlpha, gi::kMaxHierarchyAlpha));
   if (gi.hierarchy == "grid" && gi.vplCount == 0)
     throw InputError(
-        "--vpl-hierarchy grid --vpl-count 0: the hierarchy's finest level needs a count to choose its cells");
+        "--vpl-count 0: the lighting grid hierarchy (--vpl-hierarchy grid, the default) needs a count to "
+        "choose its finest cells; add --vpl-hierarchy none to keep every deposit as its own light");
   if (gi.hierarchy == "grid" && gi.vplRange > 0.0f)
     throw InputError(
-        fmt::format("--vpl-hierarchy grid --vpl-range {}: the hierarchy's levels set every "
-                    "VPL's range; leave --vpl-range out",
+        fmt::format("--vpl-range {}: the lighting grid hierarchy (--vpl-hierarchy grid, the "
+                    "default) sets every VPL's range; add --vpl-hierarchy none for a fixed range",
                     gi.vplRange));
 }
 

@@ -22,8 +22,9 @@ struct GiRequest {
   uint32_t vplCount = gi::kDefaultVplCount;  // 0: one VPL per deposit, unmerged
   float vplCutoff = gi::kDefaultVplCutoff;
   float vplRange = 0.0f;  // metres; 0: from the cutoff
-  // none | grid: the lighting grid hierarchy over the VPLs (gi/vpl_hierarchy.h), with its accuracy.
-  std::string hierarchy = "none";
+  // grid | none: the lighting grid hierarchy over the VPLs (gi/vpl_hierarchy.h), with its accuracy;
+  // none: one grid, ranges from vplCutoff or vplRange.
+  std::string hierarchy = "grid";
   float vplAlpha = gi::kDefaultHierarchyAlpha;
   // With moving lights: their photons traced again per frame (gi/moving_vpls.h); 0: the VPLs stay
   // where the photons were first traced.

@@ -187,16 +187,19 @@ void Viewer::drawControls() {
     choice("VPL hierarchy", request_.gi.hierarchy, {"none", "grid"});
     if (request_.gi.hierarchy == "grid") {
       float alpha = request_.gi.vplAlpha;
-      ImGui::DragFloat("hierarchy alpha", &alpha, 0.05f, gi::kMinHierarchyAlpha, gi::kMaxHierarchyAlpha, "%.2f");
+      ImGui::DragFloat("hierarchy alpha", &alpha, 0.05f, gi::kMinHierarchyAlpha, gi::kMaxHierarchyAlpha,
+                       "%.2f");
       if (ImGui::IsItemDeactivatedAfterEdit())
         request_.gi.vplAlpha = std::clamp(alpha, gi::kMinHierarchyAlpha, gi::kMaxHierarchyAlpha);
     }
-    float cutoff = request_.gi.vplCutoff;
-    ImGui::DragFloat("VPL cutoff", &cutoff, 1e-5f, 1e-9f, 1.0f, "%.2e", ImGuiSliderFlags_Logarithmic);
-    if (ImGui::IsItemDeactivatedAfterEdit()) request_.gi.vplCutoff = std::clamp(cutoff, 1e-9f, 1.0f);
-    float range = request_.gi.vplRange;
-    ImGui::DragFloat("VPL range m (0: cutoff)", &range, 0.05f, 0.0f, 1e6f);
-    if (ImGui::IsItemDeactivatedAfterEdit()) request_.gi.vplRange = std::clamp(range, 0.0f, 1e6f);
+    if (request_.gi.hierarchy != "grid") {  // the hierarchy's bands set the ranges
+      float cutoff = request_.gi.vplCutoff;
+      ImGui::DragFloat("VPL cutoff", &cutoff, 1e-5f, 1e-9f, 1.0f, "%.2e", ImGuiSliderFlags_Logarithmic);
+      if (ImGui::IsItemDeactivatedAfterEdit()) request_.gi.vplCutoff = std::clamp(cutoff, 1e-9f, 1.0f);
+      float range = request_.gi.vplRange;
+      ImGui::DragFloat("VPL range m (0: cutoff)", &range, 0.05f, 0.0f, 1e6f);
+      if (ImGui::IsItemDeactivatedAfterEdit()) request_.gi.vplRange = std::clamp(range, 0.0f, 1e6f);
+    }
     // Each pixel of a KxK block evaluates a (K*K)th of the VPLs (render/interleaved_vpls.h).
     choice("VPL interleave K", settings_.vplInterleave, {1u, 2u, 3u, 4u});
     // With moving lights: the photons traced again each frame (gi/moving_vpls.h; 0: the VPLs stay).
