@@ -1,6 +1,7 @@
 // Instant radiosity (gi/photons.h): the photon tracer's energy against the analytic sphere room,
 // the merge's bounds, determinism, the Cornell room's colour bleeding, every technique against
 // forward with the same VPLs, and bad --gi options on the command line.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -182,7 +183,8 @@ TEST(Gi, CornellFloorBesideTheRedWallIsRed) {
 // (rho + rho^2 + rho^3) * I / R^2 after three, uniform over the sphere. The renderer's BRDF is
 // glTF's (a Fresnel-weighted diffuse and a GGX lobe), not Lambert: the scale is taken from a render
 // of a uniform ambient of the same irradiance (ambient radiance times base colour), so the test
-// checks the VPLs' energy and its uniformity, within 5% per pixel.
+// checks the VPLs' energy and its uniformity, within 5% on average and 10% per pixel: one grid whose
+// VPLs reach across the sphere, and the lighting grid hierarchy (gi/vpl_hierarchy.h).
 TEST(Gi, SphereRoomMatchesTheAnalyticBounces) {
   const float rho = builtin::kSphereRoomAlbedo;
   const float direct =
@@ -191,15 +193,15 @@ TEST(Gi, SphereRoomMatchesTheAnalyticBounces) {
   settings.width = 48;
   settings.height = 36;
   settings.technique = "forward";
-  for (uint32_t bounces : {1u, 3u}) {
-    SCOPED_TRACE(bounces);
+  for (const auto& [hierarchy, bounces] : {std::pair{"none", 1u}, {"none", 3u}, {"grid", 1u}, {"grid", 3u}}) {
+    SCOPED_TRACE(fmt::format("{}, {} bounces", hierarchy, bounces));
     SceneRequest request{"sphere-room"};
     request.gi.mode = "vpl-only";
     request.gi.bounces = bounces;
     request.gi.photons = 50000;
     request.gi.vplCount = 2048;
-    request.gi.hierarchy = "none";
-    request.gi.vplCutoff = 1e-6f;  // every VPL reaches across the sphere
+    request.gi.hierarchy = hierarchy;
+    request.gi.vplCutoff = 1e-6f;  // one grid: every VPL reaches across the sphere
     const Scene scene = loadScene(request);
     float geometric = 0.0f;
     for (uint32_t b = 1; b <= bounces; ++b) geometric += std::pow(rho, float(b));
@@ -222,35 +224,39 @@ TEST(Gi, SphereRoomMatchesTheAnalyticBounces) {
     }
     const double mean = sumRatio / double(settings.width * settings.height);
     std::printf(
-        "[ gi ] sphere room, %u bounces: VPL render / analytic = %.4f on average, %.4f off at worst\n",
-        bounces, mean, worst);
+        "[ gi ] sphere room, hierarchy %s, %u bounces: VPL render / analytic = %.4f on average, %.4f off at "
+        "worst\n",
+        hierarchy, bounces, mean, worst);
     EXPECT_NEAR(mean, 1.0, 0.05);
     EXPECT_LT(worst, 0.10);
   }
 }
 
 // Every technique lights the Cornell room's VPLs as forward does (the indirect light alone, exposed
-// so that it fills the display range): one grid, ranges from the cutoff (the hierarchy's VPLs:
-// test_vpl_hierarchy.cpp).
+// so that it fills the display range): one grid with ranges from the cutoff, and the lighting grid
+// hierarchy's bands.
 TEST(Gi, EveryTechniqueMatchesForwardWithTheSameVpls) {
-  SceneRequest request{"cornell"};
-  request.gi.mode = "vpl-only";
-  request.gi.hierarchy = "none";
-  request.gi.photons = 20000;
-  request.gi.vplCount = 1024;
-  const Scene scene = loadScene(request);
-  RenderSettings settings;
-  settings.width = 96;
-  settings.height = 72;
-  settings.ambient = 0.0f;
-  settings.exposure = 16.0f;
-  const test::Rendered reference = test::render(scene, test::reference(settings));
-  EXPECT_GT(test::shareAboveBlack(reference.ldr), 0.9) << "the indirect light should show everywhere";
-  for (const char* technique : {"lll", "tiled", "clustered", "deferred", "prepass"}) {
-    settings.technique = technique;
-    const test::ImageBound bound = settings.technique == "prepass" ? test::kPrepassBound : test::kSameImage;
-    test::expectWithinBound(test::render(scene, settings).ldr, reference.ldr, bound,
-                            std::string("cornell VPLs ") + technique);
+  for (const char* hierarchy : {"none", "grid"}) {
+    SCOPED_TRACE(hierarchy);
+    SceneRequest request{"cornell"};
+    request.gi.mode = "vpl-only";
+    request.gi.hierarchy = hierarchy;
+    request.gi.photons = 20000;
+    request.gi.vplCount = 1024;
+    const Scene scene = loadScene(request);
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 72;
+    settings.ambient = 0.0f;
+    settings.exposure = 16.0f;
+    const test::Rendered reference = test::render(scene, test::reference(settings));
+    EXPECT_GT(test::shareAboveBlack(reference.ldr), 0.9) << "the indirect light should show everywhere";
+    for (const char* technique : {"lll", "tiled", "clustered", "deferred", "prepass"}) {
+      settings.technique = technique;
+      const test::ImageBound bound = settings.technique == "prepass" ? test::kPrepassBound : test::kSameImage;
+      test::expectWithinBound(test::render(scene, settings).ldr, reference.ldr, bound,
+                              fmt::format("cornell VPLs, hierarchy {}, {}", hierarchy, technique));
+    }
   }
 }
 
@@ -332,15 +338,24 @@ TEST_F(CliTest, GiOptionsOutOfRange) {
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-cutoff", "0"}), {"--vpl-cutoff"});
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-cutoff", "nan"}), {"--vpl-cutoff"});
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-range", "-1"}), {"--vpl-range"});
-  // Options the default hierarchy would ignore or cannot take.
-  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-cutoff", "0.01"}),
-                 {"--vpl-cutoff", "--vpl-hierarchy none"});
-  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-range", "3"}),
-                 {"--vpl-range 3", "--vpl-hierarchy none"});
-  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-count", "0"}),
-                 {"--vpl-count 0", "--vpl-hierarchy none"});
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-hierarchy", "none", "--vpl-alpha", "2"}),
                  {"--vpl-alpha"});
+  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-cutoff", "0.01", "--vpl-alpha", "2"}),
+                 {"--vpl-alpha", "--vpl-cutoff"});
+}
+
+// The single grid's options (a cutoff, a fixed range, every deposit its own light) ask for the single
+// grid when --vpl-hierarchy is not given; the hierarchy is the default otherwise.
+TEST_F(CliTest, SingleGridOptionsAskForTheSingleGrid) {
+  for (const std::vector<std::string>& single :
+       {std::vector<std::string>{"--vpl-cutoff", "0.01"}, {"--vpl-range", "3"}, {"--vpl-count", "0"}, {}}) {
+    std::vector<std::string> args = {"--gi", "vpl-only", "--photons", "3000"};
+    args.insert(args.end(), single.begin(), single.end());
+    const test::CliResult r = render("cornell", args);
+    EXPECT_EQ(r.exitCode, 0) << r;
+    EXPECT_EQ(test::contains(r.output, "hierarchy levels"), single.empty()) << r;
+    std::filesystem::remove(outPng());
+  }
 }
 
 }  // namespace

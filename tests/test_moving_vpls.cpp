@@ -220,8 +220,7 @@ TEST(MovingVpls, TheRendererDrawsTheVplsThatMoved) {
 using test::CliTest;
 
 TEST_F(CliTest, MovingGiOptions) {
-  expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-hierarchy", "none", "--lights", "2", "--animate",
-                                    "--vpl-count", "0"}),
+  expectBadInput(render("cornell", {"--gi", "vpl", "--lights", "2", "--animate", "--vpl-count", "0"}),
                  {"--vpl-count 0", "--vpl-retrace 0"});
   expectBadInput(render("cornell", {"--gi", "vpl", "--vpl-retrace", "-1"}), {"--vpl-retrace"});
   const test::CliResult r = render(

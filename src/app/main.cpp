@@ -160,7 +160,8 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--vpl-hierarchy", job.scene.gi.hierarchy,
                  "--gi: grid (the default: a lighting grid hierarchy, the deposits merged on grids of "
                  "doubling cells, each level's VPLs lighting a band of distances; --vpl-count is its finest "
-                 "level's, and the bands replace --vpl-cutoff and --vpl-range) | none (one grid)")
+                 "level's) | none (one grid, ranges from --vpl-cutoff or --vpl-range; either of those, or "
+                 "--vpl-count 0, asks for it)")
       ->check(CLI::IsMember({"none", "grid"}));
   cmd.add_option("--vpl-alpha", job.scene.gi.vplAlpha,
                  "--vpl-hierarchy grid: the radius of a level's band in its cells (larger: more accurate, "
@@ -285,10 +286,26 @@ void addLllMemoryOptions(CLI::App& cmd, lll::LllMemoryQuery& query) {
 
 // An option that the other --vpl-hierarchy would ignore: the cutoff under the hierarchy (its bands
 // set the ranges), the alpha without it. Empty when there is none.
-std::string giOptionConflict(const CLI::App& cmd, const lll::GiRequest& gi) {
-  if (gi.hierarchy == "grid" && cmd.count("--vpl-cutoff") > 0)
-    return "--vpl-cutoff: the lighting grid hierarchy (--vpl-hierarchy grid, the default) sets every VPL's "
-           "range from its level; add --vpl-hierarchy none to cut the ranges off instead";
+std::string giOptionConflict(const CLI::App& cmd, lll::GiRequest& gi) {
+  // --vpl-cutoff, --vpl-range and --vpl-count 0 are the single grid's: without --vpl-hierarchy they
+  // ask for it (the default is the hierarchy), with --vpl-hierarchy grid they conflict.
+  const char* single = cmd.count("--vpl-cutoff") > 0                      ? "--vpl-cutoff"
+                       : cmd.count("--vpl-range") > 0                     ? "--vpl-range"
+                       : cmd.count("--vpl-count") > 0 && gi.vplCount == 0 ? "--vpl-count 0"
+                                                                          : nullptr;
+  if (single && cmd.count("--vpl-hierarchy") == 0) {
+    if (cmd.count("--vpl-alpha") > 0)
+      return fmt::format(
+          "--vpl-alpha sets the lighting grid hierarchy's accuracy, but {} asks for one grid "
+          "(--vpl-hierarchy none)",
+          single);
+    gi.hierarchy = "none";
+  }
+  if (single && gi.hierarchy == "grid")
+    return fmt::format(
+        "{}: the lighting grid hierarchy (--vpl-hierarchy grid) sets every VPL's range from "
+        "its level and needs a count; leave --vpl-hierarchy out or make it none",
+        single);
   if (gi.hierarchy != "grid" && cmd.count("--vpl-alpha") > 0)
     return "--vpl-alpha: it sets the lighting grid hierarchy's accuracy, but --vpl-hierarchy is none";
   return {};
@@ -346,6 +363,12 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  for (auto [cmd, gi] : {std::pair{render, &job.scene.gi}, std::pair{viewCmd, &viewRender.scene.gi}}) {
+    if (const std::string error = giOptionConflict(*cmd, *gi); !error.empty()) {
+      fmt::print(stderr, "lll: error: {}\n", error);
+      return 2;
+    }
+  }
   job.settings.seed = job.scene.seed;
   job.scene.movingLights = render->count("--time") > 0 || job.settings.animateLights;
   viewRender.settings.seed = viewRender.scene.seed;
@@ -354,12 +377,6 @@ int main(int argc, char** argv) {
   view.settings = viewRender.settings;
   view.device = viewRender.device;
   view.frames = viewCmd->count("--frames") > 0 ? viewRender.settings.frames : 0;
-  for (const auto& [cmd, gi] : {std::pair{render, &job.scene.gi}, std::pair{viewCmd, &viewRender.scene.gi}}) {
-    if (const std::string error = giOptionConflict(*cmd, *gi); !error.empty()) {
-      fmt::print(stderr, "lll: error: {}\n", error);
-      return 2;
-    }
-  }
   if (view.screenshot && view.frames == 0) {
     fmt::print(stderr, "lll: error: view --screenshot needs --frames N (the frame it writes)\n");
     return 2;
