@@ -13,6 +13,7 @@
 #include "gi/path_tracer.h"
 #include "gi/photons.h"
 #include "gi/ray_scene.h"
+#include "gi_test_support.h"
 #include "render/image_compare.h"
 #include "scene/builtin_gi_scenes.h"
 #include "test_support.h"
@@ -286,13 +287,7 @@ TEST(Gi, ErrorAgainstTheReferenceFallsAsTheVplCountRises) {
   settings.height = 36;
   settings.technique = "forward";
   settings.ambient = 0.0f;
-  const Scene direct = builtin::makeCornell();
-  gi::ReferenceOptions options;
-  options.spp = 1024;
-  options.bounces = 2;
-  options.indirectOnly = true;
-  const gi::RadianceImage reference =
-      gi::renderReference(direct, direct.cameras[0], settings.width, settings.height, options);
+  const HdrImage reference = test::cornellIndirectReference(settings.width, settings.height);
   double previous = 1e30;
   for (uint32_t count : {32u, 256u, 2048u}) {
     SceneRequest request{"cornell"};
@@ -302,9 +297,7 @@ TEST(Gi, ErrorAgainstTheReferenceFallsAsTheVplCountRises) {
     request.gi.vplCutoff = 1e-6f;  // every VPL reaches the whole room: only their number varies
     // 6x6-pixel blocks: the reference's per-pixel noise (13% at 1,024 samples) would hide the VPLs'
     // error, which varies slowly across the image; a block's mean has a sixth of it.
-    const double error =
-        relativeBlockError(test::render(loadScene(request), settings).hdr,
-                           HdrImage::fromRgb(reference.width, reference.height, reference.rgb), 6);
+    const double error = relativeBlockError(test::render(loadScene(request), settings).hdr, reference, 6);
     std::printf("[ gi ] cornell, %u VPLs: %.4f relative RMS error against the path-traced reference\n", count,
                 error);
     EXPECT_LT(error, previous) << count << " VPLs";

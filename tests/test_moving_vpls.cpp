@@ -9,6 +9,7 @@
 
 #include "cli_test_support.h"
 #include "gi/moving_vpls.h"
+#include "gi_test_support.h"
 #include "render/renderer.h"
 #include "scene/errors.h"
 #include "scene/scene_source.h"
@@ -47,17 +48,6 @@ gi::VplOptions smallTrace(uint32_t threads = 0) {
   return options;
 }
 
-std::vector<Light> litVpls(const std::vector<Light>& vpls) {
-  std::vector<Light> lit;
-  for (const Light& l : vpls)
-    if (l.intensity > 0.0f) lit.push_back(l);
-  std::sort(lit.begin(), lit.end(), [](const Light& a, const Light& b) {
-    return std::tie(a.position.x, a.position.y, a.position.z) <
-           std::tie(b.position.x, b.position.y, b.position.z);
-  });
-  return lit;
-}
-
 bool sameLight(const Light& a, const Light& b) {
   return a.type == b.type && a.position == b.position && a.direction == b.direction && a.color == b.color &&
          a.intensity == b.intensity && a.range == b.range && a.nearDistance == b.nearDistance;
@@ -73,7 +63,7 @@ size_t countDifferent(const std::vector<Light>& a, const std::vector<Light>& b) 
 // Each of `got`'s lit VPLs against the one of `expected` at its place, relative to `scale` (metres)
 // and to the brightest intensity.
 void expectSameLitVpls(const std::vector<Light>& got, const std::vector<Light>& expected, float scale) {
-  const std::vector<Light> a = litVpls(got), b = litVpls(expected);
+  const std::vector<Light> a = test::litVpls(got), b = test::litVpls(expected);
   ASSERT_EQ(a.size(), b.size());
   float brightest = 0.0f;
   for (const Light& l : b) brightest = std::max(brightest, l.intensity);

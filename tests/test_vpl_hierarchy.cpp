@@ -18,6 +18,7 @@
 #include "gi/photons.h"
 #include "gi/ray_scene.h"
 #include "gi/vpl_hierarchy.h"
+#include "gi_test_support.h"
 #include "render/image_compare.h"
 #include "scene/builtin_gi_scenes.h"
 #include "shared/limits.h"
@@ -149,14 +150,7 @@ TEST(VplHierarchy, CornellMatchesTheReferenceWithShortLists) {
   settings.technique = "lll";
   settings.tileSize = 4;
   settings.ambient = 0.0f;
-  const Scene direct = builtin::makeCornell();
-  gi::ReferenceOptions options;
-  options.spp = 1024;
-  options.bounces = 2;
-  options.indirectOnly = true;
-  const gi::RadianceImage radiance =
-      gi::renderReference(direct, direct.cameras[0], settings.width, settings.height, options);
-  const HdrImage reference = HdrImage::fromRgb(radiance.width, radiance.height, radiance.rgb);
+  const HdrImage reference = test::cornellIndirectReference(settings.width, settings.height);
   struct Run {
     double error, meanList;
   };
@@ -202,17 +196,6 @@ gi::VplOptions hierarchyTrace() {
   return options;
 }
 
-std::vector<Light> lit(const std::vector<Light>& vpls) {
-  std::vector<Light> out;
-  for (const Light& l : vpls)
-    if (l.intensity > 0.0f) out.push_back(l);
-  std::sort(out.begin(), out.end(), [](const Light& a, const Light& b) {
-    return std::tie(a.bandOuter, a.position.x, a.position.y, a.position.z) <
-           std::tie(b.bandOuter, b.position.x, b.position.y, b.position.z);
-  });
-  return out;
-}
-
 // At rest the re-trace changes no bit; after a move and one round of the moving photons, every
 // level's VPLs are those a fresh trace with the lights there leaves on the same levels.
 TEST(VplHierarchy, MovingLightsFollowOnEveryLevel) {
@@ -220,7 +203,7 @@ TEST(VplHierarchy, MovingLightsFollowOnEveryLevel) {
   gi::MovingVpls vpls(start, hierarchyTrace(), 1u << 20, gpu::kMaxLights);
   ASSERT_GE(vpls.levels().size(), 3u);
   const std::vector<Light> before = vpls.vpls();
-  for (const Light& l : lit(before)) ASSERT_GT(l.bandOuter, 0.0f);
+  for (const Light& l : test::litVpls(before)) ASSERT_GT(l.bandOuter, 0.0f);
   std::vector<Light> lights = before;
   vpls.moveTo(0.0f, lights, 0);
   for (size_t i = 0; i < before.size(); ++i)
@@ -232,7 +215,7 @@ TEST(VplHierarchy, MovingLightsFollowOnEveryLevel) {
   vpls.moveTo(later, lights, 0);
   const gi::MovingVpls fresh(loadScene(movingCornell(later)), hierarchyTrace(), 1, gpu::kMaxLights,
                              vpls.levels());
-  const std::vector<Light> a = lit(vpls.vpls()), b = lit(fresh.vpls());
+  const std::vector<Light> a = test::litVpls(vpls.vpls()), b = test::litVpls(fresh.vpls());
   ASSERT_EQ(a.size(), b.size());
   size_t moved = 0;
   for (size_t i = 0; i < a.size(); ++i) {

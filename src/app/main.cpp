@@ -284,8 +284,9 @@ void addLllMemoryOptions(CLI::App& cmd, lll::LllMemoryQuery& query) {
       ->capture_default_str();
 }
 
-// An option that the other --vpl-hierarchy would ignore: the cutoff under the hierarchy (its bands
-// set the ranges), the alpha without it. Empty when there is none.
+// Settles --vpl-hierarchy against the options only one of its modes takes: the single grid's options
+// ask for it when --vpl-hierarchy is not given; given with the other mode, an option is an error (its
+// message; empty when there is none).
 std::string giOptionConflict(const CLI::App& cmd, lll::GiRequest& gi) {
   // --vpl-cutoff, --vpl-range and --vpl-count 0 are the single grid's: without --vpl-hierarchy they
   // ask for it (the default is the hierarchy), with --vpl-hierarchy grid they conflict.

@@ -40,6 +40,7 @@ void traceInto(const RayScene& rays, const walk::Emitters& emitters, const VplOp
                const uint32_t* photons, size_t count, PhotonDeposit* slots, uint8_t* counts,
                const CellLookup& lookup) {
   const uint32_t chunks = uint32_t((count + kChunk - 1) / kChunk);
+  const size_t levels = lookup.levels->size();
   parallelFor(chunks, options.threads,
               [&](uint32_t c) {
                 std::vector<PhotonDeposit> out;
@@ -50,7 +51,6 @@ void traceInto(const RayScene& rays, const walk::Emitters& emitters, const VplOp
                   walk::tracePhoton(rays, emitters, options.photons, options.bounces, random, out);
                   counts[i] = uint8_t(out.size());
                   std::copy(out.begin(), out.end(), slots + i * options.bounces);
-                  const size_t levels = lookup.levels->size();
                   for (size_t k = 0; k < out.size(); ++k) {
                     for (size_t l = 0; l < levels; ++l) {
                       const auto& cells = (*lookup.cells)[l];
@@ -124,26 +124,21 @@ MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t r
   // as the load's deposits give them (their bands too); without it one grid whose VPLs' ranges come
   // from the cutoff.
   const auto mergeBegin = std::chrono::steady_clock::now();
-  banded_ = options.hierarchy;
   const float minNear = 1e-3f * diagonal;
   if (!grids.empty()) {
     levels_ = std::move(grids);
+  } else if (options.vplCount == 0) {
+    throw InputError(
+        "--vpl-count 0 keeps every deposit as its own light, but with moving lights (--animate, --time) the "
+        "deposits are merged on a fixed grid: give a count, or --vpl-retrace 0 to leave the VPLs where they "
+        "are first traced");
   } else {
-    float finest = 0.0f;
-    if (options.vplCount == 0) {
-      throw InputError(
-          "--vpl-count 0 keeps every deposit as its own light, but with moving lights (--animate, --time) "
-          "the deposits are merged on a fixed grid: give a count, or --vpl-retrace 0 to leave the VPLs where "
-          "they are first traced");
-    } else if (all.size() <= options.vplCount) {
-      finest = diagonal / walk::kCellSteps;  // about one cell per deposit
-    } else {
-      finest = walk::mergeCellEdge(all, options.vplCount, bounds_.min, diagonal);
-    }
-    if (banded_)
+    const float finest = walk::finestCellEdge(all, options.vplCount, bounds_.min, diagonal);
+    if (options.hierarchy)
       levels_ = buildVplHierarchy(all, bounds_.min, finest, options.alpha, diagonal, minNear).levels;
     if (levels_.empty())
-      levels_ = {VplLevel{finest, std::max(0.5f * finest, minNear), 0.0f, banded_ ? diagonal : 0.0f}};
+      levels_ = {
+          VplLevel{finest, std::max(0.5f * finest, minNear), 0.0f, options.hierarchy ? diagonal : 0.0f}};
   }
   cellOf_.resize(levels_.size());
   reach_ = {vplCutoffIrradiance(rays_->surfaceArea(), all, options.cutoff), options.range};
@@ -184,7 +179,7 @@ MovingVpls::MovingVpls(const Scene& scene, const VplOptions& options, uint32_t r
     *stats = traced;
     stats->mergeMs = millisecondsSince(mergeBegin);
     stats->cellSize = levels_[0].cellEdge;
-    stats->levels = banded_ ? levels : 0;
+    stats->levels = banded() ? levels : 0;
     stats->vpls = stats_.litSlots;
   }
 }
@@ -266,7 +261,7 @@ void MovingVpls::refresh(uint32_t index) {
     const VplLevel& level = levels_[c.level];
     Light& vpl = vpls_[size_t(c.slot)];
     vpl = makeVpl(position, normal, glm::max(glm::vec3(c.flux), glm::vec3(0.0f)), level.nearDistance, reach_);
-    if (banded_) setVplBand(vpl, level);
+    if (banded()) setVplBand(vpl, level);
     changedSlots_.push_back(uint32_t(c.slot));
   }
   stats_.droppedCells = stats_.droppedCells + (c.dropped ? 1u : 0u) - (wasDropped ? 1u : 0u);

@@ -94,7 +94,7 @@ class MovingVpls {
   uint32_t retracePerFrame_ = 0;
   // The grids: one without the hierarchy (its VPLs' ranges from reach_), else its levels (their bands).
   std::vector<VplLevel> levels_;
-  bool banded_ = false;
+  bool banded() const { return levels_.front().outer > 0.0f; }
   VplReach reach_;
 
   std::vector<uint32_t> movingPhotons_;        // photon indices, ascending

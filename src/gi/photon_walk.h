@@ -68,6 +68,11 @@ inline float boundsDiagonal(const Bounds& bounds) {
 std::vector<Light> mergeOnGrid(const std::vector<PhotonDeposit>& deposits, const glm::vec3& origin,
                                float cell, float nearDistance, const VplReach& reach);
 
+// The finest grid's edge for `target` VPLs: mergeCellEdge's, or about one cell per deposit when
+// there are no more deposits than that.
+float finestCellEdge(const std::vector<PhotonDeposit>& deposits, uint32_t target, const glm::vec3& origin,
+                     float diagonal);
+
 // The smallest cell edge (within 1%) at which the deposits, keyed from `origin`, fill at most
 // `target` cells; `diagonal` is the extent they span.
 float mergeCellEdge(const std::vector<PhotonDeposit>& deposits, uint32_t target, const glm::vec3& origin,

@@ -244,6 +244,12 @@ size_t countCells(const std::vector<std::pair<uint64_t, uint32_t>>& keys) {
 
 }  // namespace
 
+float walk::finestCellEdge(const std::vector<PhotonDeposit>& deposits, uint32_t target,
+                           const glm::vec3& origin, float diagonal) {
+  return deposits.size() <= target ? diagonal / kCellSteps
+                                   : mergeCellEdge(deposits, target, origin, diagonal);
+}
+
 Bounds walk::depositBounds(const std::vector<PhotonDeposit>& deposits) {
   Bounds bounds;
   for (const PhotonDeposit& d : deposits) bounds.expand(d.position);
@@ -326,9 +332,7 @@ std::vector<Light> hierarchyOver(const std::vector<PhotonDeposit>& deposits, con
   const auto begin = std::chrono::steady_clock::now();
   const Bounds bounds = walk::depositBounds(deposits);
   const float diagonal = walk::boundsDiagonal(bounds);
-  const float finest = deposits.size() <= options.vplCount
-                           ? diagonal / walk::kCellSteps
-                           : walk::mergeCellEdge(deposits, options.vplCount, bounds.min, diagonal);
+  const float finest = walk::finestCellEdge(deposits, options.vplCount, bounds.min, diagonal);
   const float reach = sceneBounds.valid() ? std::max(glm::length(sceneBounds.extent()), diagonal) : diagonal;
   VplHierarchy h = buildVplHierarchy(deposits, bounds.min, finest, options.alpha, reach, minNear);
   if (stats) {
