@@ -30,6 +30,7 @@ void main() {
   s.occlusion = 1.0;
   s.emissive = vec3(0.0);
   vec3 sum = vec3(0.0);
+  BrdfTerms terms = brdfTerms(s);
   for (uint i = 0u; i < probe.x; ++i) {
     float t = float(i);
     GpuLight light;
@@ -38,7 +39,7 @@ void main() {
     light.colorIntensity = vec4(fract(t * 0.25) + 0.25, fract(t * 0.5) + 0.25, 0.75, 50.0);
     light.directionType = vec4(0.0, -1.0, 0.0, float(kLightPoint));
     light.spotParams = vec4(-1.0, -0.5, 1.0, 0.0);
-    sum += evaluateLight(light, s);
+    sum += evaluateLight(light, s, terms);
   }
   imageStore(probeTarget, ivec2(pixel), vec4(sum, 1.0));
 }

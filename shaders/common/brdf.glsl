@@ -60,49 +60,89 @@ vec3 fresnelSchlick(vec3 f0, float vDotH) {
 // Dielectric specular reflectance at normal incidence (IOR 1.5), glTF's f0 for non-metals.
 const float kDielectricF0 = 0.04;
 
-// BRDF * cos(theta_l) for light arriving from unit direction l. glTF's material is
+// What brdfCosine needs of a surface whatever the light: computed once per surface, outside the
+// loop over its lights (the compiler need not find that it may hoist them).
+struct BrdfTerms {
+  vec3 diffuse;  // the dielectric's Lambert lobe before its Fresnel weight: (1 - metallic) baseColor / pi
+  vec3 f0;       // mix(0.04, baseColor, metallic)
+  float nDotV;
+  float a2;      // alpha^2 (alpha = roughness^2, at least 1e-3)
+  float smithV;  // the view's square root in the height-correlated Smith term
+};
+
+BrdfTerms brdfTerms(Surface s) {
+  BrdfTerms t;
+  t.diffuse = (1.0 - s.metallic) * s.baseColor / kPi;
+  t.f0 = mix(vec3(kDielectricF0), s.baseColor, s.metallic);
+  t.nDotV = max(dot(s.normal, s.view), 1e-4);
+  float alphaRoughness = max(s.roughness * s.roughness, 1e-3);
+  t.a2 = alphaRoughness * alphaRoughness;
+  t.smithV = sqrt(t.nDotV * t.nDotV * (1.0 - t.a2) + t.a2);
+  return t;
+}
+
+// BRDF * cos(theta_l) / q for light arriving from unit direction l (nDotL = dot(normal, l) > 0),
+// q > 0 the inverse square's denominator (1 for the sun). glTF's material is
 // mix(dielectric_brdf, metal_brdf, metallic): the dielectric's diffuse is weighted by its own
 // Fresnel term (f0 = 0.04), the metal has none, and the two specular lobes blend into one with
 // f0 = mix(0.04, baseColor, metallic). Weighting the diffuse by 1 - F of that blended f0 instead
 // darkens partly metallic surfaces (0.86x the specification at metallic 0.5).
+// The GGX distribution a2 / (pi dd^2), the Smith visibility 0.5 / sum and the 1 / q share one
+// reciprocal, and Schlick's (1 - vDotH)^5 is multiplied out: this runs once per light per pixel.
+vec3 brdfCosineOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q) {
+  vec3 h = halfVector(l, s.view);
+  float nDotH = max(dot(s.normal, h), 0.0);
+  float vDotH = clamp(dot(s.view, h), 0.0, 1.0);  // rounding can exceed 1 when l == v
+  float m = 1.0 - vDotH, m2 = m * m, schlick = m2 * m2 * m;
+  float dd = nDotH * nDotH * (t.a2 - 1.0) + 1.0;
+  float sum = nDotL * t.smithV + t.nDotV * sqrt(nDotL * nDotL * (1.0 - t.a2) + t.a2);
+  float r = 1.0 / (q * dd * dd * sum);  // every factor > 0: nDotL, nDotV > 0, dd >= a2, q >= 1e-4
+  vec3 diffuse = t.diffuse * ((1.0 - kDielectricF0) * (1.0 - schlick));  // 1 - the dielectric's F
+  vec3 fresnel = t.f0 + (1.0 - t.f0) * schlick;
+  return (diffuse * (dd * dd * sum * r) + fresnel * (t.a2 * (0.5 / kPi) * r)) * nDotL;
+}
+
+// BRDF * cos(theta_l) for light arriving from unit direction l.
 vec3 brdfCosine(Surface s, vec3 l) {
   float nDotL = dot(s.normal, l);
   if (nDotL <= 0.0) return vec3(0.0);
-  float nDotV = max(dot(s.normal, s.view), 1e-4);
-  vec3 h = halfVector(l, s.view);
-  float nDotH = max(dot(s.normal, h), 0.0);
-  float vDotH = clamp(dot(s.view, h), 0.0, 1.0);  // rounding can exceed 1 when l == v: pow(<0) is NaN
-  float alphaRoughness = max(s.roughness * s.roughness, 1e-3);
-  vec3 f0 = mix(vec3(kDielectricF0), s.baseColor, s.metallic);
-  float dielectricFresnel = fresnelSchlick(vec3(kDielectricF0), vDotH).x;
-  vec3 diffuse = (1.0 - s.metallic) * (1.0 - dielectricFresnel) * s.baseColor / kPi;
-  vec3 specular = fresnelSchlick(f0, vDotH) * distributionGgx(nDotH, alphaRoughness) *
-                  visibilitySmithGgxCorrelated(nDotL, nDotV, alphaRoughness);
-  return (diffuse + specular) * nDotL;
+  return brdfCosineOver(s, brdfTerms(s), l, nDotL, 1.0);
 }
 
-// KHR_lights_punctual's recommended smooth window, 1 at the light and 0 at its range.
-float rangeWindow(float distance, float range) {
-  float ratio = distance / range;
-  float window = clamp(1.0 - ratio * ratio * ratio * ratio, 0.0, 1.0);
+// Whether a light record is of `type` (kLightPoint...): its float compared, no conversion.
+bool lightIs(GpuLight light, uint type) {
+  return light.directionType.w == float(type);
+}
+
+// KHR_lights_punctual's recommended smooth window, 1 at the light and 0 at its range, from the
+// squared ratio of distance to range.
+float rangeWindowSquared(float ratioSquared) {
+  float window = clamp(1.0 - ratioSquared * ratioSquared, 0.0, 1.0);
   return window * window;
 }
 
-// KHR_lights_punctual: inverse square with that window.
-float rangeAttenuation(float distance, float range) {
-  return rangeWindow(distance, range) / max(distance * distance, 1e-4);
+float rangeWindow(float distance, float range) {
+  float ratio = distance / range;
+  return rangeWindowSquared(ratio * ratio);
 }
 
 // The band a VPL of the lighting grid hierarchy lights (gi/vpl_hierarchy.h): rising from `inner`
 // to 2 inner (none when inner is 0), falling from `outer` to 2 outer, smoothstep both ways, so that
-// a level's fall and the next level's rise add up to 1.
-float hierarchyBand(float distance, float inner, float outer) {
-  float rise = inner > 0.0 ? smoothstep(inner, 2.0 * inner, distance) : 1.0;
-  return rise * (1.0 - smoothstep(outer, 2.0 * outer, distance));
+// a level's fall and the next level's rise add up to 1. The light record keeps the radii's
+// reciprocals (scene/lights.cpp), so the band costs no division: smoothstep(a, 2a, d) = S(d / a - 1)
+// with S(x) = smoothstep(0, 1, x).
+float unitSmoothstep(float x) {
+  float t = clamp(x, 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+float hierarchyBand(float distance, float inverseInner, float inverseOuter) {
+  float rise = inverseInner > 0.0 ? unitSmoothstep(distance * inverseInner - 1.0) : 1.0;
+  return rise * (1.0 - unitSmoothstep(distance * inverseOuter - 1.0));
 }
 
 float spotAttenuation(GpuLight light, vec3 towardsLight) {
-  if (!kSceneHasSpots || uint(light.directionType.w) != kLightSpot) return 1.0;
+  if (!kSceneHasSpots || !lightIs(light, kLightSpot)) return 1.0;
   float cd = dot(light.directionType.xyz, -towardsLight);
   float t = clamp((cd - light.spotParams.x) * light.spotParams.z, 0.0, 1.0);
   return t * t;
@@ -128,22 +168,35 @@ void boxHalfAxes(GpuLight light, out vec3 x, out vec3 y, out vec3 z) {
   z = cross(ux, uy) * (hx * hx * hy * hy / light.spotParams.w);
 }
 
-// How much of a light's intensity reaches a point `toLight` away from it (`distance` its length,
-// `l` its direction): inverse square times the light's window (range sphere, spot cone or box).
-float lightAttenuation(GpuLight light, vec3 toLight, vec3 l, float distance) {
-  if (kSceneHasBoxes && uint(light.directionType.w) == kLightBox)
-    return boxWindow(light, -toLight) / max(distance * distance, 1e-4);
-  if (kSceneHasVpls && uint(light.directionType.w) == kLightVpl) {
+// A light's attenuation at a point `toLight` away from it (`l` its direction, `distance` its length,
+// `distanceSquared` its square, all inside the light's range) as window / max(q, 1e-4): returns
+// the window (range sphere, spot cone, box or VPL band, with a VPL's cosine) and sets q, the
+// squared distance its inverse square divides by.
+float lightWindow(GpuLight light, vec3 toLight, vec3 l, float distance, float distanceSquared, out float q) {
+  q = distanceSquared;
+  if (kSceneHasBoxes && lightIs(light, kLightBox)) return boxWindow(light, -toLight);
+  float range = light.positionRange.w;
+  if (kSceneHasVpls && lightIs(light, kLightVpl)) {
     // A Lambertian emitter: cos(theta) about its normal; its 1/d^2 clamped at its near distance,
     // where the point stops standing for the patch of surface it was merged from; KHR's window to
     // its range, or its hierarchy band.
     float cosine = max(dot(light.directionType.xyz, -l), 0.0);
     float clamped = max(distance, light.spotParams.x);
+    q = clamped * clamped;
     float window = light.spotParams.z > 0.0 ? hierarchyBand(distance, light.spotParams.y, light.spotParams.z)
-                                            : rangeWindow(clamped, light.positionRange.w);
-    return window / max(clamped * clamped, 1e-4) * cosine;
+                                            : rangeWindow(clamped, range);
+    return window * cosine;
   }
-  return rangeAttenuation(distance, light.positionRange.w) * spotAttenuation(light, l);
+  return rangeWindowSquared(distanceSquared / (range * range)) * spotAttenuation(light, l);
+}
+
+// How much of a light's intensity reaches a point `toLight` away from it (`distance` its length,
+// `l` its direction): inverse square times the light's window (range sphere, spot cone or box).
+float lightAttenuation(GpuLight light, vec3 toLight, vec3 l, float distance) {
+  if (distance >= light.positionRange.w) return 0.0;
+  float q;
+  float window = lightWindow(light, toLight, l, distance, distance * distance, q);
+  return window / max(q, 1e-4);
 }
 
 // lightAttenuation times the light's shadow at `position` (common/local_shadow.glsl), looked up only
@@ -155,15 +208,28 @@ float shadowedAttenuation(GpuLight light, vec3 position, vec3 normal, vec3 toLig
   return attenuation;
 }
 
-// Radiance one light reflects from the surface towards the eye.
-vec3 evaluateLight(GpuLight light, Surface s) {
+// Radiance one light reflects from the surface towards the eye; `t` is brdfTerms(s), computed once
+// per surface by the loops over lights.
+vec3 evaluateLight(GpuLight light, Surface s, BrdfTerms t) {
   vec3 toLight = light.positionRange.xyz - s.position;
-  float distance = length(toLight);
-  if (distance >= light.positionRange.w) return vec3(0.0);
-  vec3 l = toLight / max(distance, 1e-6);
-  float attenuation = shadowedAttenuation(light, s.position, s.normal, toLight, l, distance);
-  if (attenuation <= 0.0) return vec3(0.0);
-  return brdfCosine(s, l) * light.colorIntensity.rgb * (light.colorIntensity.w * attenuation);
+  float distanceSquared = dot(toLight, toLight);
+  float range = light.positionRange.w;
+  if (distanceSquared >= range * range) return vec3(0.0);
+  float inverseDistance = inversesqrt(max(distanceSquared, 1e-12));
+  float distance = distanceSquared * inverseDistance;
+  vec3 l = toLight * inverseDistance;
+  float nDotL = dot(s.normal, l);
+  if (nDotL <= 0.0) return vec3(0.0);
+  float q;
+  float window = lightWindow(light, toLight, l, distance, distanceSquared, q);
+  if (window <= 0.0) return vec3(0.0);
+  if (kLocalShadows) window *= localShadow(light, s.position, s.normal, l, distance);
+  return brdfCosineOver(s, t, l, nDotL, max(q, 1e-4)) * light.colorIntensity.rgb *
+         (light.colorIntensity.w * window);
+}
+
+vec3 evaluateLight(GpuLight light, Surface s) {
+  return evaluateLight(light, s, brdfTerms(s));
 }
 
 #endif

@@ -25,8 +25,9 @@ LightCursor lightsAtInClass(uvec2 pixel, float viewDepth, uint vplClass) {
 vec3 lightSurface(Surface s, uvec2 pixel, float viewDepth) {
   vec3 sum = vec3(0.0);
   LightCursor cursor = lightsAt(pixel, viewDepth);
+  BrdfTerms terms = brdfTerms(s);
   uint light;
-  while (nextLight(cursor, light)) sum += evaluateLight(lights[light], s);
+  while (nextLight(cursor, light)) sum += evaluateLight(lights[light], s, terms);
   return sum;
 }
 

@@ -27,15 +27,15 @@ layout(set = 0, binding = 13, rgba16f) uniform writeonly image2D hdr;
   {                                                                        \
     uint role_ = interleavedRole(index, frame.display.w, sums.pixelClass); \
     if (role_ == kLightDirect)                                             \
-      sums.direct += evaluateLight(light, s);                              \
+      sums.direct += evaluateLight(light, s, terms);                       \
     else if (role_ == kLightIndirect)                                      \
-      sums.indirect += evaluateLight(light, s);                            \
+      sums.indirect += evaluateLight(light, s, terms);                     \
   }
 #else
 #define LightSums vec3
 #define startSums(pixel) vec3(0.0)
 #define directOf(sums) sums
-#define addLight(sums, index, light, s) sums += evaluateLight(light, s)
+#define addLight(sums, index, light, s) sums += evaluateLight(light, s, terms)
 #endif
 
 #ifdef LIGHTING_EVERY_LIGHT
@@ -44,6 +44,7 @@ shared GpuLight chunkLights[kLightsPerChunk];
 
 // Every light, loaded by the workgroup 64 at a time; every invocation must call it.
 void lightFromChunks(Surface s, bool covered, inout LightSums sums) {
+  BrdfTerms terms = brdfTerms(s);
   uint lightCount = frame.counts.x;
   for (uint first = 0u; first < lightCount; first += kLightsPerChunk) {
     uint count = min(kLightsPerChunk, lightCount - first);
@@ -83,6 +84,7 @@ void main() {
 #else
     LightCursor cursor = lightsAt(pixel, viewDepth);
 #endif
+    BrdfTerms terms = brdfTerms(s);
     uint light;
     while (nextLight(cursor, light)) addLight(sums, light, lights[light], s);
   }

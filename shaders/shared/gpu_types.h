@@ -14,8 +14,9 @@ struct GpuLight {
                         // extent; w kLightPoint, kLightSpot or kLightBox
   vec4 spotParams;      // spot: x cos(outer cone), y cos(inner cone), z 1 / (y - x); spot and point: w
                         // the light's shadow views this frame (common/local_shadow.glsl; 0: none)
-                        // VPL: x its near distance (the 1/d^2 clamp), y z its hierarchy band's inner and
-                        // outer radius (z 0: none; common/brdf.glsl); directionType.xyz its normal
+                        // VPL: x its near distance (the 1/d^2 clamp), y z the reciprocals of its hierarchy
+                        // band's inner and outer radius (0: none; common/brdf.glsl); directionType.xyz
+                        // its normal
                         // box: xyz its y axis over its half extent, w hx * hy / hz (so that
                         // cross(x, y) * w is its z axis over its half extent)
 };

@@ -35,8 +35,8 @@ inline float smoothstep(float edge0, float edge1, float x) {
   return t * t * (3.0f - 2.0f * t);
 }
 
-// brdf.glsl's hierarchyBand: the band of distances a VPL of the lighting grid hierarchy lights
-// (gi/vpl_hierarchy.h).
+// brdf.glsl's hierarchyBand (which takes the radii's reciprocals, as the light record keeps them):
+// the band of distances a VPL of the lighting grid hierarchy lights (gi/vpl_hierarchy.h).
 inline float hierarchyBand(float distance, float inner, float outer) {
   const float rise = inner > 0.0f ? smoothstep(inner, 2.0f * inner, distance) : 1.0f;
   return rise * (1.0f - smoothstep(outer, 2.0f * outer, distance));

@@ -70,7 +70,9 @@ gpu::GpuLight toGpuLight(const Light& light) {
   }
   if (light.type == LightType::Vpl) {
     g.directionType = glm::vec4(glm::normalize(light.direction), float(gpu::kLightVpl));
-    g.spotParams = glm::vec4(light.nearDistance, light.bandInner, light.bandOuter, 0.0f);
+    // The band's radii as reciprocals (0: none), so that shading multiplies (common/brdf.glsl).
+    const auto inverse = [](float r) { return r > 0.0f ? 1.0f / r : 0.0f; };
+    g.spotParams = glm::vec4(light.nearDistance, inverse(light.bandInner), inverse(light.bandOuter), 0.0f);
     return g;
   }
   const uint32_t type = light.type == LightType::Spot ? gpu::kLightSpot : gpu::kLightPoint;
