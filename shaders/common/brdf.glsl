@@ -53,10 +53,6 @@ float visibilitySmithGgxCorrelated(float nDotL, float nDotV, float alphaRoughnes
   return sum > 0.0 ? 0.5 / sum : 0.0;
 }
 
-vec3 fresnelSchlick(vec3 f0, float vDotH) {
-  return f0 + (1.0 - f0) * pow(1.0 - vDotH, 5.0);
-}
-
 // Dielectric specular reflectance at normal incidence (IOR 1.5), glTF's f0 for non-metals.
 const float kDielectricF0 = 0.04;
 
