@@ -128,14 +128,18 @@ uvec2 listsOverlapping(uint tileIndex, float minDepth, float maxDepth) {
 // Allocates links and pushes one at the head of each of the tile's lists the light's depth bounds
 // overlap (LIFO), as the raster fills do: any number of fragments may push into one tile at once.
 // Past the pool's end the counter still counts, so the CPU learns the size the pool must grow to;
-// nothing is written.
+// nothing is written. One link per increment of 1: a GPU's compiler can merge a constant increment
+// of one address across a subgroup into one atomic, which it cannot for a count that differs per
+// fragment (the slices each overlaps), and every fragment of every light hits this one counter.
 void pushLink(uint tileIndex, uint lightIndex, float minDepth, float maxDepth) {
   uvec2 lists = listsOverlapping(tileIndex, minDepth, maxDepth);
-  uint link = atomicAdd(counters.linksRequested, lists.y - lists.x + 1u);
   uint classes = listClasses(), lightClass = lightListClass(lightIndex);
-  for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
-    writeLink(link, lightIndex, minDepth, maxDepth,
-              atomicExchange(tileHeads[list * classes + lightClass], link));
+  for (uint list = lists.x; list <= lists.y; ++list) {
+    uint link = atomicAdd(counters.linksRequested, 1u);
+    if (link < lll.params.x)
+      writeLink(link, lightIndex, minDepth, maxDepth,
+                atomicExchange(tileHeads[list * classes + lightClass], link));
+  }
 }
 #endif
 
