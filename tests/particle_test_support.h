@@ -13,7 +13,6 @@
 
 namespace lll::test {
 
-inline constexpr float kPi = 3.14159265358979f;
 // Steps of the smoke tests: 5 s, when the first puffs (4 to 6 s lives) have died.
 inline constexpr uint32_t kSmokeSteps = 300;
 

@@ -19,7 +19,7 @@
 namespace lll {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
+using test::kPi;
 
 // The plane's material and, optionally, a constant normal map and the file's tangents.
 struct PlaneMaterial {

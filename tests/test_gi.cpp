@@ -21,7 +21,7 @@
 namespace lll {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
+using test::kPi;
 
 float maxChannel(const glm::vec3& c) {
   return std::max({c.r, c.g, c.b});

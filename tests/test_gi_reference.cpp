@@ -20,7 +20,7 @@
 namespace lll {
 namespace {
 
-using gi::kPi;
+using test::kPi;
 
 gi::RadianceImage renderBuiltin(const Scene& scene, const std::string& camera, gi::ReferenceOptions options,
                                 uint32_t width = 32, uint32_t height = 24) {

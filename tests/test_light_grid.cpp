@@ -78,17 +78,17 @@ ClusterCheck checkClusters(const Scene& scene, const RenderSettings& settings) {
   return check;
 }
 
-struct ListCase {
+struct GridListCase {
   const char* technique;
   uint32_t slices;
   uint32_t tile;
   uint32_t lights;
 };
 
-class GridLists : public ::testing::TestWithParam<ListCase> {};
+class GridLists : public ::testing::TestWithParam<GridListCase> {};
 
 TEST_P(GridLists, MatchCpuReference) {
-  const ListCase c = GetParam();
+  const GridListCase c = GetParam();
   RenderSettings settings;
   settings.technique = c.technique;
   settings.clusterSlices = c.slices;
@@ -105,10 +105,10 @@ TEST_P(GridLists, MatchCpuReference) {
 
 INSTANTIATE_TEST_SUITE_P(
     Grids, GridLists,
-    ::testing::Values(ListCase{"tiled", 16, 8, 40}, ListCase{"tiled", 16, 16, 300},
-                      ListCase{"tiled", 16, 16, 1200}, ListCase{"clustered", 16, 8, 1200},
-                      ListCase{"clustered", 16, 8, 40}, ListCase{"clustered", 4, 16, 300},
-                      ListCase{"clustered", 32, 1, 40}),
+    ::testing::Values(GridListCase{"tiled", 16, 8, 40}, GridListCase{"tiled", 16, 16, 300},
+                      GridListCase{"tiled", 16, 16, 1200}, GridListCase{"clustered", 16, 8, 1200},
+                      GridListCase{"clustered", 16, 8, 40}, GridListCase{"clustered", 4, 16, 300},
+                      GridListCase{"clustered", 32, 1, 40}),
     [](const auto& info) {
       return std::string(info.param.technique) + "_" + std::to_string(info.param.slices) + "slices_tile" +
              std::to_string(info.param.tile) + "_" + std::to_string(info.param.lights) + "lights";

@@ -24,7 +24,7 @@ using test::samplesInside;
 using test::toView;
 using test::ViewLight;
 
-constexpr float kPi = 3.14159265358979f;
+using test::kPi;
 
 struct ListCheck {
   uint32_t mustList = 0;  // (tile, light) pairs the reference requires

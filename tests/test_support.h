@@ -19,6 +19,8 @@
 
 namespace lll::test {
 
+inline constexpr float kPi = 3.14159265358979f;
+
 inline Context& gpuContext() {
   static std::unique_ptr<Context> context = [] {
     ContextOptions options;

@@ -27,7 +27,7 @@
 namespace lll {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
+using test::kPi;
 
 std::vector<gi::PhotonDeposit> cornellDeposits(uint32_t photons, gi::PhotonStats* stats = nullptr) {
   const Scene scene = builtin::makeCornell();

@@ -10,6 +10,9 @@
 
 namespace lll {
 
+// The stage of every compute pass's barriers.
+inline constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+
 struct ContextOptions {
   std::string device = "auto";  // auto | gpu | cpu | INDEX (position in `lll devices`)
   bool validation = false;      // Khronos validation layers, synchronization validation included;

@@ -178,7 +178,6 @@ class Deferred final : public Technique {
   void sunPass(FrameContext& frame) {
     if (frame.uniforms.display.z == 0) return;
     const FrameTargets& t = frame.targets;
-    constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     frame.graph.pass(
         "deferred-sun",
         {uses(accumulation_, Use::StorageReadWrite, kCompute), uses(t.depth, Use::Sampled, kCompute),
@@ -200,7 +199,6 @@ class Deferred final : public Technique {
 
   void resolvePass(FrameContext& frame) {
     const FrameTargets& t = frame.targets;
-    constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     frame.graph.pass(
         edgeAa_ ? "deferred-edge-aa" : "deferred-resolve",
         {uses(accumulation_, Use::Sampled, kCompute), uses(t.depth, Use::Sampled, kCompute),

@@ -21,7 +21,6 @@ constexpr uint64_t kInitialEntriesPerCell = 64;
 uint32_t largeLightGroups(uint32_t lights) {
   return std::clamp<uint32_t>((lights + 511) / 512, 256, 2048);
 }
-constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 }  // namespace
 
 LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_t tileSize,

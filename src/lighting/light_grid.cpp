@@ -21,7 +21,6 @@ namespace {
 
 // Initial index entries per tile (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerTile = 32;
-constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 
 uint32_t parseGridDebugView(const std::string& name) {
   if (name == "none") return gpu::kDebugNone;

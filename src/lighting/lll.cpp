@@ -353,7 +353,6 @@ void LightLinkedList::clear(FrameContext& frame) {
 }
 
 void LightLinkedList::reduceTileDepth(FrameContext& frame) {
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   frame.graph.pass("lll-tile-depth",
                    {uses(frame.targets.depth, Use::Sampled, kCompute),
                     uses(tileRange_, Use::StorageWrite, kCompute), bins_.farDepthWrite(kCompute)},
@@ -445,7 +444,6 @@ void LightLinkedList::drawShellBatch(FrameContext& frame, uint32_t first, uint32
 }
 
 void LightLinkedList::measureLists(FrameContext& frame) {
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   frame.graph.pass("lll-stats",
                    {uses(heads_, Use::StorageRead, kCompute), uses(links_, Use::StorageRead, kCompute),
                     uses(counters_, Use::StorageReadWrite, kCompute)},

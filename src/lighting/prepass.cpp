@@ -235,7 +235,6 @@ class Prepass final : public Technique {
 
   // Resistance 2's screen-space sun shadow: how much of the sun reaches each pixel, 8 bits.
   void sunShadowPass(FrameContext& frame) {
-    constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     frame.graph.pass("prepass-sun-shadow",
                      {uses(frame.targets.depth, Use::Sampled, kCompute),
                       uses(normals_, Use::Sampled, kCompute), uses(sunShadow_, Use::StorageWrite, kCompute)},

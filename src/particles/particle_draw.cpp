@@ -105,7 +105,6 @@ DescriptorWriter ParticleSystem::descriptors(const FrameContext& frame,
 
 void ParticleSystem::lightParticles(FrameContext& frame, const DrawPipelines& pipelines,
                                     const LightingInterface& lighting) {
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   frame.graph.pass(
       "particles-light",
       std::vector<ResourceUse>{

@@ -187,7 +187,6 @@ void ParticleSystem::recordSteps(VkCommandBuffer cmd, uint32_t steps) {
 }
 
 void ParticleSystem::update(FrameContext& frame, bool advance) {
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   FrameGraph& graph = frame.graph;
   if (advance)
     graph.pass(

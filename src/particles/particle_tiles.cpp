@@ -39,7 +39,6 @@ namespace {
 static_assert(offsetof(gpu::ParticleTileHeader, requested) == offsetof(gpu::LightBinHeader, requested));
 static_assert(offsetof(gpu::ParticleTileHeader, cellsX) == offsetof(gpu::LightBinHeader, cellsX));
 static_assert(offsetof(gpu::ParticleTileHeader, cellsY) == offsetof(gpu::LightBinHeader, cellsY));
-constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 // Initial entries per tile (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerTile = 64;
 }  // namespace

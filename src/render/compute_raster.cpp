@@ -15,7 +15,6 @@ namespace {
 constexpr uint32_t kTriangleBitsConstant = 20;  // as common/visibility.frag
 constexpr VkDeviceSize kLargeHeader = 16;       // the count, padded to the entries' alignment
 constexpr uint32_t kBinSize = 32;               // as kRasterBinSize in common/raster.glsl
-constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 
 VkDeviceSize keyBytes(uint32_t width, uint32_t height) {
   return VkDeviceSize(width) * height * sizeof(uint64_t);

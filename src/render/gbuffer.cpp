@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "gpu/context.h"
 #include "render/gpu_scene.h"
 #include "render/visibility.h"
 
@@ -41,7 +42,6 @@ GBuffer::GBuffer(Context& context, const GpuScene& scene, const FrameTargets& ta
 void GBuffer::record(FrameContext& frame, const char* passName, const Image& accumulation) const {
   const FrameTargets& t = frame.targets;
   if (fromVisibility_) {
-    constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     frame.graph.pass(
         passName,
         {uses(accumulation, Use::StorageWrite, kCompute), uses(target0_, Use::StorageWrite, kCompute),

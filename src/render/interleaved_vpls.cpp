@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "gpu/context.h"
 #include "render/gpu_scene.h"
 #include "scene/errors.h"
 #include "shared/limits.h"
@@ -39,7 +40,6 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
 }
 
 std::vector<ResourceUse> InterleavedVpls::shadingWrites() const {
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   return {uses(indirect_, Use::StorageWrite, kCompute), uses(key_, Use::StorageWrite, kCompute)};
 }
 
@@ -56,7 +56,6 @@ void InterleavedVpls::dispatch(VkCommandBuffer cmd, const FrameTargets& targets)
 }
 
 void InterleavedVpls::filter(FrameContext& frame) {
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   const FrameTargets& t = frame.targets;
   frame.graph.pass("vpl-filter",
                    {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::StorageRead, kCompute),

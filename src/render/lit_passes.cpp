@@ -97,7 +97,6 @@ DescriptorWriter& LitPasses::bindGlassLists(DescriptorWriter& writer) const {
 void LitPasses::shadeGlassInCompute(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
   constexpr VkPipelineStageFlags2 kFragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   frame.graph.step({uses(glassHeads_, Use::TransferWrite), uses(glassCounters_, Use::TransferWrite)},
                    [&](VkCommandBuffer cmd) {
                      vkCmdFillBuffer(cmd, glassHeads_.handle(), 0, VK_WHOLE_SIZE, gpu::kGlassListEnd);
@@ -160,7 +159,6 @@ DescriptorWriter LitPasses::litDescriptors(const FrameContext& frame) const {
 
 void LitPasses::shadeOpaque(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   switch (opaque_) {
     case OpaqueShading::Own:
       return;

@@ -375,7 +375,6 @@ void Renderer::glassDepth(FrameContext& frame) {
 }
 
 void Renderer::tonemap(FrameContext& frame) {
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   frame.graph.pass(
       "tonemap",
       {uses(targets_.hdr, Use::StorageRead, kCompute), uses(targets_.ldr, Use::StorageWrite, kCompute)},

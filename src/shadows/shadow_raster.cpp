@@ -101,7 +101,6 @@ void ShadowRaster::setViews(std::span<const ShadowView> views) {
 }
 
 void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
-  constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
   const uint32_t groups = divideRoundingUp(triangles_, RasterWorkspace::kGroupSize);
   const uint32_t groupsPerRow = std::max(1u, std::min(groups, 65535u));
   gpu::RasterPush push{};
