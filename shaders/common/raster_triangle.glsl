@@ -90,19 +90,20 @@ uint rasterTileClass(RasterTriangle t, ivec2 lo, ivec2 hi) {
 }
 
 // Appends large triangle `slot` (`t`) to the lists of the 32x32-pixel bins its bounds touch, this
-// invocation taking every `parts`-th bin from `part`. With `exact`, only to those it may cover a
+// invocation taking every `parts`-th bin from `part`: only to those it may cover a
 // pixel centre of (rasterTileClass against the bin: a long thin diagonal triangle's bounds touch
 // many bins it misses, and every 8x8 tile of such a bin tests it again): on the H200 that took the
-// sun's resolve from 0.80 to 0.73 ms, binned by a workgroup a triangle, but made the visibility
-// pass, which bins from the thread that found the triangle, 0.16 ms slower.
-void rasterListInBins(uint slot, RasterTriangle t, uint imageHeight, uint part, uint parts, bool exact) {
+// sun's resolve from 0.80 to 0.73 ms. Both passes bin a workgroup a triangle, after their triangle
+// pass (shadows/caster_bins.comp, common/raster_bins.comp): binned by the thread that found it, one
+// atomic per bin in a serial loop, the atrium's floor held the visibility pass for 0.6 ms at 1080p.
+void rasterListInBins(uint slot, RasterTriangle t, uint imageHeight, uint part, uint parts) {
   uvec4 bins = uvec4(t.bounds) / kRasterBinSize;
   uint across = bins.z - bins.x + 1u;
   uint count = across * (bins.w - bins.y + 1u);
   for (uint i = part; i < count; i += parts) {
     uvec2 xy = uvec2(bins.x + i % across, bins.y + i / across);
     ivec2 first = ivec2(xy * kRasterBinSize), last = first + int(kRasterBinSize) - 1;
-    if (exact && count > 1u &&
+    if (count > 1u &&
         rasterTileClass(t, rasterCentre(first.x, first.y), rasterCentre(last.x, last.y)) == 0u)
       continue;
     uint bin = xy.y * raster.large.z + xy.x;
@@ -182,9 +183,6 @@ void rasterize(vec4 c0, vec4 c1, vec4 c2, uint id, bool cullBack, RasterTarget t
     if (slot < raster.large.x) {
       RasterTriangle t = RasterTriangle(ivec4(v0, v1), ivec4(v2, int(id), int(topLeft)), vec4(z, 0.0), box);
       largeTriangles[slot] = t;
-#ifndef RASTER_BINS_LATER
-      rasterListInBins(slot, t, uint(target.imageSize.y), 0u, 1u, false);
-#endif
       return;
     }
     // The list is full: cover it here (slowly, but nothing is lost).

@@ -3,7 +3,8 @@
 // triangle of the frame. It transforms the triangle as visibility.vert does, clips it where it
 // crosses the near or far plane or leaves the guard band, culls back faces of single-sided
 // primitives, and either covers the pixels of a small bounding box itself, with a 64-bit atomic
-// max of (depth, id) per pixel, or appends the triangle to the list the per-pixel pass tests.
+// max of (depth, id) per pixel, or appends the triangle to the list that common/raster_bins.comp
+// bins for the per-pixel pass.
 #extension GL_EXT_shader_atomic_int64 : require
 #extension GL_EXT_control_flow_attributes : enable
 #include "common/frame.glsl"

@@ -23,5 +23,5 @@ void main() {
   uint imageHeight = shadowViewHeader.z;
   uint listed = min(largeCount, raster.large.x);
   for (uint slot = gl_WorkGroupID.x; slot < listed; slot += gl_NumWorkGroups.x)
-    rasterListInBins(slot, largeTriangles[slot], imageHeight, gl_LocalInvocationID.x, 64u, true);
+    rasterListInBins(slot, largeTriangles[slot], imageHeight, gl_LocalInvocationID.x, 64u);
 }

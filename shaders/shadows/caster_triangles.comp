@@ -19,8 +19,7 @@ layout(push_constant) uniform RasterBlock {
 };
 
 // A shadow cascade's large triangles can span thousands of bins: shadows/caster_bins.comp lists
-// them, a workgroup per triangle, instead of the thread that found them.
-#define RASTER_BINS_LATER
+// them, a workgroup per triangle, after this pass.
 #include "common/raster_triangle.glsl"
 
 void main() {

@@ -15,6 +15,7 @@ namespace {
 constexpr uint32_t kTriangleBitsConstant = 20;  // as common/visibility.frag
 constexpr VkDeviceSize kLargeHeader = 16;       // the count, padded to the entries' alignment
 constexpr uint32_t kBinSize = 32;               // as kRasterBinSize in common/raster.glsl
+constexpr uint32_t kBinningGroups = 1024;       // raster_bins.comp's workgroups, each taking every 1024th
 
 VkDeviceSize keyBytes(uint32_t width, uint32_t height) {
   return VkDeviceSize(width) * height * sizeof(uint64_t);
@@ -124,9 +125,11 @@ ComputeRaster::ComputeRaster(Context& context, uint32_t width, uint32_t height, 
   // LLL_RASTER_OWN_BOX overrides the threshold, for measuring it (bench/README.md).
   if (const char* own = std::getenv("LLL_RASTER_OWN_BOX"); own && *own)
     largestOwnBox_ = uint32_t(std::clamp(std::strtoul(own, nullptr, 10), 1ul, 1ul << 20));
-  layout_ = PipelineLayout(context, {"common/raster_triangles.comp", "common/raster_resolve.comp"});
+  layout_ = PipelineLayout(
+      context, {"common/raster_triangles.comp", "common/raster_bins.comp", "common/raster_resolve.comp"});
   triangles_ = Pipeline(context, layout_, "common/raster_triangles.comp",
                         SpecializationConstants{{kTriangleBitsConstant, triangleBits}});
+  bins_ = Pipeline(context, layout_, "common/raster_bins.comp");
   resolve_ = Pipeline(context, layout_, "common/raster_resolve.comp");
   starts_ = Buffer(context, (VkDeviceSize(maxRecords) + 1) * sizeof(uint32_t),
                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "raster-triangle-starts");
@@ -162,6 +165,16 @@ void ComputeRaster::record(FrameContext& frame, const Buffer& surfaceRecords, ui
     pushConstants(cmd);
     vkCmdDispatch(cmd, groupsPerRow, divideRoundingUp(groups, groupsPerRow), 1);
   });
+  frame.graph.pass(
+      "visibility-bins",
+      {uses(work_.large(), Use::StorageRead, kCompute), uses(work_.bins(), Use::StorageReadWrite, kCompute)},
+      [&](VkCommandBuffer cmd) {
+        if (groups == 0) return;
+        bins_.bind(cmd);
+        writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+        pushConstants(cmd);
+        vkCmdDispatch(cmd, kBinningGroups, 1, 1);
+      });
   frame.graph.pass(
       "visibility-resolve",
       work_.resolveUses() + std::vector<ResourceUse>{uses(t.visibility, Use::StorageWrite, kCompute)},

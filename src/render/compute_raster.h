@@ -3,11 +3,12 @@
 // few graphics-capable units the hardware pass is fragment-bound, and a compute pass can do the
 // same work on every unit (Nanite and Schütz's point/triangle rasterizers use this shape).
 //
-// Three steps, each in the frame graph:
+// Four steps, each in the frame graph:
 //  - "visibility" (common/raster_triangles.comp): one invocation per triangle transforms, clips,
 //    culls and snaps it as the hardware would, then covers a small bounding box itself with a
 //    64-bit atomic max of (depth << 32 | id + 1) per pixel, or appends the triangle to a list;
-//    large ones are listed once and their slot appended to each 32x32-pixel bin they touch;
+//  - "visibility-bins" (common/raster_bins.comp): a workgroup per listed triangle appends its slot
+//    to each 32x32-pixel bin it may cover a pixel centre of;
 //  - "visibility-resolve" (common/raster_resolve.comp): one invocation per pixel tests its bin's
 //    large triangles against its centre (a workgroup first drops those missing its 8x8 tile and
 //    skips the edge tests of those covering all of it), keeps the nearest key, and writes the id
@@ -107,6 +108,7 @@ class ComputeRaster {
   Context& context_;
   PipelineLayout layout_;
   Pipeline triangles_;
+  Pipeline bins_;
   Pipeline resolve_;
   Buffer starts_;  // uint per record + 1, rewritten every frame
   RasterWorkspace work_;
