@@ -103,8 +103,7 @@ void rasterListInBins(uint slot, RasterTriangle t, uint imageHeight, uint part, 
   for (uint i = part; i < count; i += parts) {
     uvec2 xy = uvec2(bins.x + i % across, bins.y + i / across);
     ivec2 first = ivec2(xy * kRasterBinSize), last = first + int(kRasterBinSize) - 1;
-    if (count > 1u &&
-        rasterTileClass(t, rasterCentre(first.x, first.y), rasterCentre(last.x, last.y)) == 0u)
+    if (count > 1u && rasterTileClass(t, rasterCentre(first.x, first.y), rasterCentre(last.x, last.y)) == 0u)
       continue;
     uint bin = xy.y * raster.large.z + xy.x;
     uint k = atomicAdd(binData[bin], 1u);
