@@ -112,6 +112,14 @@ void rasterListInBins(uint slot, RasterTriangle t, uint imageHeight, uint part, 
   }
 }
 
+// The binning passes' body (common/raster_bins.comp, shadows/caster_bins.comp): every listed large
+// triangle binned by a 64-invocation workgroup, the workgroups taking every gl_NumWorkGroups-th.
+void rasterBinListed(uint imageHeight) {
+  uint listed = min(largeCount, raster.large.x);
+  for (uint slot = gl_WorkGroupID.x; slot < listed; slot += gl_NumWorkGroups.x)
+    rasterListInBins(slot, largeTriangles[slot], imageHeight, gl_LocalInvocationID.x, 64u);
+}
+
 const int kMaxClipped = 9;  // a triangle clipped by six planes
 
 void cover(ivec2 v0, ivec2 v1, ivec2 v2, uint topLeft, int64_t area2, vec3 z, uint id, ivec4 box,

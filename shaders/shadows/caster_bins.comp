@@ -20,8 +20,5 @@ layout(push_constant) uniform RasterBlock {
 #include "common/raster_triangle.glsl"
 
 void main() {
-  uint imageHeight = shadowViewHeader.z;
-  uint listed = min(largeCount, raster.large.x);
-  for (uint slot = gl_WorkGroupID.x; slot < listed; slot += gl_NumWorkGroups.x)
-    rasterListInBins(slot, largeTriangles[slot], imageHeight, gl_LocalInvocationID.x, 64u);
+  rasterBinListed(shadowViewHeader.z);
 }

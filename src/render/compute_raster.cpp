@@ -15,7 +15,6 @@ namespace {
 constexpr uint32_t kTriangleBitsConstant = 20;  // as common/visibility.frag
 constexpr VkDeviceSize kLargeHeader = 16;       // the count, padded to the entries' alignment
 constexpr uint32_t kBinSize = 32;               // as kRasterBinSize in common/raster.glsl
-constexpr uint32_t kBinningGroups = 1024;       // raster_bins.comp's workgroups, each taking every 1024th
 
 VkDeviceSize keyBytes(uint32_t width, uint32_t height) {
   return VkDeviceSize(width) * height * sizeof(uint64_t);
@@ -79,6 +78,10 @@ void RasterWorkspace::clear(FrameGraph& graph) const {
 std::vector<ResourceUse> RasterWorkspace::triangleUses() const {
   return {uses(keys_, Use::StorageReadWrite, kCompute), uses(large_, Use::StorageReadWrite, kCompute),
           uses(bins_, Use::StorageReadWrite, kCompute)};
+}
+
+std::vector<ResourceUse> RasterWorkspace::binUses() const {
+  return {uses(large_, Use::StorageRead, kCompute), uses(bins_, Use::StorageReadWrite, kCompute)};
 }
 
 std::vector<ResourceUse> RasterWorkspace::resolveUses() const {
@@ -165,16 +168,13 @@ void ComputeRaster::record(FrameContext& frame, const Buffer& surfaceRecords, ui
     pushConstants(cmd);
     vkCmdDispatch(cmd, groupsPerRow, divideRoundingUp(groups, groupsPerRow), 1);
   });
-  frame.graph.pass(
-      "visibility-bins",
-      {uses(work_.large(), Use::StorageRead, kCompute), uses(work_.bins(), Use::StorageReadWrite, kCompute)},
-      [&](VkCommandBuffer cmd) {
-        if (groups == 0) return;
-        bins_.bind(cmd);
-        writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-        pushConstants(cmd);
-        vkCmdDispatch(cmd, kBinningGroups, 1, 1);
-      });
+  frame.graph.pass("visibility-bins", work_.binUses(), [&](VkCommandBuffer cmd) {
+    if (groups == 0) return;
+    bins_.bind(cmd);
+    writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+    pushConstants(cmd);
+    vkCmdDispatch(cmd, RasterWorkspace::kBinningGroups, 1, 1);
+  });
   frame.graph.pass(
       "visibility-resolve",
       work_.resolveUses() + std::vector<ResourceUse>{uses(t.visibility, Use::StorageWrite, kCompute)},

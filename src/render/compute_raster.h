@@ -41,7 +41,9 @@ class RasterWorkspace {
   // measurement on the H200 (bench/README.md): one thread loops over its box, so a large box keeps
   // its SIMD group waiting.
   static constexpr uint32_t kLargestOwnBox = 64;
-  static constexpr uint32_t kBinCapacity = 1024;  // listed triangles per bin; a fuller bin tests them all
+  static constexpr uint32_t kBinCapacity = 1024;
+  static constexpr uint32_t kBinningGroups =
+      1024;  // the binning passes' workgroups  // listed triangles per bin; a fuller bin tests them all
 
   // Why `context`'s device cannot rasterize `what` (e.g. "1920x1080") of width x height this way;
   // empty when it can.
@@ -64,15 +66,14 @@ class RasterWorkspace {
   // The frame-graph step that clears the list's count, the bins' counts and the keys (unless the
   // resolve resets them).
   void clear(FrameGraph& graph) const;
-  // The uses of the triangle pass, of the per-pixel pass (which writes the depth), and the step
-  // that copies the depth into `image` (a D32 image of the same size): all of it, or only `cells`;
-  // a GPU-timed pass when `name` is given.
+  // The uses of the triangle pass, of the binning pass, of the per-pixel pass (which writes the
+  // depth), and the step that copies the depth into `image` (a D32 image of the same size): all of
+  // it, or only `cells`; a GPU-timed pass when `name` is given.
   std::vector<ResourceUse> triangleUses() const;
+  std::vector<ResourceUse> binUses() const;
   std::vector<ResourceUse> resolveUses() const;
   void copyDepth(FrameGraph& graph, const Image& image, std::span<const VkRect2D> cells = {},
                  const std::string& name = {}) const;
-  const Buffer& large() const { return large_; }
-  const Buffer& bins() const { return bins_; }
 
  private:
   uint32_t width_ = 0;

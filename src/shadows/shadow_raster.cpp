@@ -13,11 +13,7 @@
 
 namespace lll {
 
-namespace {
-
-constexpr uint32_t kBinningGroups = 1024;  // caster_bins.comp's workgroups, each taking every 1024th
-
-}  // namespace
+namespace {}  // namespace
 
 std::string ShadowRaster::problem(const Context& context, uint32_t width, uint32_t height) {
   return RasterWorkspace::problem(context, width, height, fmt::format("a {}x{} shadow atlas", width, height));
@@ -132,13 +128,10 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
     bindAll(cmd, trianglePipeline_);
     vkCmdDispatch(cmd, groupsPerRow, divideRoundingUp(groups, groupsPerRow), 1);
   });
-  frame.graph.pass(
-      name_ + "-bins",
-      {uses(work_.large(), Use::StorageRead, kCompute), uses(work_.bins(), Use::StorageReadWrite, kCompute)},
-      [&](VkCommandBuffer cmd) {
-        bindAll(cmd, binPipeline_);
-        vkCmdDispatch(cmd, kBinningGroups, 1, 1);
-      });
+  frame.graph.pass(name_ + "-bins", work_.binUses(), [&](VkCommandBuffer cmd) {
+    bindAll(cmd, binPipeline_);
+    vkCmdDispatch(cmd, RasterWorkspace::kBinningGroups, 1, 1);
+  });
   std::vector<ResourceUse> resolveUses = work_.resolveUses();
   if (intoImage_) resolveUses.push_back(uses(atlas, Use::StorageWrite, kCompute));
   frame.graph.pass(name_ + "-resolve", resolveUses, [&](VkCommandBuffer cmd) {
