@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cstdlib>
 #include <string>
 
@@ -13,6 +15,7 @@
 #include "render/visibility.h"
 #include "scene/builtin_scenes.h"
 #include "scene/errors.h"
+#include "scene/mesh_builder.h"
 #include "scene/scene_source.h"
 #include "test_support.h"
 
@@ -95,6 +98,79 @@ TEST(ComputeRaster, EveryTriangleThroughTheBinsStillMatches) {
   unsetenv("LLL_RASTER_OWN_BOX");
   test::expectWithinBound(compute.ldr, hardware.ldr, test::kRasterBound,
                           "compute raster, all triangles binned");
+}
+
+// The plane with, with `glass`, a pane of glass over it and, with `masked`, two alpha-masked quads
+// under the glass: one kept (alpha 0.9 over the 0.5 cutoff), one cut away (alpha 0.2).
+Scene planeWith(bool glass, bool masked) {
+  Scene scene = *makeBuiltinScene("plane");
+  if (!glass) return scene;
+  Material pane;
+  pane.baseColorFactor = glm::vec4(0.8f, 0.9f, 1.0f, 0.5f);
+  pane.alphaMode = AlphaMode::Blend;
+  scene.materials.push_back(pane);
+  MeshBuilder quads("pane");
+  quads.setMaterial(uint32_t(scene.materials.size() - 1));
+  quads.addQuad(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, 0.0f)), glm::vec2(1.5f));
+  scene.instances.push_back(Instance{quads.addTo(scene), glm::mat4(1.0f)});
+  if (!masked) return scene;
+  for (const float alpha : {0.9f, 0.2f}) {
+    Material leaf;
+    leaf.baseColorFactor = glm::vec4(0.2f, 0.7f, 0.1f, alpha);
+    leaf.alphaMode = AlphaMode::Mask;
+    leaf.alphaCutoff = 0.5f;
+    leaf.doubleSided = true;
+    scene.materials.push_back(leaf);
+    MeshBuilder quad("leaf");
+    quad.setMaterial(uint32_t(scene.materials.size() - 1));
+    const float x = alpha > 0.5f ? -0.4f : 0.4f;
+    quad.addQuad(glm::translate(glm::mat4(1.0f), glm::vec3(x, 0.5f, 0.0f)), glm::vec2(0.6f));
+    scene.instances.push_back(Instance{quad.addTo(scene), glm::mat4(1.0f)});
+  }
+  return scene;
+}
+
+// The D32 depth is filled from the compute rasterizer's only for a frame with a pass that uses it:
+// not for lll's or tiled's frame with glass, whose passes sample the rasterizer's own R32F depth and
+// test the glass fragments against it, nor for particles rendered in compute; but with alpha-masked
+// primitives (the hardware draws them into the D32 depth), with particles drawn by the rasterizer (a
+// depth test) and with particles about glass (the glass is drawn into a copy of the D32 depth).
+// Each frame must still match the hardware pass's.
+TEST(ComputeRaster, TheDepthImageIsFilledOnlyForPassesThatUseIt) {
+  if (skipWithoutFeatures()) GTEST_FAIL() << ComputeRaster::problem(test::gpuContext(), 160, 90);
+  struct Case {
+    bool glass;
+    bool masked;
+    const char* technique;
+    const char* particles;  // render path, empty: none
+    double copied;
+  };
+  for (const Case& c : {Case{true, false, "lll", "", 0.0}, Case{true, false, "tiled", "", 0.0},
+                        Case{false, false, "lll", "compute", 0.0}, Case{false, false, "lll", "raster", 1.0},
+                        Case{true, false, "lll", "compute", 1.0}, Case{true, true, "lll", "", 1.0},
+                        Case{true, true, "clustered", "", 1.0}}) {
+    const std::string label =
+        fmt::format("{}{}{}{}", c.technique, c.glass ? ", glass" : "", c.masked ? ", masked" : "",
+                    *c.particles ? fmt::format(", {} particles", c.particles) : "");
+    SCOPED_TRACE(label);
+    const Scene scene = planeWith(c.glass, c.masked);
+    RenderSettings settings;
+    settings.width = 160;
+    settings.height = 90;
+    settings.technique = c.technique;
+    settings.camera = "0,2.2,2.2,0,0.3,0";
+    if (*c.particles) {
+      settings.particles = "smoke";
+      settings.particleRender = c.particles;
+      settings.particleLighting = "vertex";
+      settings.particleCount = 512;
+      settings.particleEmitter = "0,0.2,0";
+    }
+    const test::Rendered hardware = renderWith(scene, settings, "hardware");
+    const test::Rendered compute = renderWith(scene, settings, "compute");
+    EXPECT_EQ(test::stat(compute, "raster-depth-copy"), c.copied);
+    test::expectWithinBound(compute.ldr, hardware.ldr, test::kRasterBound, "compute raster " + label);
+  }
 }
 
 // The pre-pass draws its normals and combine pass with depth EQUAL the visibility pass, and so does

@@ -1,8 +1,9 @@
 #version 460
 // The compute rasterizer's second pass (render/compute_raster.h): one invocation per pixel keeps
 // the nearest (depth, id) of the first pass's key and its bin's large triangles
-// (common/raster_triangle.glsl), and writes the visibility image and the depth the later passes
-// test against.
+// (common/raster_triangle.glsl), and writes the visibility image and the depth twice: as an image
+// for the passes that sample it, and as a buffer the D32 depth image is copied from when a pass
+// depth-tests (render/compute_raster.h).
 #include "common/frame.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -11,6 +12,7 @@ layout(set = 0, binding = 20, r32ui) uniform writeonly uimage2D visibilityImage;
 layout(std430, set = 0, binding = 24) writeonly buffer DepthBlock {
   float depthOut[];
 };
+layout(set = 0, binding = 26, r32f) uniform writeonly image2D depthImage;
 layout(push_constant) uniform RasterBlock {
   RasterPush raster;
 };
@@ -24,6 +26,7 @@ void main() {
   if (any(greaterThanEqual(pixel, size))) return;
   uint id = best == 0ul ? kNoSurface : uint(best & 0xFFFFFFFFul) - 1u;
   imageStore(visibilityImage, pixel, uvec4(id));
-  depthOut[uint(pixel.y) * uint(size.x) + uint(pixel.x)] =
-      best == 0ul ? 0.0 : uintBitsToFloat(uint(best >> 32));
+  float depth = best == 0ul ? 0.0 : uintBitsToFloat(uint(best >> 32));
+  imageStore(depthImage, pixel, vec4(depth));
+  depthOut[uint(pixel.y) * uint(size.x) + uint(pixel.x)] = depth;
 }

@@ -130,13 +130,14 @@ void LightGrid::buildLightData(FrameContext& frame) {
                    });
   bins_.clear(frame);
   frame.graph.pass("grid-tile-range",
-                   {uses(frame.targets.depth, Use::Sampled, kCompute),
+                   {uses(frame.targets.sampledDepth(), Use::Sampled, kCompute),
                     uses(tileRange_, Use::StorageWrite, kCompute), bins_.farDepthWrite(kCompute)},
                    [&](VkCommandBuffer cmd) {
                      tileRangePipeline_.bind(cmd);
                      descriptors(frame)
-                         .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frame.targets.depth.view(),
-                                VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+                         .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                frame.targets.sampledDepth().view(),
+                                sampledLayout(frame.targets.sampledDepth()), depthSampler_)
                          .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
                      vkCmdDispatch(cmd, divideRoundingUp(tilesX_, gpu::kTileGroupSize),
                                    divideRoundingUp(tilesY_, gpu::kTileGroupSize), 1);

@@ -177,7 +177,7 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
                                const LightingInterface& lighting) {
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
-  const Image& depth = targets.depth;
+  const Image& depth = targets.sampledDepth();
   // With glass: its depth, and the layer behind it. Without: stand-ins the shader never touches.
   const bool behind = bool(targets.glassDepth);
   const Image& glass = behind ? targets.glassDepth : depth;
@@ -206,10 +206,10 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
         .storage(19, t.entries.handle())
         .storage(20, t.screen.handle())
         .storage(23, t.layers.handle())
-        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(),
-               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-        .image(25, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, glass.view(),
-               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(), sampledLayout(depth),
+               depthSampler_)
+        .image(25, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, glass.view(), sampledLayout(glass),
+               depthSampler_)
         .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
         .storage(36, layersBehind.handle())
         .image(37, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, layerDepthBehind.view(), VK_IMAGE_LAYOUT_GENERAL);
@@ -223,7 +223,8 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
 void ParticleSystem::resolve(FrameContext& frame, ParticleLayer layer) {
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
-  const Image& depth = particleSceneDepth(targets, layer);
+  // Sampled only: the compute rasterizer's own depth will do (FrameTargets::sampledDepth).
+  const Image& depth = layer == ParticleLayer::InFrontOfGlass ? targets.glassDepth : targets.sampledDepth();
   const bool behind = layer == ParticleLayer::BehindGlass;
   const Buffer& layers = behind ? t.layersBehind : t.layers;
   const Image& layerDepth = behind ? t.layerDepthBehind : t.layerDepth;
@@ -238,8 +239,8 @@ void ParticleSystem::resolve(FrameContext& frame, ParticleLayer layer) {
             .storage(0, frame.uniformBuffer.handle())
             .storage(17, t.headerBuffer.handle())
             .storage(23, layers.handle())
-            .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(),
-                   VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+            .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(), sampledLayout(depth),
+                   depthSampler_)
             .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
             .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
             .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.resolveLayout);

@@ -154,7 +154,8 @@ void ComputeRaster::record(FrameContext& frame, const Buffer& surfaceRecords, ui
       .storage(18, scene.positionBuffer().handle())
       .storage(19, scene.indexBuffer().handle())
       .storage(21, starts_.handle())
-      .image(20, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.visibility.view(), VK_IMAGE_LAYOUT_GENERAL);
+      .image(20, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.visibility.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(26, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.rasterDepth.view(), VK_IMAGE_LAYOUT_GENERAL);
   work_.bind(writer);
   const auto pushConstants = [&](VkCommandBuffer cmd) {
     vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
@@ -177,7 +178,8 @@ void ComputeRaster::record(FrameContext& frame, const Buffer& surfaceRecords, ui
   });
   frame.graph.pass(
       "visibility-resolve",
-      work_.resolveUses() + std::vector<ResourceUse>{uses(t.visibility, Use::StorageWrite, kCompute)},
+      work_.resolveUses() + std::vector<ResourceUse>{uses(t.visibility, Use::StorageWrite, kCompute),
+                                                     uses(t.rasterDepth, Use::StorageWrite, kCompute)},
       [&](VkCommandBuffer cmd) {
         resolve_.bind(cmd);
         writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
@@ -185,7 +187,12 @@ void ComputeRaster::record(FrameContext& frame, const Buffer& surfaceRecords, ui
         vkCmdDispatch(cmd, divideRoundingUp(t.width, RasterWorkspace::kTileSize),
                       divideRoundingUp(t.height, RasterWorkspace::kTileSize), 1);
       });
-  work_.copyDepth(frame.graph, t.depth);
+  // The D32 depth only for passes that use it (a depth test, the masked primitives, a copy).
+  depthCopied_ = false;
+  frame.graph.produceOnFirstUse(t.depth, [this, &graph = frame.graph, &depth = t.depth] {
+    work_.copyDepth(graph, depth);
+    depthCopied_ = true;
+  });
 }
 
 }  // namespace lll

@@ -129,6 +129,11 @@ Access describe(const ResourceUse& u) {
 
 }  // namespace
 
+VkImageLayout sampledLayout(const Image& image) {
+  return isDepthFormat(image.format()) ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL
+                                       : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+}
+
 FrameGraph::FrameGraph(VkCommandBuffer cmd, PassTimer& timer) : cmd_(cmd), timer_(timer) {}
 
 FrameGraph::State& FrameGraph::state(const void* resource) {
@@ -144,7 +149,30 @@ FrameGraph::State& FrameGraph::state(const void* resource) {
   return states_.back();
 }
 
+void FrameGraph::produceOnFirstUse(const Image& image, std::function<void()> produce) {
+  for (auto& [pending, p] : producers_)
+    if (pending == &image) {
+      p = std::move(produce);
+      return;
+    }
+  producers_.emplace_back(&image, std::move(produce));
+}
+
+void FrameGraph::runProducers(const std::vector<ResourceUse>& uses) {
+  for (const ResourceUse& u : uses) {
+    if (!u.image) continue;
+    auto found =
+        std::find_if(producers_.begin(), producers_.end(), [&](const auto& p) { return p.first == u.image; });
+    if (found == producers_.end()) continue;
+    // Out of the list first: the producer's own steps use the image too.
+    std::function<void()> produce = std::move(found->second);
+    producers_.erase(found);
+    produce();
+  }
+}
+
 void FrameGraph::barriers(const std::vector<ResourceUse>& uses) {
+  if (!producers_.empty()) runProducers(uses);
   // One access per resource: a pass using a resource two ways (a depth image tested and sampled,
   // a buffer read as indirect arguments and as storage) needs one barrier covering both, since
   // barriers in one call are not ordered against each other's layout transitions.

@@ -58,6 +58,10 @@ inline std::vector<ResourceUse> operator+(std::vector<ResourceUse> a, const std:
   return a;
 }
 
+// The layout a pass's descriptor names for `image` sampled (Use::Sampled): depth images are
+// sampled in the layout they are depth-tested in.
+VkImageLayout sampledLayout(const Image& image);
+
 class FrameGraph {
  public:
   FrameGraph(VkCommandBuffer cmd, PassTimer& timer);
@@ -70,6 +74,12 @@ class FrameGraph {
 
   // Barriers for `uses` alone, for steps inside a pass that need them between their own commands.
   void barriers(const std::vector<ResourceUse>& uses);
+
+  // Records `produce` (which adds its own steps or passes) just before the first later pass, step
+  // or barrier that uses `image`, and not at all if none does: for work only some frames need (the
+  // compute rasterizer's depth copied into the D32 image for passes that depth-test). One pending
+  // producer per image; a second replaces the first.
+  void produceOnFirstUse(const Image& image, std::function<void()> produce);
 
   VkCommandBuffer commandBuffer() const { return cmd_; }
 
@@ -84,10 +94,12 @@ class FrameGraph {
     VkAccessFlags2 visibleAccess = 0;
   };
   State& state(const void* resource);
+  void runProducers(const std::vector<ResourceUse>& uses);
 
   VkCommandBuffer cmd_;
   PassTimer& timer_;
   std::vector<State> states_;
+  std::vector<std::pair<const Image*, std::function<void()>>> producers_;
 };
 
 }  // namespace lll

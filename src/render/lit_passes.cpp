@@ -58,8 +58,14 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
     glass_ = Pipeline(context, meshLayout_, desc);
     return;
   }
-  desc.fragmentShader = "common/glass_fragments.frag";
+  glassTestsDepth_ = targets.rasterDepthComplete;
+  desc.fragmentShader =
+      glassTestsDepth_ ? "common/glass_fragments_tested.frag" : "common/glass_fragments.frag";
   desc.colorFormats = {};
+  if (glassTestsDepth_) {
+    desc.depthFormat = VK_FORMAT_UNDEFINED;
+    desc.depthTest = false;
+  }
   glassFragmentsLayout_ =
       PipelineLayout(context, {"common/mesh.vert", desc.fragmentShader}, {scene.materialSetLayout()});
   glassFragments_ = Pipeline(context, glassFragmentsLayout_, desc);
@@ -103,16 +109,20 @@ void LitPasses::shadeGlassInCompute(FrameContext& frame) {
                      const gpu::GlassCounters start{0, uint32_t(glassCapacity_), 0, 0};
                      vkCmdUpdateBuffer(cmd, glassCounters_.handle(), 0, sizeof(start), &start);
                    });
+  const Image& opaqueDepth = glassTestsDepth_ ? t.sampledDepth() : t.depth;
   frame.graph.pass(
       "glass-fragments",
-      {uses(t.depth, Use::DepthTest), uses(glassHeads_, Use::StorageReadWrite, kFragment),
-       uses(glassNodes_, Use::StorageWrite, kFragment), uses(glassNext_, Use::StorageWrite, kFragment),
+      {glassTestsDepth_ ? uses(opaqueDepth, Use::Sampled, kFragment) : uses(opaqueDepth, Use::DepthTest),
+       uses(glassHeads_, Use::StorageReadWrite, kFragment), uses(glassNodes_, Use::StorageWrite, kFragment),
+       uses(glassNext_, Use::StorageWrite, kFragment),
        uses(glassCounters_, Use::StorageReadWrite, kFragment)},
       [&](VkCommandBuffer cmd) {
-        beginRendering(cmd, t.width, t.height, {}, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
-                       false);
+        beginRendering(cmd, t.width, t.height, {}, glassTestsDepth_ ? VK_NULL_HANDLE : t.depth.view(),
+                       VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
         glassFragments_.bind(cmd);
         DescriptorWriter writer = meshPassDescriptors(frame);
+        if (glassTestsDepth_)
+          writer.image(36, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, opaqueDepth.view(), sampledLayout(opaqueDepth));
         bindGlassLists(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, glassFragmentsLayout_);
         frame.scene.draw(cmd, glassFragmentsLayout_.handle(), DrawFilter::Blend);
         vkCmdEndRendering(cmd);

@@ -72,6 +72,9 @@ class LitPasses {
   void shadeGlassInCompute(FrameContext& frame);
   DescriptorWriter& bindGlassLists(DescriptorWriter& writer) const;
   bool computeGlass_ = false;
+  // glass-fragments compares each fragment with the compute rasterizer's depth itself, with no
+  // depth attachment (FrameTargets::rasterDepthComplete): that frame needs no D32 copy.
+  bool glassTestsDepth_ = false;
   PipelineLayout glassFragmentsLayout_;
   Pipeline glassFragments_;
   PipelineLayout glassLayout_;

@@ -158,6 +158,11 @@ void Renderer::createTargets() {
     targets_.visibility =
         Image(context_, w, h, kVisibilityFormat,
               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT, "visibility");
+  if (visibility_ && visibility_->computeRaster()) {
+    targets_.rasterDepth = Image(context_, w, h, VK_FORMAT_R32_SFLOAT,
+                                 VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "raster-depth");
+    targets_.rasterDepthComplete = !visibility_->hasMaskedDraws();
+  }
   hdrReadback_ =
       Buffer(context_, VkDeviceSize(w) * h * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
   ldrReadback_ =
@@ -291,6 +296,10 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
   // 1 when opaque surfaces came from the visibility buffer (its ids are lighting memory too).
   s.push_back({"visibility-buffer", visibility_ ? 1.0 : 0.0});
   s.push_back({"compute-raster", visibility_ && visibility_->computeRaster() ? 1.0 : 0.0});
+  // 1 when a pass of the last frame depth-tested or copied the D32 depth, which the compute
+  // rasterizer then had to fill (render/compute_raster.h).
+  if (visibility_ && visibility_->computeRaster())
+    s.push_back({"raster-depth-copy", visibility_->rasterDepthCopied() ? 1.0 : 0.0});
   if (visibility_) s.push_back({"visibility_bytes", 4.0 * settings_.width * settings_.height});
   if (particles_) {
     const auto p = particles_->stats();

@@ -85,6 +85,7 @@ VisibilityBuffer::VisibilityBuffer(Context& context, const GpuScene& scene, bool
   desc.fragmentShader = "common/visibility_mask.frag";
   desc.vertexInput = VertexInput::Mesh;
   masked_ = Pipeline(context, maskedLayout_, desc);
+  for (const DrawItem& d : scene.draws()) hasMaskedDraws_ |= !scene.isBlended(d) && masked(scene, d);
 
   const uint64_t maxRecords = std::max<uint64_t>(1, idLayout(scene).maxRecords);
   const uint64_t draws = std::max<size_t>(1, scene.draws().size());

@@ -47,6 +47,11 @@ class VisibilityBuffer {
   uint32_t triangleBits() const { return triangleBits_; }
   uint32_t recordCount() const { return recordCount_; }
   bool computeRaster() const { return compute_ != nullptr; }
+  // With the compute rasterizer: whether the last frame needed its depth copied into the D32 image.
+  bool rasterDepthCopied() const { return compute_ && compute_->depthCopied(); }
+  // Whether the scene has opaque alpha-masked draws: with the compute rasterizer they are drawn by
+  // the hardware into the D32 depth afterwards, so its R32F depth misses them.
+  bool hasMaskedDraws() const { return hasMaskedDraws_; }
 
  private:
   struct MaskedDraw {
@@ -58,6 +63,7 @@ class VisibilityBuffer {
   void drawMasked(VkCommandBuffer cmd, const FrameContext& frame) const;
 
   Context& context_;
+  bool hasMaskedDraws_ = false;
   uint32_t triangleBits_ = 0;
   PipelineLayout layout_;
   PipelineLayout maskedLayout_;
