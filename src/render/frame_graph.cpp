@@ -24,8 +24,16 @@ bool isDepthFormat(VkFormat format) {
          format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D16_UNORM;
 }
 
+}  // namespace
+
+VkImageLayout sampledLayout(const Image& image) {
+  return isDepthFormat(image.format()) ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL
+                                       : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+}
+
+namespace {
+
 Access describe(const ResourceUse& u) {
-  const bool depthImage = u.image && isDepthFormat(u.image->format());
   switch (u.use) {
     case Use::ColorWrite:
       return {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -80,7 +88,7 @@ Access describe(const ResourceUse& u) {
       // A depth image is sampled in the layout it is depth-tested in: both in one pass, no change.
       return {u.stages,
               VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-              depthImage ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+              u.image ? sampledLayout(*u.image) : VK_IMAGE_LAYOUT_UNDEFINED,
               true,
               false,
               false};
@@ -128,11 +136,6 @@ Access describe(const ResourceUse& u) {
 }
 
 }  // namespace
-
-VkImageLayout sampledLayout(const Image& image) {
-  return isDepthFormat(image.format()) ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL
-                                       : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-}
 
 FrameGraph::FrameGraph(VkCommandBuffer cmd, PassTimer& timer) : cmd_(cmd), timer_(timer) {}
 
