@@ -125,6 +125,10 @@ const Image& particleSceneDepth(const FrameTargets& targets, ParticleLayer layer
   return layer == ParticleLayer::InFrontOfGlass ? targets.glassDepth : targets.depth;
 }
 
+const Image& particleSampledDepth(const FrameTargets& targets, ParticleLayer layer) {
+  return layer == ParticleLayer::InFrontOfGlass ? targets.glassDepth : targets.sampledDepth();
+}
+
 const Image& particleGlassDepth(const FrameTargets& targets, ParticleLayer layer) {
   return layer == ParticleLayer::BehindGlass ? targets.glassDepth : particleSceneDepth(targets, layer);
 }

@@ -57,6 +57,9 @@ inline constexpr uint32_t kBehindGlassConstant = 50;
 // depth before the glass; the scene depth as a stand-in the shaders never read otherwise), and the
 // suffix of its pass names.
 const Image& particleSceneDepth(const FrameTargets& targets, ParticleLayer layer);
+// The same depth for passes that only sample it (FrameTargets::sampledDepth: the compute
+// rasterizer's own depth where it will do).
+const Image& particleSampledDepth(const FrameTargets& targets, ParticleLayer layer);
 const Image& particleGlassDepth(const FrameTargets& targets, ParticleLayer layer);
 const char* particlePassSuffix(ParticleLayer layer);
 

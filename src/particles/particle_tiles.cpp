@@ -223,8 +223,7 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
 void ParticleSystem::resolve(FrameContext& frame, ParticleLayer layer) {
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
-  // Sampled only: the compute rasterizer's own depth will do (FrameTargets::sampledDepth).
-  const Image& depth = layer == ParticleLayer::InFrontOfGlass ? targets.glassDepth : targets.sampledDepth();
+  const Image& depth = particleSampledDepth(targets, layer);
   const bool behind = layer == ParticleLayer::BehindGlass;
   const Buffer& layers = behind ? t.layersBehind : t.layers;
   const Image& layerDepth = behind ? t.layerDepthBehind : t.layerDepth;

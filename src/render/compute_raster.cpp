@@ -139,7 +139,7 @@ ComputeRaster::ComputeRaster(Context& context, uint32_t width, uint32_t height, 
 }
 
 void ComputeRaster::record(FrameContext& frame, const Buffer& surfaceRecords, uint32_t records,
-                           uint32_t singleSided, uint32_t triangles) const {
+                           uint32_t singleSided, uint32_t triangles) {
   const FrameTargets& t = frame.targets;
   const GpuScene& scene = frame.scene;
   const uint32_t groups = divideRoundingUp(triangles, RasterWorkspace::kGroupSize);

@@ -105,7 +105,7 @@ class ComputeRaster {
   // Rasterizes `triangles` triangles of `records` opaque records (the first `singleSided` of them
   // back-face culled) into frame.targets.visibility and frame.targets.depth.
   void record(FrameContext& frame, const Buffer& surfaceRecords, uint32_t records, uint32_t singleSided,
-              uint32_t triangles) const;
+              uint32_t triangles);
   // Whether the last frame recorded copied the depth into the D32 image (a pass used it).
   bool depthCopied() const { return depthCopied_; }
 
@@ -118,7 +118,7 @@ class ComputeRaster {
   Buffer starts_;  // uint per record + 1, rewritten every frame
   RasterWorkspace work_;
   uint32_t largestOwnBox_;  // bounding boxes up to this many pixels are covered by their thread
-  mutable bool depthCopied_ = false;
+  bool depthCopied_ = false;
 };
 
 }  // namespace lll
