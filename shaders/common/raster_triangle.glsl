@@ -265,65 +265,48 @@ void clipAndRasterize(vec4 c0, vec4 c1, vec4 c2, uint id, bool cullBack, RasterT
   for (int i = 1; i + 1 < count; ++i) rasterize(c[0], c[i], c[i + 1], id, cullBack, target);
 }
 
-// The per-pixel pass's batch of large triangles, sorted by the 8x8 tile: those covering all of it
-// (no edge test per pixel) and those covering part of it. Triangles missing it are dropped.
-shared RasterTriangle rasterPartial[64];
-shared RasterTriangle rasterFull[64];
-shared uint rasterPartialCount;
-shared uint rasterFullCount;
+// rasterCovers for a listed triangle, first ruled out in 32-bit floats where it can be: each edge
+// function is the difference of two products of coordinate differences below 2^24 (exact as
+// floats), so its float value is within 2^-22 of the products' magnitudes of the exact one, and
+// where it is negative by more than that the pixel is outside. Pixels it may cover are decided, and
+// their depth interpolated, by the exact 64-bit evaluation: a depth from the float edges changed
+// which of two coplanar surfaces won at a few pixels (against the hardware pass on the H200:
+// 27 of 255 at one pixel of the atrium; bench/README.md).
+bool rasterCoversListed(RasterTriangle t, ivec2 p, out float depth) {
+  ivec2 v0 = t.v01.xy, v1 = t.v01.zw, v2 = t.v2.xy;
+  vec3 ab = vec3(v2.x - v1.x, v0.x - v2.x, v1.x - v0.x) * vec3(p.y - v1.y, p.y - v2.y, p.y - v0.y);
+  vec3 cd = vec3(v2.y - v1.y, v0.y - v2.y, v1.y - v0.y) * vec3(p.x - v1.x, p.x - v2.x, p.x - v0.x);
+  depth = 0.0;
+  if (any(lessThan(ab - cd, -(abs(ab) + abs(cd)) * (1.0 / 4194304.0)))) return false;
+  return rasterCovers(v0, v1, v2, uint(t.v2.w), rasterArea2(v0, v1, v2), t.depth.xyz, p, depth);
+}
 
 // The per-pixel pass: the nearest key at `pixel` of an image `size` pixels large, from the first
 // pass's key and the large triangles listed in its 32x32-pixel bin (all of them when the bin's list
-// overflowed), walked in batches held in shared memory by the 8x8 workgroup, each triangle first
-// placed against the tile (rasterTileClass). Every invocation of the workgroup must call it, with
-// the same `tileLo`: the first pixel of the workgroup's 8x8 tile, a multiple of 8 (a tile lies in
-// one bin). `inside`: whether `pixel` is one to resolve (its key is read).
+// overflowed). `tileLo` is the first pixel of the pixel's 8x8 tile (a multiple of 8, so the tile lies
+// in one bin): a triangle whose bounds miss the tile is skipped, a test the same for the tile's
+// pixels, and the others' edges are evaluated at the pixel. Nothing is shared between invocations:
+// the triangles' records are read by every invocation, the same address across a subgroup. (Each
+// 8x8 workgroup first placing its bin's triangles against its tile in shared memory, one
+// invocation a triangle between barriers, cost 0.06 ms of threel16's 0.10 ms resolve on the H200,
+// bench/README.md.) `inside`: whether `pixel` is one to resolve (its key is read).
 uint64_t rasterNearest(ivec2 pixel, ivec2 tileLo, bool inside, ivec2 size) {
+  if (!inside) return 0ul;
   ivec2 tileHi = tileLo + 7;
-  ivec2 lo = rasterCentre(tileLo.x, tileLo.y), hi = rasterCentre(tileHi.x, tileHi.y);
   ivec2 p = rasterCentre(pixel.x, pixel.y);
-  uint64_t best = inside ? keys[uint(pixel.y) * uint(size.x) + uint(pixel.x)] : 0ul;
+  uint64_t best = keys[uint(pixel.y) * uint(size.x) + uint(pixel.x)];
   uvec2 binXY = uvec2(tileLo) / kRasterBinSize;
   uint bin = binXY.y * raster.large.z + binXY.x;
   uint listed = binData[bin];
   bool overflow = listed > raster.large.w;
   uint count = overflow ? min(largeCount, raster.large.x) : listed;
-  for (uint first = 0u; first < count; first += 64u) {
-    if (gl_LocalInvocationIndex == 0u) {
-      rasterPartialCount = 0u;
-      rasterFullCount = 0u;
-    }
-    barrier();
-    uint mine = first + gl_LocalInvocationIndex;
-    if (mine < count) {
-      RasterTriangle t = largeTriangles[overflow ? mine
-                                                 : binData[rasterBinEntry(raster.large.z, raster.large.w,
-                                                                          uint(size.y), bin, mine)]];
-      ivec4 box = t.bounds;
-      bool touches = !(box.x > tileHi.x || box.z < tileLo.x || box.y > tileHi.y || box.w < tileLo.y);
-      uint place = touches ? rasterTileClass(t, lo, hi) : 0u;
-      if (place == 2u)
-        rasterFull[atomicAdd(rasterFullCount, 1u)] = t;
-      else if (place == 1u)
-        rasterPartial[atomicAdd(rasterPartialCount, 1u)] = t;
-    }
-    barrier();
-    for (uint i = 0u; i < rasterFullCount; ++i) {
-      ivec2 v0 = rasterFull[i].v01.xy, v1 = rasterFull[i].v01.zw, v2 = rasterFull[i].v2.xy;
-      vec3 z = rasterFull[i].depth.xyz;
-      float depth = (float(rasterEdge(v1, v2, p)) * z.x + float(rasterEdge(v2, v0, p)) * z.y +
-                     float(rasterEdge(v0, v1, p)) * z.z) *
-                    (1.0 / float(rasterArea2(v0, v1, v2)));
-      best = max(best, rasterKey(depth, uint(rasterFull[i].v2.z)));
-    }
-    for (uint i = 0u; i < rasterPartialCount; ++i) {
-      ivec2 v0 = rasterPartial[i].v01.xy, v1 = rasterPartial[i].v01.zw, v2 = rasterPartial[i].v2.xy;
-      float depth;
-      if (rasterCovers(v0, v1, v2, uint(rasterPartial[i].v2.w), rasterArea2(v0, v1, v2),
-                       rasterPartial[i].depth.xyz, p, depth))
-        best = max(best, rasterKey(depth, uint(rasterPartial[i].v2.z)));
-    }
-    barrier();
+  uint entries = rasterBinEntry(raster.large.z, raster.large.w, uint(size.y), bin, 0u);
+  for (uint i = 0u; i < count; ++i) {
+    RasterTriangle t = largeTriangles[overflow ? i : binData[entries + i]];
+    ivec4 box = t.bounds;
+    if (box.x > tileHi.x || box.z < tileLo.x || box.y > tileHi.y || box.w < tileLo.y) continue;
+    float depth;
+    if (rasterCoversListed(t, p, depth)) best = max(best, rasterKey(depth, uint(t.v2.z)));
   }
   return best;
 }
