@@ -7,6 +7,7 @@
 
 #include "awkward_lights_scene.h"
 #include "light_list_reference.h"
+#include "lighting/light_bins.h"
 #include "lighting/lll.h"
 #include "scene/builtin_scenes.h"
 #include "scene/errors.h"
@@ -221,6 +222,35 @@ TEST(LllLists, CellsSharedByWorkgroupsLoseNoLight) {
     EXPECT_GT(binned, 2.0 * 8.0 * 64.0) << "each part of the two cells should hold a batch of lights";
     EXPECT_GT(check.mustList, 1000u);
     expectListsHoldEveryLight(check, std::to_string(slices) + " lists per tile");
+  }
+}
+
+// Up to kUnbinnedLights lights the compute fill builds no bins and every workgroup reads every
+// light (lighting/light_bins.h); one light more and it bins them. Both must list every light the
+// reference requires, at the threshold and past it, with one list per tile and with slices.
+TEST(LllLists, FewLightsAreListedWithoutBins) {
+  // The scene adds its own awkward lights to the random ones asked for.
+  const uint32_t own = uint32_t(test::awkwardLightsScene(0).lights.size());
+  for (const uint32_t lights : {kUnbinnedLights, kUnbinnedLights + 1}) {
+    const Scene scene = test::awkwardLightsScene(lights - own);
+    ASSERT_EQ(scene.lights.size(), lights);
+    for (const uint32_t slices : {1u, 4u}) {
+      std::vector<std::pair<std::string, double>> stats;
+      const ListCheck check = checkLists(scene, listSettings("compute", 8, 160, 90, slices), &stats);
+      double unbinned = -1.0, binned = -1.0;
+      for (const auto& [name, value] : stats) {
+        if (name == "bins_unbinned") unbinned = value;
+        if (name == "bin_entries_used") binned = value;
+      }
+      const bool few = lights <= kUnbinnedLights;
+      EXPECT_EQ(unbinned, few ? 1.0 : 0.0) << lights << " lights";
+      if (few)
+        EXPECT_EQ(binned, 0.0) << "no bin entries without bins";
+      else
+        EXPECT_GT(binned, 0.0) << "past the threshold the lights are binned";
+      EXPECT_GT(check.mustList, 100u);
+      expectListsHoldEveryLight(check, std::to_string(lights) + " lights, " + std::to_string(slices) + " slices");
+    }
   }
 }
 

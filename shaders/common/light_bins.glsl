@@ -35,10 +35,17 @@ layout(std430, set = 0, binding = 14) buffer LargeLightBlock {
 #endif
 
 // The range of binLights holding cell `cell`'s lights (clamped to the capacity: past it the frame
-// is drawn again with more room, see LightBins::afterFrame).
+// is drawn again with more room, see LightBins::afterFrame); every light when the frame has no
+// bins (binHeader.unbinned), each entry then the light's index.
 uvec2 binRange(uint cell) {
+  if (binHeader.unbinned != 0u) return uvec2(0u, binHeader.lightCount);
   uint first = min(binCells[cell].first, binHeader.capacity);
   return uvec2(first, min(binCells[cell].count, binHeader.capacity - first));
+}
+
+// The light at `entry` of a range binRange returned.
+uint binnedLight(uint entry) {
+  return binHeader.unbinned != 0u ? entry : binLights[entry];
 }
 
 // Pixel x of view-ray slope u (x / z), pixel y of slope v (y / z, y up).

@@ -18,7 +18,7 @@ struct LightBinHeader {
   uint cellPixels;  // side of a cell in pixels
   uint lightCount;
   uint largeCount;  // lights covering too many cells for one thread, listed by the count pass
-  uint pad;
+  uint unbinned;    // 1: no bins built (few lights, LightBins): every cell holds every light
 };
 LLL_CHECK_SIZE(LightBinHeader, 32);
 

@@ -30,6 +30,7 @@ LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_
   header_.cellsY = divideRoundingUp(tilesY, gpu::kTileGroupSize);
   header_.cellPixels = tileSize * gpu::kTileGroupSize;
   header_.lightCount = lightCount;
+  header_.unbinned = lightCount <= kUnbinnedLights ? 1 : 0;
   maxEntries_ = storageBufferCapacity(context, 4);
   const uint64_t cells = uint64_t(header_.cellsX) * header_.cellsY;
   headerBuffer_ = Buffer(context, sizeof(gpu::LightBinHeader),
@@ -40,7 +41,7 @@ LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_
                   "light bins cells");
   largeLights_ = Buffer(context, std::max<uint64_t>(lightCount, 1) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                         MemoryUse::Device, "light bins large lights");
-  allocate(std::min(maxEntries_, std::max<uint64_t>(cells * kInitialEntriesPerCell, lightCount)));
+  allocate(unbinned() ? 1 : std::min(maxEntries_, std::max<uint64_t>(cells * kInitialEntriesPerCell, lightCount)));
   layout_ = PipelineLayout(context, {"lighting/bins/bin_lights.comp", "lighting/bins/bin_scan.comp"});
   count_ =
       Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}, {1, 0}});
@@ -73,6 +74,14 @@ std::vector<ResourceUse> LightBins::reads(VkPipelineStageFlags2 stages) const {
 }
 
 void LightBins::clear(FrameContext& frame) {
+  if (unbinned()) {
+    if (headerWritten_) return;
+    headerWritten_ = true;
+    frame.graph.step({uses(headerBuffer_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
+      vkCmdUpdateBuffer(cmd, headerBuffer_.handle(), 0, sizeof(header_), &header_);
+    });
+    return;
+  }
   frame.graph.pass("bins-clear", {uses(headerBuffer_, Use::TransferWrite), uses(cells_, Use::TransferWrite)},
                    [&](VkCommandBuffer cmd) {
                      gpu::LightBinHeader header = header_;
@@ -83,6 +92,7 @@ void LightBins::clear(FrameContext& frame) {
 }
 
 void LightBins::build(FrameContext& frame) {
+  if (unbinned()) return;
   auto writer = [&] {
     DescriptorWriter w = meshPassDescriptors(frame);
     bind(w);
@@ -118,6 +128,7 @@ void LightBins::build(FrameContext& frame) {
 }
 
 bool LightBins::afterFrame() {
+  if (unbinned()) return false;
   gpu::LightBinHeader read{};
   std::memcpy(&read, headerBuffer_.mapped(), sizeof(read));
   lastRequested_ = read.requested;
@@ -128,7 +139,8 @@ bool LightBins::afterFrame() {
 }
 
 std::vector<std::pair<std::string, double>> LightBins::stats() const {
-  return {{"bin_cells", double(header_.cellsX) * header_.cellsY},
+  return {{"bins_unbinned", unbinned() ? 1.0 : 0.0},
+          {"bin_cells", double(header_.cellsX) * header_.cellsY},
           {"bin_entries_used", double(lastRequested_)},
           {"bin_entries_capacity", double(header_.capacity)},
           {"bin_bytes", double(header_.capacity) * 4.0 + double(cells_.size()) + double(largeLights_.size())},

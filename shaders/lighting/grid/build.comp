@@ -54,7 +54,7 @@ void main() {
   for (uint base = 0u; base < binned.y; base += 64u) {
     uint candidate = kNoCandidate;
     if (base + me < binned.y) {
-      uint index = binLights[binned.x + base + me];
+      uint index = binnedLight(binned.x + base + me);
       GpuLight light = lights[index];
       vec3 center = toViewDepthSpace(light.positionRange.xyz);
       if (lightTouches(light, center, groupSlopes, zNear, groupFar)) {

@@ -77,7 +77,7 @@ void main() {
     }
     barrier();
     if (base + gl_LocalInvocationIndex < binned.y) {
-      uint index = binLights[binned.x + base + gl_LocalInvocationIndex];
+      uint index = binnedLight(binned.x + base + gl_LocalInvocationIndex);
       GpuLight light = lights[index];
       vec3 center = toViewDepthSpace(light.positionRange.xyz);
       if (lightTouches(light, center, groupSlopes, zNear, groupFar)) {
