@@ -249,7 +249,8 @@ TEST(LllLists, FewLightsAreListedWithoutBins) {
       else
         EXPECT_GT(binned, 0.0) << "past the threshold the lights are binned";
       EXPECT_GT(check.mustList, 100u);
-      expectListsHoldEveryLight(check, std::to_string(lights) + " lights, " + std::to_string(slices) + " slices");
+      expectListsHoldEveryLight(check,
+                                std::to_string(lights) + " lights, " + std::to_string(slices) + " slices");
     }
   }
 }

@@ -92,7 +92,7 @@ uint rasterTileClass(RasterTriangle t, ivec2 lo, ivec2 hi) {
 // Appends large triangle `slot` (`t`) to the lists of the 32x32-pixel bins its bounds touch, this
 // invocation taking every `parts`-th bin from `part`: only to those it may cover a
 // pixel centre of (rasterTileClass against the bin: a long thin diagonal triangle's bounds touch
-// many bins it misses, and every 8x8 tile of such a bin tests it again): on the H200 that took the
+// many bins it misses, and every pixel of such a bin would test it again): on the H200 that took the
 // sun's resolve from 0.80 to 0.73 ms. Both passes bin a workgroup a triangle, after their triangle
 // pass (shadows/caster_bins.comp, common/raster_bins.comp): binned by the thread that found it, one
 // atomic per bin in a serial loop, the atrium's floor held the visibility pass for 0.6 ms at 1080p.

@@ -41,7 +41,8 @@ LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_
                   "light bins cells");
   largeLights_ = Buffer(context, std::max<uint64_t>(lightCount, 1) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                         MemoryUse::Device, "light bins large lights");
-  allocate(unbinned() ? 1 : std::min(maxEntries_, std::max<uint64_t>(cells * kInitialEntriesPerCell, lightCount)));
+  allocate(
+      unbinned() ? 1 : std::min(maxEntries_, std::max<uint64_t>(cells * kInitialEntriesPerCell, lightCount)));
   layout_ = PipelineLayout(context, {"lighting/bins/bin_lights.comp", "lighting/bins/bin_scan.comp"});
   count_ =
       Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}, {1, 0}});

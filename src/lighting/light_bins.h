@@ -38,7 +38,7 @@ namespace lll {
 inline constexpr uint32_t kMaxCellSplits = 64;
 
 // The most lights a frame lights without bins. A build group tests 64 lights against its cell's
-// volume per step, and ThreeL's 16 and 256 lights reach every cell anyway: there the four passes
+// volume per step, and ThreeL's 16 and 256 lights reach every cell anyway: there the five passes
 // (clear, count, count-large, scan, scatter: 0.035 ms on the H200 at 1080p, each a short dispatch)
 // sort nothing out.
 inline constexpr uint32_t kUnbinnedLights = 256;
