@@ -43,6 +43,7 @@ LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_
                         MemoryUse::Device, "light bins large lights");
   allocate(
       unbinned() ? 1 : std::min(maxEntries_, std::max<uint64_t>(cells * kInitialEntriesPerCell, lightCount)));
+  if (unbinned()) return;  // no bins' passes to build
   layout_ = PipelineLayout(context, {"lighting/bins/bin_lights.comp", "lighting/bins/bin_scan.comp"});
   count_ =
       Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}, {1, 0}});

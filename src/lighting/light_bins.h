@@ -68,8 +68,8 @@ class LightBins {
   bool afterFrame();
 
   uint32_t cellsX() const { return header_.cellsX; }
-  bool unbinned() const { return header_.unbinned != 0; }
   uint32_t cellsY() const { return header_.cellsY; }
+  bool unbinned() const { return header_.unbinned != 0; }  // at most kUnbinnedLights lights
   std::vector<std::pair<std::string, double>> stats() const;
 
  private:
