@@ -43,7 +43,12 @@ LightBins::LightBins(Context& context, uint32_t tilesX, uint32_t tilesY, uint32_
                         MemoryUse::Device, "light bins large lights");
   allocate(
       unbinned() ? 1 : std::min(maxEntries_, std::max<uint64_t>(cells * kInitialEntriesPerCell, lightCount)));
-  if (unbinned()) return;  // no bins' passes to build
+  if (unbinned()) {  // no bins' passes: the header, read by every build, is written once here
+    context.submitAndWait([&](VkCommandBuffer cmd) {
+      vkCmdUpdateBuffer(cmd, headerBuffer_.handle(), 0, sizeof(header_), &header_);
+    });
+    return;
+  }
   layout_ = PipelineLayout(context, {"lighting/bins/bin_lights.comp", "lighting/bins/bin_scan.comp"});
   count_ =
       Pipeline(context, layout_, "lighting/bins/bin_lights.comp", SpecializationConstants{{0, 0}, {1, 0}});
@@ -76,14 +81,7 @@ std::vector<ResourceUse> LightBins::reads(VkPipelineStageFlags2 stages) const {
 }
 
 void LightBins::clear(FrameContext& frame) {
-  if (unbinned()) {
-    if (headerWritten_) return;
-    headerWritten_ = true;
-    frame.graph.step({uses(headerBuffer_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
-      vkCmdUpdateBuffer(cmd, headerBuffer_.handle(), 0, sizeof(header_), &header_);
-    });
-    return;
-  }
+  if (unbinned()) return;
   frame.graph.pass("bins-clear", {uses(headerBuffer_, Use::TransferWrite), uses(cells_, Use::TransferWrite)},
                    [&](VkCommandBuffer cmd) {
                      gpu::LightBinHeader header = header_;

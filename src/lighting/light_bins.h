@@ -9,8 +9,9 @@
 // kTileGroupSize x kTileGroupSize tiles its cell's lights instead of every light, so the build
 // costs about what the lights cover, not tiles x lights. The entry array grows on overflow and the
 // frame is drawn again (afterFrame), as lll's link pool does: no light is ever dropped.
-// With at most kUnbinnedLights lights no bins are built: the header says so (written once), and a
-// build group reads every light, as many as a bin of a full-screen light would hold.
+// With at most kUnbinnedLights lights no bins are built: the header says so (written once, at
+// construction), and a build group reads every light, as many as a bin of a full-screen light
+// would hold.
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -80,7 +81,6 @@ class LightBins {
   uint64_t maxEntries_ = 0;
   uint32_t lastRequested_ = 0;
   uint32_t overflows_ = 0;
-  bool headerWritten_ = false;  // unbinned: the header is written once, by the first frame
   Buffer headerBuffer_;
   Buffer cells_;
   Buffer entries_;
