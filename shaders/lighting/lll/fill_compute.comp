@@ -12,12 +12,15 @@
 // Handing the group's (candidate, tile) pairs out evenly to its threads instead, so that no lane
 // idles outside a light's screen bounds, was slower (same lights: fill 3.96 ms with one list, and
 // the walks 10% slower too, a tile's links no longer lying together in the pool; commit message).
-// Each thread owns its tile's list, so links need no atomic exchange at the head, and the group
+// Each thread owns its tile's lists, so links need no atomic exchange at the head, and the group
 // allocates all its links of a batch with one atomic on the global counter (shared-memory offsets
 // within the group) instead of one per link: 16 full-screen lights at 1080p are 518,400 links.
-// With depth-sliced lists (--lll-slices) a light gets a link in each of its tile's slices its depth
-// bounds overlap, pushed at that slice's head with an atomic exchange (the cell's parts share them);
-// so is each link with --vpl-interleave's class lists (at its light's class's head).
+// With one list per tile or two (the default: in front of the tile's surfaces, over them) a thread
+// keeps its lists' chains in registers, writes a batch's links of each list one after another (a
+// list runs down consecutive links), and puts each chain at its list's head once, at the end. With
+// more slices (--lll-slices) a light gets a link in each of its tile's slices its depth bounds
+// overlap, pushed at that slice's head with an atomic exchange (the cell's parts share them); so
+// is each link with --vpl-interleave's class lists (at its light's class's head).
 #include "common/light_bins.glsl"
 #include "lighting/lll/light_shape.glsl"
 
@@ -37,6 +40,43 @@ shared uint candidateTiles[64];  // sphereTilesInGroup: which of the group's til
 shared uint groupLinks;
 shared uint groupBase;
 
+// A list's links that one thread pushes, kept in registers and put at the list's head once, at the
+// end: the thread owns its tile's lists, unless the cell's lights are split among workgroups (then
+// the parts splice their chains in with an atomic exchange each).
+struct Chain {
+  uint head;  // this thread's newest link
+  uint tail;  // its first, whose next is written again when the chain is spliced in
+  uint tailLight;
+  vec2 tailDepths;
+};
+
+// Links for the hits `bits` (candidates of this batch) from `link` on, one after another, each one's
+// next the one below it; past the pool's end nothing is written.
+void pushHits(inout Chain chain, uvec2 bits, inout uint link) {
+  for (uint word = 0u; word < 2u; ++word) {
+    for (; bits[word] != 0u && link < lll.params.x; bits[word] &= bits[word] - 1u, ++link) {
+      uint i = word * 32u + uint(findLSB(bits[word]));
+      uint light = candidates[i] & ~kShapedCandidate;
+      vec2 depths = candidateDepths[i];
+      writeLink(link, light, depths.x, depths.y, chain.head);
+      if (chain.head == kLinkEnd) {
+        chain.tail = link;
+        chain.tailLight = light;
+        chain.tailDepths = depths;
+      }
+      chain.head = link;
+    }
+  }
+}
+
+void publishChain(Chain chain, uint list, uint splits) {
+  if (splits == 1u)
+    tileHeads[list] = chain.head;
+  else if (chain.head != kLinkEnd)
+    writeLink(chain.tail, chain.tailLight, chain.tailDepths.x, chain.tailDepths.y,
+              atomicExchange(tileHeads[list], chain.head));
+}
+
 void main() {
   // With many lights a cell's binned lights are split among lll.params.w workgroups (one part
   // each), so the few cells that see most of the lights (down a long view) do not hold up the frame.
@@ -51,8 +91,10 @@ void main() {
   vec2 range = valid ? tileRange[tileIndex] : vec2(zNear);
   float far = valid ? range.y : 0.0;
   uint slices = listSlices(), classes = listClasses();
-  // Links pushed at shared heads with an atomic exchange: depth slices or class lists.
-  bool sliced = slices > 1u || classes > 1u;
+  // One list per tile, or two (in front of the tile's surfaces, over them), with no VPL classes: each
+  // thread keeps its tile's chains in registers. More slices or class lists: links pushed at the
+  // heads with an atomic exchange each.
+  bool chained = slices <= 2u && classes == 1u;
   uvec2 split = lllSliceSplit(range, slices);
   if (gl_LocalInvocationIndex == 0u) groupFarBits = 0u;
   barrier();
@@ -67,9 +109,7 @@ void main() {
   uvec2 binned = binRange(cell.y * binHeader.cellsX + cell.x);
   uint partBegin = binned.y * part / splits;
   binned = uvec2(binned.x + partBegin, binned.y * (part + 1u) / splits - partBegin);
-  uint head = kLinkEnd;
-  uint tail = kLinkEnd, tailLight = 0u;  // this part's first link, the end of its chain
-  vec2 tailDepths = vec2(0.0);
+  Chain front = Chain(kLinkEnd, kLinkEnd, 0u, vec2(0.0)), opaque = front;  // one list: `front` only
   for (uint base = 0u; base < binned.y; base += 64u) {
     if (gl_LocalInvocationIndex == 0u) {
       candidateCount = 0u;
@@ -111,12 +151,17 @@ void main() {
       hits[i >> 5] |= 1u << (i & 31u);
     }
     uint own = bitCount(hits.x) + bitCount(hits.y);
+    // With two lists and no classes, which hits go in the front list and which in the opaque one.
+    uvec2 frontHits = uvec2(0u), opaqueHits = uvec2(0u);
     for (uint word = 0u; slices > 1u && word < 2u; ++word) {
       own -= bitCount(hits[word]);
       for (uint bits = hits[word]; bits != 0u; bits &= bits - 1u) {
         vec2 depths = candidateDepths[word * 32u + uint(findLSB(bits))];
         uvec2 run = depthSlicesOverlapping(range, depths.x, depths.y, split, zNear);
         own += run.y - run.x + 1u;
+        uint bit = bits & (~bits + 1u);
+        if (run.x == 0u) frontHits[word] |= bit;
+        if (run.y == 1u) opaqueHits[word] |= bit;
       }
     }
     uint offset = own > 0u ? atomicAdd(groupLinks, own) : 0u;
@@ -125,6 +170,13 @@ void main() {
       groupBase = atomicAdd(counters.linksRequested, groupLinks);
     barrier();
     uint link = groupBase + offset;
+    if (chained) {
+      // The front list's links of the batch, then the opaque list's: each list runs down
+      // consecutive links.
+      pushHits(front, slices == 1u ? hits : frontHits, link);
+      if (slices == 2u) pushHits(opaque, opaqueHits, link);
+      hits = uvec2(0u);
+    }
     for (uint word = 0u; word < 2u; ++word) {
       while (hits[word] != 0u) {
         uint i = word * 32u + uint(findLSB(hits[word]));
@@ -132,32 +184,16 @@ void main() {
         if (link >= lll.params.x) break;  // past the pool: counted, not written (the CPU grows it)
         uint index = candidates[i] & ~kShapedCandidate;
         vec2 depths = candidateDepths[i];
-        if (sliced) {
-          uvec2 lists = slices > 1u ? tileIndex * slices +
-                                          depthSlicesOverlapping(range, depths.x, depths.y, split, zNear)
-                                    : uvec2(tileIndex);
-          uint lightClass = lightListClass(index);
-          for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
-            writeLink(link, index, depths.x, depths.y,
-                      atomicExchange(tileHeads[list * classes + lightClass], link));
-          continue;
-        }
-        writeLink(link, index, depths.x, depths.y, head);
-        if (head == kLinkEnd) {
-          tail = link;
-          tailLight = index;
-          tailDepths = depths;
-        }
-        head = link++;
+        uvec2 lists = tileIndex * slices + depthSlicesOverlapping(range, depths.x, depths.y, split, zNear);
+        uint lightClass = lightListClass(index);
+        for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
+          writeLink(link, index, depths.x, depths.y,
+                    atomicExchange(tileHeads[list * classes + lightClass], link));
       }
     }
     barrier();
   }
-  if (!valid || sliced) return;
-  if (splits == 1u) {
-    tileHeads[tileIndex] = head;
-  } else if (head != kLinkEnd) {
-    // Parts of one cell share its tiles' lists: splice this part's chain in at the head.
-    writeLink(tail, tailLight, tailDepths.x, tailDepths.y, atomicExchange(tileHeads[tileIndex], head));
-  }
+  if (!valid || !chained) return;
+  publishChain(front, tileIndex * slices, splits);
+  if (slices == 2u) publishChain(opaque, tileIndex * 2u + 1u, splits);
 }
