@@ -29,7 +29,11 @@ layout(local_size_x = 8, local_size_y = 8) in;
 const uint kShapedCandidate = 0x80000000u;  // light indices are below kMaxLights = 2^24
 
 shared uint groupFarBits;
-shared uint candidateCount;
+// Candidates per list class (VPL classes with --vpl-interleave; one otherwise), and where each
+// class's run of the batch's candidates begins: a batch's candidates are ordered by class.
+const uint kMaxListClasses = 1u + kMaxVplInterleave * kMaxVplInterleave;
+shared uint classCounts[kMaxListClasses];
+shared uint classFirst[kMaxListClasses + 1u];
 // A candidate: its light's index, bit 31 set when its shape needs more than the sphere test (spots,
 // boxes); its sphere in view-depth space (centre, range) and depth bounds, computed once for the
 // group's 64 threads.
@@ -40,41 +44,34 @@ shared uint candidateTiles[64];  // sphereTilesInGroup: which of the group's til
 shared uint groupLinks;
 shared uint groupBase;
 
-// A list's links that one thread pushes, kept in registers and put at the list's head once, at the
-// end: the thread owns its tile's lists, unless the cell's lights are split among workgroups (then
-// the parts splice their chains in with an atomic exchange each).
-struct Chain {
-  uint head;  // this thread's newest link
-  uint tail;  // its first, whose next is written again when the chain is spliced in
-  uint tailLight;
-  vec2 tailDepths;
-};
-
 // Links for the hits `bits` (candidates of this batch) from `link` on, one after another, each one's
-// next the one below it; past the pool's end nothing is written.
-void pushHits(inout Chain chain, uvec2 bits, inout uint link) {
+// next the one below it, pushed at head `head` as one segment: a single atomic exchange puts the
+// newest at the head, and the oldest takes the head it replaced as its next. Past the pool's end
+// nothing is written.
+void pushSegment(uvec2 bits, uint head, inout uint link) {
+  uint count = min(bitCount(bits.x) + bitCount(bits.y), lll.params.x - min(link, lll.params.x));
+  if (count == 0u) return;
+  uint end = link + count;
+  uint next = atomicExchange(tileHeads[head], end - 1u);
   for (uint word = 0u; word < 2u; ++word) {
-    for (; bits[word] != 0u && link < lll.params.x; bits[word] &= bits[word] - 1u, ++link) {
+    for (; bits[word] != 0u && link < end; bits[word] &= bits[word] - 1u) {
       uint i = word * 32u + uint(findLSB(bits[word]));
-      uint light = candidates[i] & ~kShapedCandidate;
       vec2 depths = candidateDepths[i];
-      writeLink(link, light, depths.x, depths.y, chain.head);
-      if (chain.head == kLinkEnd) {
-        chain.tail = link;
-        chain.tailLight = light;
-        chain.tailDepths = depths;
-      }
-      chain.head = link;
+      writeLink(link, candidates[i] & ~kShapedCandidate, depths.x, depths.y, next);
+      next = link++;
     }
   }
 }
 
-void publishChain(Chain chain, uint list, uint splits) {
-  if (splits == 1u)
-    tileHeads[list] = chain.head;
-  else if (chain.head != kLinkEnd)
-    writeLink(chain.tail, chain.tailLight, chain.tailDepths.x, chain.tailDepths.y,
-              atomicExchange(tileHeads[list], chain.head));
+// Candidates first..end-1 of a batch as bits.
+uvec2 candidateBits(uint first, uint end) {
+  uvec2 bits;
+  for (uint word = 0u; word < 2u; ++word) {
+    uint lo = uint(clamp(int(first) - 32 * int(word), 0, 32));
+    uint hi = uint(clamp(int(end) - 32 * int(word), 0, 32));
+    bits[word] = lo >= hi ? 0u : (hi == 32u ? 0xFFFFFFFFu : (1u << hi) - 1u) & ~((1u << lo) - 1u);
+  }
+  return bits;
 }
 
 void main() {
@@ -91,10 +88,10 @@ void main() {
   vec2 range = valid ? tileRange[tileIndex] : vec2(zNear);
   float far = valid ? range.y : 0.0;
   uint slices = listSlices(), classes = listClasses();
-  // One list per tile, or two (in front of the tile's surfaces, over them), with no VPL classes: each
-  // thread keeps its tile's chains in registers. More slices or class lists: links pushed at the
-  // heads with an atomic exchange each.
-  bool chained = slices <= 2u && classes == 1u;
+  // One list per tile or two (in front of the tile's surfaces, over them), each split by VPL class
+  // or not: a thread pushes each list's links of a batch as one segment of consecutive links. More
+  // slices: each link pushed at its head with an atomic exchange.
+  bool segments = slices <= 2u;
   uvec2 split = lllSliceSplit(range, slices);
   if (gl_LocalInvocationIndex == 0u) groupFarBits = 0u;
   barrier();
@@ -109,29 +106,45 @@ void main() {
   uvec2 binned = binRange(cell.y * binHeader.cellsX + cell.x);
   uint partBegin = binned.y * part / splits;
   binned = uvec2(binned.x + partBegin, binned.y * (part + 1u) / splits - partBegin);
-  Chain front = Chain(kLinkEnd, kLinkEnd, 0u, vec2(0.0)), opaque = front;  // one list: `front` only
   for (uint base = 0u; base < binned.y; base += 64u) {
-    if (gl_LocalInvocationIndex == 0u) {
-      candidateCount = 0u;
-      groupLinks = 0u;
-    }
+    if (gl_LocalInvocationIndex == 0u) groupLinks = 0u;
+    if (gl_LocalInvocationIndex < classes) classCounts[gl_LocalInvocationIndex] = 0u;
     barrier();
+    uint index = 0u, slot = 0xFFFFFFFFu, lightClass = 0u;
+    GpuLight light;
+    vec3 center;
     if (base + gl_LocalInvocationIndex < binned.y) {
-      uint index = binnedLight(binned.x + base + gl_LocalInvocationIndex);
-      GpuLight light = lights[index];
-      vec3 center = toViewDepthSpace(light.positionRange.xyz);
+      index = binnedLight(binned.x + base + gl_LocalInvocationIndex);
+      light = lights[index];
+      center = toViewDepthSpace(light.positionRange.xyz);
       if (lightTouches(light, center, groupSlopes, zNear, groupFar)) {
-        uint slot = atomicAdd(candidateCount, 1u);
-        bool shaped = isBox(light) || uint(light.directionType.w) == kLightSpot;
-        candidates[slot] = index | (shaped ? kShapedCandidate : 0u);
-        candidateSpheres[slot] = vec4(center, light.positionRange.w);
-        float halfDepth = depthHalfExtent(light);
-        candidateDepths[slot] = vec2(center.z - halfDepth, center.z + halfDepth);
-        candidateTiles[slot] = sphereTilesInGroup(center, light.positionRange.w, groupFirst);
+        lightClass = lightListClass(index);
+        slot = atomicAdd(classCounts[lightClass], 1u);
       }
     }
+    if (classes > 1u) {  // ordered by class: a thread's hits of one class lie together
+      barrier();
+      if (gl_LocalInvocationIndex == 0u) {
+        uint first = 0u;
+        for (uint c = 0u; c < classes; ++c) {
+          classFirst[c] = first;
+          first += classCounts[c];
+        }
+        classFirst[classes] = first;
+      }
+      barrier();
+      if (slot != 0xFFFFFFFFu) slot += classFirst[lightClass];
+    }
+    if (slot != 0xFFFFFFFFu) {
+      bool shaped = isBox(light) || uint(light.directionType.w) == kLightSpot;
+      candidates[slot] = index | (shaped ? kShapedCandidate : 0u);
+      candidateSpheres[slot] = vec4(center, light.positionRange.w);
+      float halfDepth = depthHalfExtent(light);
+      candidateDepths[slot] = vec2(center.z - halfDepth, center.z + halfDepth);
+      candidateTiles[slot] = sphereTilesInGroup(center, light.positionRange.w, groupFirst);
+    }
     barrier();
-    uint count = candidateCount;
+    uint count = classes > 1u ? classFirst[classes] : classCounts[0];
     // Which candidates touch this tile: one bit each (at most 64).
     uvec2 hits = uvec2(0u);
     for (uint i = 0u; valid && i < count; ++i) {
@@ -151,7 +164,7 @@ void main() {
       hits[i >> 5] |= 1u << (i & 31u);
     }
     uint own = bitCount(hits.x) + bitCount(hits.y);
-    // With two lists and no classes, which hits go in the front list and which in the opaque one.
+    // With two lists, which hits go in the front list and which in the opaque one.
     uvec2 frontHits = uvec2(0u), opaqueHits = uvec2(0u);
     for (uint word = 0u; slices > 1u && word < 2u; ++word) {
       own -= bitCount(hits[word]);
@@ -170,11 +183,16 @@ void main() {
       groupBase = atomicAdd(counters.linksRequested, groupLinks);
     barrier();
     uint link = groupBase + offset;
-    if (chained) {
-      // The front list's links of the batch, then the opaque list's: each list runs down
-      // consecutive links.
-      pushHits(front, slices == 1u ? hits : frontHits, link);
-      if (slices == 2u) pushHits(opaque, opaqueHits, link);
+    if (segments) {
+      // Each list's links of the batch (front, then opaque; by class) run down consecutive links.
+      for (uint slice = 0u; slice < slices; ++slice) {
+        uvec2 sliceHits = slices == 1u ? hits : (slice == 0u ? frontHits : opaqueHits);
+        uint heads = (tileIndex * slices + slice) * classes;
+        for (uint c = 0u; c < classes; ++c)
+          pushSegment(
+              classes == 1u ? sliceHits : sliceHits & candidateBits(classFirst[c], classFirst[c + 1u]),
+              heads + c, link);
+      }
       hits = uvec2(0u);
     }
     for (uint word = 0u; word < 2u; ++word) {
@@ -193,7 +211,4 @@ void main() {
     }
     barrier();
   }
-  if (!valid || !chained) return;
-  publishChain(front, tileIndex * slices, splits);
-  if (slices == 2u) publishChain(opaque, tileIndex * 2u + 1u, splits);
 }
