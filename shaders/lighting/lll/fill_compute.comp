@@ -193,20 +193,18 @@ void main() {
               classes == 1u ? sliceHits : sliceHits & candidateBits(classFirst[c], classFirst[c + 1u]),
               heads + c, link);
       }
-      hits = uvec2(0u);
-    }
-    for (uint word = 0u; word < 2u; ++word) {
-      while (hits[word] != 0u) {
-        uint i = word * 32u + uint(findLSB(hits[word]));
-        hits[word] &= hits[word] - 1u;
-        if (link >= lll.params.x) break;  // past the pool: counted, not written (the CPU grows it)
-        uint index = candidates[i] & ~kShapedCandidate;
-        vec2 depths = candidateDepths[i];
-        uvec2 lists = tileIndex * slices + depthSlicesOverlapping(range, depths.x, depths.y, split, zNear);
-        uint lightClass = lightListClass(index);
-        for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
-          writeLink(link, index, depths.x, depths.y,
-                    atomicExchange(tileHeads[list * classes + lightClass], link));
+    } else {  // a link at each slice's head; past the pool's end counted, not written (the CPU grows it)
+      for (uint word = 0u; word < 2u; ++word) {
+        for (uint bits = hits[word]; bits != 0u && link < lll.params.x; bits &= bits - 1u) {
+          uint i = word * 32u + uint(findLSB(bits));
+          uint index = candidates[i] & ~kShapedCandidate;
+          vec2 depths = candidateDepths[i];
+          uvec2 lists = tileIndex * slices + depthSlicesOverlapping(range, depths.x, depths.y, split, zNear);
+          uint lightClass = lightListClass(index);
+          for (uint list = lists.x; list <= lists.y && link < lll.params.x; ++list, ++link)
+            writeLink(link, index, depths.x, depths.y,
+                      atomicExchange(tileHeads[list * classes + lightClass], link));
+        }
       }
     }
     barrier();
