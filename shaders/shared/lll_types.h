@@ -40,6 +40,10 @@ LLL_CHECK_SIZE(LllUniforms, 48);
 // Most depth slices (lists) per tile of --lll-slices.
 LLL_CONST(uint, kMaxLllSlices, 32u);
 
+// Most heads per list (LllUniforms.slicing.y): the lights before the VPLs, then one per VPL class
+// of --vpl-interleave K (K * K classes).
+LLL_CONST(uint, kMaxLllListClasses, 1u + kMaxVplInterleave * kMaxVplInterleave);
+
 // Raster fills: which lights one instanced draw covers.
 struct FillPush {
   uvec4 range;  // x first instance of the batch (bounds ids are relative to it), y shape, zw unused

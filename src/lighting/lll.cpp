@@ -202,7 +202,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   // --vpl-interleave: the lights before the VPLs in one list, each class of VPLs in its own, so
   // that a pixel walks only the class it evaluates (render/interleaved_vpls.h).
   if (const uint32_t k = vplInterleaveIn(scene, opaqueShading_, settings.vplInterleave); k > 1)
-    classes_ = 1 + k * k;
+    classes_ = 1 + k * k;  // at most gpu::kMaxLllListClasses (the compute fill's shared arrays)
   uniforms_.slicing = glm::uvec4(slices_, classes_, 0, 0);
   uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),

@@ -18,7 +18,7 @@
 // each split by VPL class with --vpl-interleave (a batch's candidates are placed in class order), a
 // thread writes each list's links of a batch one after another and pushes them at the list's head
 // as one segment, with one atomic exchange (the cell's parts share the heads), so a list runs down
-// consecutive links (H200: every fill and walk measured faster, 5,144 VPLs with K = 2 7.31 -> 6.71 ms
+// consecutive links (H200: every fill and walk measured faster, 5,144 VPLs with K = 2 7.32 -> 6.71 ms
 // a frame; bench/README.md, 2026-12-03). With more slices (--lll-slices) a light gets a link in each
 // of its tile's slices its depth bounds overlap, each pushed with an atomic exchange of its own.
 #include "common/light_bins.glsl"
@@ -31,9 +31,9 @@ const uint kShapedCandidate = 0x80000000u;  // light indices are below kMaxLight
 shared uint groupFarBits;
 // Candidates per list class (VPL classes with --vpl-interleave; one otherwise), and where each
 // class's run of the batch's candidates begins: a batch's candidates are ordered by class.
-const uint kMaxListClasses = 1u + kMaxVplInterleave * kMaxVplInterleave;
-shared uint classCounts[kMaxListClasses];
-shared uint classFirst[kMaxListClasses + 1u];
+shared uint classCounts[kMaxLllListClasses];
+shared uint classFirst[kMaxLllListClasses + 1u];
+const uint kNoSlot = 0xFFFFFFFFu;  // a light of the batch that is no candidate
 // A candidate: its light's index, bit 31 set when its shape needs more than the sphere test (spots,
 // boxes); its sphere in view-depth space (centre, range) and depth bounds, computed once for the
 // group's 64 threads.
@@ -110,7 +110,7 @@ void main() {
     if (gl_LocalInvocationIndex == 0u) groupLinks = 0u;
     if (gl_LocalInvocationIndex < classes) classCounts[gl_LocalInvocationIndex] = 0u;
     barrier();
-    uint index = 0u, slot = 0xFFFFFFFFu, lightClass = 0u;
+    uint index = 0u, slot = kNoSlot, lightClass = 0u;
     GpuLight light;
     vec3 center;
     if (base + gl_LocalInvocationIndex < binned.y) {
@@ -133,9 +133,9 @@ void main() {
         classFirst[classes] = first;
       }
       barrier();
-      if (slot != 0xFFFFFFFFu) slot += classFirst[lightClass];
+      if (slot != kNoSlot) slot += classFirst[lightClass];
     }
-    if (slot != 0xFFFFFFFFu) {
+    if (slot != kNoSlot) {
       bool shaped = isBox(light) || uint(light.directionType.w) == kLightSpot;
       candidates[slot] = index | (shaped ? kShapedCandidate : 0u);
       candidateSpheres[slot] = vec4(center, light.positionRange.w);
