@@ -391,6 +391,11 @@ void Context::createDevice(bool swapchain) {
   features.features.depthClamp = supported.depthClamp;  // light volumes must not lose far faces
   features.features.pipelineStatisticsQuery = supported.pipelineStatisticsQuery;
   pipelineStatistics_ = supported.pipelineStatisticsQuery == VK_TRUE;
+  // The visibility buffer's material textures: a workgroup-uniform index into the texture table
+  // where the device has the first, any index where it has the second (common/visibility_surface.glsl).
+  features.features.shaderSampledImageArrayDynamicIndexing = supported.shaderSampledImageArrayDynamicIndexing;
+  nonUniformTextures_ = supported12.shaderSampledImageArrayNonUniformIndexing == VK_TRUE;
+  f12.shaderSampledImageArrayNonUniformIndexing = supported12.shaderSampledImageArrayNonUniformIndexing;
 
   std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (swapchain) {

@@ -64,6 +64,9 @@ class Context {
   bool visibilityBufferFeatures() const { return visibilityBuffer_; }
   // shaderInt64 and shaderBufferInt64Atomics, which the compute rasterizer needs.
   bool computeRasterFeatures() const { return computeRaster_; }
+  // shaderSampledImageArrayNonUniformIndexing is enabled: a shader may index a sampler array with a
+  // value that differs between invocations (the visibility buffer's surface rebuild).
+  bool nonUniformTextureFeatures() const { return nonUniformTextures_; }
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
                           VkMemoryPropertyFlags preferred = 0) const;
@@ -103,6 +106,7 @@ class Context {
   bool pipelineStatistics_ = false;
   bool visibilityBuffer_ = false;
   bool computeRaster_ = false;
+  bool nonUniformTextures_ = false;
   mutable std::mutex messagesMutex_;
   std::vector<std::string> messages_;
 };

@@ -22,9 +22,9 @@ GBuffer::GBuffer(Context& context, const GpuScene& scene, const FrameTargets& ta
       throw std::logic_error(
           "GBuffer: from the visibility buffer only into an fp32 accumulation without the sun");
     const SpecializationConstants constants = visibility->surfaceConstants(scene);
-    layout_ =
-        PipelineLayout(context, {"common/gbuffer_visibility.comp"}, {scene.textureTableLayout()}, constants);
-    pipeline_ = Pipeline(context, layout_, "common/gbuffer_visibility.comp", constants);
+    const std::string shader = visibility->surfaceShader("common/gbuffer_visibility.comp");
+    layout_ = PipelineLayout(context, {shader}, {scene.textureTableLayout()}, constants);
+    pipeline_ = Pipeline(context, layout_, shader, constants);
     return;
   }
   layout_ = PipelineLayout(context, {"common/mesh.vert", "common/gbuffer.frag"}, {scene.materialSetLayout()});

@@ -30,6 +30,7 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
       opaqueConstants.merge(interleaved_->constants());
       shader = litShader(lighting_, "shade_visibility_interleaved.comp");
     }
+    shader = visibility->surfaceShader(shader);
     computeLayout_ = PipelineLayout(context, {shader}, {scene.textureTableLayout()}, opaqueConstants);
     compute_ = Pipeline(context, computeLayout_, shader, opaqueConstants);
   } else if (opaque_ == OpaqueShading::GBuffer) {

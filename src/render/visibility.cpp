@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <stdexcept>
 
 #include "gpu/context.h"
 #include "render/gpu_scene.h"
@@ -233,6 +234,14 @@ SpecializationConstants VisibilityBuffer::surfaceConstants(const GpuScene& scene
   return {{kTriangleBitsConstant, triangleBits_},
           {kTextureCountConstant, scene.textureCount()},
           {kComputedLevelOfDetailConstant, context_.isCpuDevice() ? 1u : 0u}};
+}
+
+std::string VisibilityBuffer::surfaceShader(const std::string& shader) const {
+  if (!context_.nonUniformTextureFeatures()) return shader;
+  const std::string suffix = ".comp";
+  if (!shader.ends_with(suffix))
+    throw std::logic_error("VisibilityBuffer::surfaceShader: not a .comp: " + shader);
+  return shader.substr(0, shader.size() - suffix.size()) + "_nonuniform" + suffix;
 }
 
 }  // namespace lll

@@ -44,6 +44,10 @@ class VisibilityBuffer {
   void bindSurfaceData(DescriptorWriter& writer, const FrameContext& frame) const;
   // Its specialization constants (the id layout, the texture table's length).
   SpecializationConstants surfaceConstants(const GpuScene& scene) const;
+  // The variant of `shader` (a name ending in ".comp" that includes visibility_surface.glsl) this
+  // device runs: "<name>_nonuniform.comp" where it indexes the texture table non-uniformly, which
+  // saves the workgroup's loop over its materials.
+  std::string surfaceShader(const std::string& shader) const;
   uint32_t triangleBits() const { return triangleBits_; }
   uint32_t recordCount() const { return recordCount_; }
   bool computeRaster() const { return compute_ != nullptr; }
