@@ -1,9 +1,9 @@
 #version 460
 // The compute rasterizer's second pass (render/compute_raster.h): one invocation per pixel keeps
 // the nearest (depth, id) of the first pass's key and its bin's large triangles
-// (common/raster_triangle.glsl), and writes the visibility image and the depth twice: as an image
+// (common/raster_triangle.glsl), writes the visibility image and the depth twice: as an image
 // for the passes that sample it, and as a buffer the D32 depth image is copied from when a pass
-// depth-tests (render/compute_raster.h).
+// depth-tests (render/compute_raster.h), and resets the key for the next frame.
 #include "common/frame.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -29,4 +29,7 @@ void main() {
   float depth = best == 0ul ? 0.0 : uintBitsToFloat(uint(best >> 32));
   imageStore(depthImage, pixel, vec4(depth));
   depthOut[uint(pixel.y) * uint(size.x) + uint(pixel.x)] = depth;
+  // Reset for the next frame (RasterWorkspace's resolveResetsKeys): every pixel is resolved once a
+  // frame, so the keys need no clear of their own.
+  keys[uint(pixel.y) * uint(size.x) + uint(pixel.x)] = 0ul;
 }

@@ -123,7 +123,9 @@ std::string ComputeRaster::problem(const Context& context, uint32_t width, uint3
 ComputeRaster::ComputeRaster(Context& context, uint32_t width, uint32_t height, uint32_t maxRecords,
                              uint32_t triangleBits)
     : context_(context),
-      work_(context, width, height, "raster"),
+      // The resolve reads every key once and resets it: no clear of 8 bytes a pixel each frame.
+      work_(context, width, height, "raster", RasterWorkspace::kLargeCapacity, /*depthBuffer=*/true,
+            /*resolveResetsKeys=*/true),
       largestOwnBox_(RasterWorkspace::kLargestOwnBox) {
   // LLL_RASTER_OWN_BOX overrides the threshold, for measuring it (bench/README.md).
   if (const char* own = std::getenv("LLL_RASTER_OWN_BOX"); own && *own)
