@@ -47,6 +47,16 @@ inline uint32_t cellSplitsFor(const Context& context, uint32_t lights) {
   if (context.isCpuDevice()) return kMaxCellSplits;
   return std::clamp<uint32_t>((lights + 1023) / 1024, 1, kMaxCellSplits);
 }
+// lll's compute fill: at least 16 workgroups a cell (no more than there are lights). With one a
+// cell, 1080p at tile 16 is 135 workgroups of 64 invocations, each testing all its cell's lights
+// against its tiles in turn: far too few to fill an H200. Splits of 1, 4, 8 and 16 measured there
+// (bench/README.md, 2026-12-03): 16 the fastest or within 0.001 ms from 16 to 4,096 lights at
+// tile 8 and 16 (the atrium + 1,024 lights' fill 0.345 -> 0.100 ms at tile 16).
+inline uint32_t lllFillSplitsFor(const Context& context, uint32_t lights) {
+  if (context.isCpuDevice()) return kMaxCellSplits;
+  return std::clamp<uint32_t>(std::max<uint32_t>(16, (lights + 1023) / 1024), 1,
+                              std::min<uint32_t>(kMaxCellSplits, std::max<uint32_t>(lights, 1)));
+}
 
 class LightBins {
  public:
