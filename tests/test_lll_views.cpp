@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "lighting/lll.h"
+#include "lighting/technique.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_source.h"
 #include "test_support.h"
@@ -52,7 +53,7 @@ class HeatmapView : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(HeatmapView, ShowsEachTilesListLength) {
   const ViewRender r = renderView(viewScene(), "heatmap", GetParam());
-  const uint32_t tile = 8;
+  const uint32_t tile = findTechnique("lll").defaultTile;  // renderView's (no --tile)
   uint32_t checked = 0;
   for (uint32_t y = 0; y < r.hdr.height; ++y) {
     for (uint32_t x = 0; x < r.hdr.width; ++x) {
@@ -84,13 +85,14 @@ TEST(LllViews, TilesViewDrawsTheGridOverTheLitImage) {
   const Scene scene = viewScene();
   for (const char* shade : {"compute", "fragment"}) {
     const ViewRender r = renderView(scene, "tiles", shade);
+    const uint32_t tile = findTechnique("lll").defaultTile;  // renderView's (no --tile)
     uint32_t grid = 0, gridYellow = 0, inside = 0, insideYellow = 0;
     for (uint32_t y = 0; y < r.hdr.height; ++y) {
       for (uint32_t x = 0; x < r.hdr.width; ++x) {
         const glm::vec4 c = r.hdr.at(x, y);
         if (c.r == 0.0f && c.g == 0.0f && c.b == 0.0f) continue;  // background
         const bool yellow = c.r == 1.0f && c.g == 1.0f && c.b == 0.0f;
-        if (x % 8 == 0 || y % 8 == 0) {
+        if (x % tile == 0 || y % tile == 0) {
           ++grid;
           gridYellow += yellow;
         } else {

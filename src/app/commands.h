@@ -44,7 +44,7 @@ int runReference(const ReferenceJob& job);
 struct LllMemoryQuery {
   uint32_t width = 1920;
   uint32_t height = 1080;
-  uint32_t tile = 8;
+  uint32_t tile = 16;  // lll's default (TechniqueInfo::defaultTile)
   uint32_t linksPerTile = 32;
   std::string link = "compact";                  // compact (8-byte links) | wide (16-byte links)
   uint32_t slices = RenderSettings{}.lllSlices;  // lists (heads) per tile, as --lll-slices

@@ -182,6 +182,7 @@ std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
         Scenario s = makeScenario("slices", name, scene, size);
         s.settings.technique = "lll";
         s.settings.lllSlices = n;
+        s.settings.tileSize = 8;  // Bezrati's and ThreeL's; the dense lights again at 16 below
         out.push_back(s);
       }
       if (!dense) continue;
@@ -492,8 +493,9 @@ std::vector<Scenario> giHierarchySuite(const SuiteOptions& options) {
     out.push_back(s);
   };
   for (const uint32_t vpls : counts) {
-    const Scenario base = makeScenario("gi-hierarchy", fmt::format("{} VPLs, {}", vpls, lgh.name),
-                                       vplScene(kDefaultSceneName, vpls, lgh, options), size);
+    Scenario base = makeScenario("gi-hierarchy", fmt::format("{} VPLs, {}", vpls, lgh.name),
+                                 vplScene(kDefaultSceneName, vpls, lgh, options), size);
+    base.settings.tileSize = 8;  // against the "tile 16" rows below
     for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
       const std::string& t = s.settings.technique;
       if ((t == "forward" || t == "deferred" || t == "prepass") && vpls > counts[1])
@@ -522,6 +524,7 @@ std::vector<Scenario> giHierarchySuite(const SuiteOptions& options) {
         Scenario s = makeScenario("gi-hierarchy", fmt::format("{} VPLs, {}", vpls, reach.name),
                                   vplScene(kDefaultSceneName, vpls, reach, options), size);
         s.settings.technique = "lll";
+        s.settings.tileSize = 8;  // beside the base's
         add(s, reach);
       }
     }

@@ -51,6 +51,9 @@ struct TechniqueInfo {
   // test against the visibility pass (a G-buffer, the pre-pass's normals, fragment shading): that
   // needs the hardware's depth bit for bit, so --raster auto keeps the hardware pass for it.
   bool (*redrawsOpaque)(const RenderSettings& settings) = nullptr;
+  // The tile size (pixels) when --tile is not given, each technique's fastest measured on the H200
+  // (bench/README.md, 2026-12-03): lll 16, tiled and clustered 8.
+  uint32_t defaultTile = 8;
 };
 
 const std::vector<TechniqueInfo>& techniques();

@@ -56,7 +56,8 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
       sceneBounds_(scene.worldBounds()),
       timer_(context) {
   validateResolution(settings.width, settings.height);
-  validateTileSize(settings.tileSize);  // every frame's uniforms divide by it
+  if (settings_.tileSize == 0) settings_.tileSize = findTechnique(settings_.technique).defaultTile;
+  validateTileSize(settings_.tileSize);  // every frame's uniforms divide by it
   if (scene.lights.size() > gpu::kMaxLights)
     throw InputError(
         fmt::format("{} lights: at most {} are supported", scene.lights.size(), gpu::kMaxLights));

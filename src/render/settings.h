@@ -35,7 +35,8 @@ struct RenderSettings {
   // K x K block evaluates a K*K-th of them and a filter gathers the rest from its neighbours on the
   // same surface; 1 (off) to kMaxVplInterleave. Opaque shading from the visibility buffer only.
   uint32_t vplInterleave = 1;
-  uint32_t tileSize = 8;
+  // Light-list tile size in pixels; 0: the technique's own default (TechniqueInfo::defaultTile).
+  uint32_t tileSize = 0;
   uint32_t linksPerTile = 32;  // initial link pool: tiles * this, grown on overflow
   // Workgroups sharing each cell's lights in lll's compute fill (1 to 64); 0: by light count.
   uint32_t lllFillSplits = 0;

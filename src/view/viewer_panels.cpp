@@ -118,7 +118,7 @@ void Viewer::drawControls() {
     for (const TechniqueInfo& t : techniques()) names.push_back(t.name);
     choice("technique", settings_.technique, names);
     choice("debug view", settings_.debugView, {"none", "heatmap", "bounds", "tiles"});
-    choice("tile", settings_.tileSize, {1, 2, 4, 8, 16});
+    choice("tile (0: the technique's)", settings_.tileSize, {0, 1, 2, 4, 8, 16});
     if (settings_.technique == "lll") {
       choice("fill", settings_.lllFill, {"compute", "shells", "ray"});
       if (settings_.lllFill == "compute")
