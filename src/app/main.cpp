@@ -72,7 +72,8 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--device", job.device.device, "auto | gpu | cpu | INDEX (see `lll devices`)");
   cmd.add_flag("--validate", job.device.validation,
                "Khronos validation layers on; any message fails the run");
-  cmd.add_option("--tile", s.tileSize, "light list tile size in pixels (lll)")
+  cmd.add_option("--tile", s.tileSize,
+                 "light list tile size in pixels (default: lll 16, tiled and clustered 8)")
       ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u}));
   cmd.add_option("--lll-fill", s.lllFill, "light linked list fill: shells | ray | compute")
       ->check(CLI::IsMember({"shells", "ray", "compute"}));
