@@ -190,13 +190,21 @@ TEST(BenchSuites, DensityScalesIntensityWithTheSquareOfTheRange) {
 
 TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {
   const auto threel = buildSuite("threel", SuiteOptions{.quick = true});
-  ASSERT_EQ(threel.size(), 28u);
+  ASSERT_EQ(threel.size(), 32u);
   std::set<std::string> labels, names;
+  size_t atDefaultTile = 0;
   for (const Scenario& s : threel) {
     labels.insert(techniqueLabel(s.settings));
     names.insert(s.name);
-    EXPECT_EQ(s.settings.tileSize, 8u);
+    if (s.series == "lll/compute/tile16") {  // lll's compute fill at its own default tile
+      ++atDefaultTile;
+      EXPECT_EQ(s.settings.tileSize, 0u);
+      EXPECT_EQ(s.settings.lllFill, "compute");
+      continue;
+    }
+    EXPECT_EQ(s.settings.tileSize, 8u);  // ThreeL's
   }
+  EXPECT_EQ(atDefaultTile, 4u);
   EXPECT_EQ(labels,
             (std::set<std::string>{"lll/shells", "lll/ray", "lll/compute", "lll/compute/hardware-raster",
                                    "lll/compute/gbuffer", "lll/compute/fragment-shade", "forward"}));
@@ -372,7 +380,7 @@ std::map<std::string, size_t> checkCsv(const fs::path& path, const Context& cont
       EXPECT_GE(std::stod(f[14]), 45.0) << line;
     EXPECT_EQ(f[17], context.info().name);
     EXPECT_EQ(f[19], gitCommit());
-    ++rows[f[1] + "|" + f[6] + "|" + f[7]];
+    ++rows[f[1] + "|" + f[6] + "|" + f[7] + "|" + f[8]];
   }
   return rows;
 }
@@ -387,7 +395,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   const fs::path dir = freshDir("bench-test");
   writeReport(report, dir);
 
-  ASSERT_EQ(report.results.size(), 28u);
+  ASSERT_EQ(report.results.size(), 32u);  // 28 at ThreeL's tile 8, lll/compute at its own tile
   std::map<std::string, size_t> expectedRows;
   for (const ScenarioResult& r : report.results) {
     const std::string& technique = r.scenario.settings.technique;
@@ -402,7 +410,8 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
     if (technique == "lll") {
       EXPECT_GT(r.memory.size(), 1u) << "the link pool and heads, not only depth";
     }
-    expectedRows[r.scenario.name + "|" + technique + "|" + fill] = r.passes.size();
+    expectedRows[r.scenario.name + "|" + technique + "|" + fill + "|" +
+                 std::to_string(tileSizeFor(r.scenario.settings))] = r.passes.size();
   }
   EXPECT_GE(expectedRows.size(), 4u);  // forward at least, in all four scene x size
   EXPECT_EQ(checkCsv(dir / "results.csv", context), expectedRows);
@@ -410,7 +419,7 @@ TEST(BenchQuick, ThreelSuiteWritesOneCsvRowPerScenarioAndPass) {
   const auto json = nlohmann::json::parse(readText(dir / "results.json"));
   EXPECT_EQ(json["device"], context.info().name);
   EXPECT_EQ(json["commit"], gitCommit());
-  ASSERT_EQ(json["results"].size(), 28u);
+  ASSERT_EQ(json["results"].size(), 32u);
   for (const auto& r : json["results"]) {
     EXPECT_EQ(r["driver"], context.info().driver);
     EXPECT_FALSE(r["date"].get<std::string>().empty());

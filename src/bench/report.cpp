@@ -8,6 +8,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
+#include "lighting/technique.h"
 #include "render/output_files.h"
 #include "scene/errors.h"
 
@@ -52,7 +53,7 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"surfaces", s.settings.surfaces},
       {"glass", s.settings.glass},
       {"raster", s.settings.raster},
-      {"tile", s.settings.tileSize},
+      {"tile", tileSizeFor(s.settings)},  // the technique's default where the scenario names none
       {"moving_lights", s.settings.animateLights},
       {"particles", s.settings.particles},
       {"particle_count", s.settings.particleCount},
@@ -145,8 +146,8 @@ void printResultsCsv(const BenchReport& report, std::ostream& out) {
     for (const PassSummary& p : r.passes)
       out << fmt::format("{},{},{},{},{},{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.0f},{},{},{},{},{}\n",
                          s.suite, csvField(s.name), csvField(s.scene.scene), r.lightCount, s.settings.width,
-                         s.settings.height, s.settings.technique, fill, s.settings.tileSize, csvField(p.name),
-                         p.medianMs, p.minMs, p.maxMs, r.memoryBytes(), vsForward,
+                         s.settings.height, s.settings.technique, fill, tileSizeFor(s.settings),
+                         csvField(p.name), p.medianMs, p.minMs, p.maxMs, r.memoryBytes(), vsForward,
                          csvField(report.device.name), csvField(report.device.driver), report.commit, r.date);
   }
 }

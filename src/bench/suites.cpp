@@ -82,7 +82,8 @@ void append(std::vector<Scenario>& to, const std::vector<Scenario>& from) {
   to.insert(to.end(), from.begin(), from.end());
 }
 
-// ThreeL's test: every light reaches every pixel, at 1080p and 4K, tile 8, LLL fills vs forward.
+// ThreeL's test: every light reaches every pixel, at 1080p and 4K, tile 8 (ThreeL's), LLL fills vs
+// forward; and lll's compute fill at its own default tile (16), "lll/compute/tile16".
 std::vector<Scenario> threelSuite(const SuiteOptions& options) {
   const std::vector<Size> sizes =
       options.quick ? std::vector<Size>{{32, 18}, {64, 36}} : std::vector<Size>{{1920, 1080}, {3840, 2160}};
@@ -94,6 +95,12 @@ std::vector<Scenario> threelSuite(const SuiteOptions& options) {
       base.settings.tileSize = 8;
       base.aluProbe = true;
       append(out, perTechnique(base, {"lll", "forward"}, true));
+      Scenario byDefault = base;
+      byDefault.settings.technique = "lll";
+      byDefault.settings.tileSize = 0;  // the technique's own
+      byDefault.series =
+          techniqueLabel(byDefault.settings) + fmt::format("/tile{}", findTechnique("lll").defaultTile);
+      out.push_back(byDefault);
     }
   }
   return out;

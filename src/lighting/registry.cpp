@@ -42,6 +42,10 @@ const std::vector<TechniqueInfo>& techniques() {
   return table;
 }
 
+uint32_t tileSizeFor(const RenderSettings& settings) {
+  return settings.tileSize ? settings.tileSize : findTechnique(settings.technique).defaultTile;
+}
+
 const TechniqueInfo& findTechnique(const std::string& name) {
   std::string known;
   for (const TechniqueInfo& t : techniques()) {

@@ -59,5 +59,7 @@ struct TechniqueInfo {
 const std::vector<TechniqueInfo>& techniques();
 // Throws InputError naming the known techniques when `name` is not one of them.
 const TechniqueInfo& findTechnique(const std::string& name);
+// The tile size `settings` render with: --tile, or its technique's default (0 asks for that).
+uint32_t tileSizeFor(const RenderSettings& settings);
 
 }  // namespace lll

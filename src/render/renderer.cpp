@@ -56,7 +56,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
       sceneBounds_(scene.worldBounds()),
       timer_(context) {
   validateResolution(settings.width, settings.height);
-  if (settings_.tileSize == 0) settings_.tileSize = findTechnique(settings_.technique).defaultTile;
+  settings_.tileSize = tileSizeFor(settings_);
   validateTileSize(settings_.tileSize);  // every frame's uniforms divide by it
   if (scene.lights.size() > gpu::kMaxLights)
     throw InputError(
