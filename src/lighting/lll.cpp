@@ -194,7 +194,8 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   if (settings.lllFillSplits > kMaxCellSplits)
     throw InputError(fmt::format("--lll-fill-splits {}: expected 0 (by light count) to {}",
                                  settings.lllFillSplits, kMaxCellSplits));
-  fillSplits_ = settings.lllFillSplits ? settings.lllFillSplits : lllFillSplitsFor(context, scene.lightCount());
+  fillSplits_ =
+      settings.lllFillSplits ? settings.lllFillSplits : lllFillSplitsFor(context, scene.lightCount());
   if (settings.lllSlices > gpu::kMaxLllSlices)
     throw InputError(fmt::format("--lll-slices {}: expected 1 (one list per tile) to {} lists per tile",
                                  settings.lllSlices, gpu::kMaxLllSlices));
