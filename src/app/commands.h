@@ -6,6 +6,7 @@
 
 #include "gi/path_tracer.h"
 #include "gpu/context.h"
+#include "lighting/lll.h"
 #include "render/settings.h"
 #include "scene/scene_source.h"
 
@@ -44,7 +45,7 @@ int runReference(const ReferenceJob& job);
 struct LllMemoryQuery {
   uint32_t width = 1920;
   uint32_t height = 1080;
-  uint32_t tile = 16;  // lll's default (TechniqueInfo::defaultTile)
+  uint32_t tile = kLllDefaultTile;
   uint32_t linksPerTile = 32;
   std::string link = "compact";                  // compact (8-byte links) | wide (16-byte links)
   uint32_t slices = RenderSettings{}.lllSlices;  // lists (heads) per tile, as --lll-slices

@@ -13,6 +13,11 @@
 
 namespace lll {
 
+// lll's tile size when --tile is not given (its TechniqueInfo::defaultTile): 16 pixels, faster than 8
+// on the H200 for ThreeL's lights and the atrium with 1,024 or 4,096 more, even on the atrium's own
+// 110 (bench/README.md, 2026-12-03); Bezrati and ThreeL use 8.
+inline constexpr uint32_t kLllDefaultTile = 16;
+
 enum class LllFill { Shells, Ray, Compute };
 
 struct LightLinkRecord {

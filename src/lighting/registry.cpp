@@ -33,7 +33,7 @@ const std::vector<TechniqueInfo>& techniques() {
       {"prepass", "Resistance 2's light pre-pass: normals, stencil-volume lights, material", &createPrepass,
        &always},
       {"lll", "light linked list: per-tile light lists built on the GPU (--lll-fill shells|ray|compute)",
-       &createLightLinkedList, &lllFragmentShading, 16},
+       &createLightLinkedList, &lllFragmentShading, kLllDefaultTile},
       {"tiled", "tiled shading (Forward+): per-tile light index arrays between the tile's depth bounds",
        &createTiled},
       {"clustered", "clustered shading: light index arrays per tile x depth slice (--cluster-slices)",
