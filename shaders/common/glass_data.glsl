@@ -2,7 +2,9 @@
 // read by lit/shade_glass.comp. GLASS_DATA_WRITE makes the buffers writable.
 #ifndef LLL_GLASS_DATA_GLSL
 #define LLL_GLASS_DATA_GLSL
+#include "common/frame.glsl"
 #include "shared/glass_types.h"
+#include "shared/limits.h"
 
 #ifdef GLASS_DATA_WRITE
 #define GLASS_ACCESS
@@ -10,8 +12,9 @@
 #define GLASS_ACCESS readonly
 #endif
 
-// Each pixel's most recent fragment (row-major, frame.viewport.x wide), kGlassListEnd for none.
-layout(std430, set = 0, binding = 32) GLASS_ACCESS buffer GlassHeadsBlock {
+// Each pixel's most recent fragment (row-major, frame.viewport.x wide), kGlassListEnd for none;
+// the glass pass sets its pixels' back to kGlassListEnd once read.
+layout(std430, set = 0, binding = 32) buffer GlassHeadsBlock {
   uint glassHeads[];
 };
 layout(std430, set = 0, binding = 33) GLASS_ACCESS buffer GlassFragmentsBlock {
@@ -25,5 +28,24 @@ layout(std430, set = 0, binding = 34) GLASS_ACCESS buffer GlassNextBlock {
 layout(std430, set = 0, binding = 35) buffer GlassCountersBlock {
   GlassCounters glassCounters;
 };
+
+// Groups of kTileGroupSize^2 pixels (row-major, glassGroupsAcross() wide): a flag per group, 1 where
+// glass-fragments stored a fragment; then the flagged groups listed by glass-groups
+// (GlassGroupDispatch.groups of them, from glassGroupListed(0)), which the glass pass runs over.
+layout(std430, set = 0, binding = 41) buffer GlassGroupsBlock {
+  uint glassGroupFlags[];
+};
+
+uint glassGroupsAcross() {
+  return (uint(frame.viewport.x) + kTileGroupSize - 1u) / kTileGroupSize;
+}
+
+uint glassGroupCount() {
+  return glassGroupsAcross() * ((uint(frame.viewport.y) + kTileGroupSize - 1u) / kTileGroupSize);
+}
+
+uint glassGroupListed(uint slot) {
+  return glassGroupCount() + slot;
+}
 
 #endif

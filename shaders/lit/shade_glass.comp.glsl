@@ -1,11 +1,13 @@
 // glass (--glass compute): each pixel's glass fragments (stored by common/glass_fragments.frag), the
 // nearest kGlassLayers of them, lit through the technique's lighting interface and blended over the
-// lit frame farthest first, as the raster path's premultiplied blend does draw by draw. With 8x8
-// groups and lll's 8-pixel tiles a group walks one list per layer.
+// lit frame farthest first, as the raster path's premultiplied blend does draw by draw. A workgroup
+// shades a group of 8x8 pixels (one of lll's lists per layer), only those with glass.
 #include "common/glass_data.glsl"
 #include "common/lighting.glsl"
+#define LLL_DISPLAY_FROM_SHADING
+#include "post/display.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = kTileGroupSize, local_size_y = kTileGroupSize) in;
 
 layout(set = 0, binding = 13, rgba16f) uniform image2D hdr;
 
@@ -22,14 +24,15 @@ bool nearerGlass(uint a, float da, uint b, float db) {
   return false;  // the same surface: either order blends the same
 }
 
-void main() {
-  uvec2 pixel = gl_GlobalInvocationID.xy;
-  if (pixel.x >= uint(frame.viewport.x) || pixel.y >= uint(frame.viewport.y)) return;
+// Pixel `pixel`'s glass over what is behind it; its list head cleared for the next frame.
+void shadeGlassPixel(uvec2 pixel) {
   // The nearest kGlassLayers fragments, nearest first (insertion: lists are short).
   uint nodes[kGlassLayers];
   float depths[kGlassLayers];
   uint count = 0u, listed = 0u;
-  uint link = glassHeads[pixel.y * uint(frame.viewport.x) + pixel.x];
+  uint headIndex = pixel.y * uint(frame.viewport.x) + pixel.x;
+  uint link = glassHeads[headIndex];
+  glassHeads[headIndex] = kGlassListEnd;
   uint capacity = min(glassCounters.fragments, glassCounters.capacity);
   while (link != kGlassListEnd && link < capacity && listed < capacity) {
     float depth = glassFragments[link].positionDepth.w;
@@ -71,4 +74,13 @@ void main() {
     color = vec4(lit * alpha, alpha) + color * (1.0 - alpha);  // premultiplied over
   }
   imageStore(hdr, ivec2(pixel), color);
+  storeDisplay(ivec2(pixel), color.rgb);
+}
+
+// One workgroup per group of 8x8 pixels with glass (listed by glass-groups).
+void main() {
+  uint group = glassGroupFlags[glassGroupListed(gl_WorkGroupID.x)];
+  uint across = glassGroupsAcross();
+  uvec2 pixel = uvec2(group % across, group / across) * kTileGroupSize + gl_LocalInvocationID.xy;
+  if (pixel.x < uint(frame.viewport.x) && pixel.y < uint(frame.viewport.y)) shadeGlassPixel(pixel);
 }

@@ -8,6 +8,8 @@
 // shared memory 64 lights at a time instead: 0.206 against 0.231 ms, 2.27 against 2.70 ms.
 #include "common/lighting.glsl"
 #include "common/visibility_surface.glsl"
+#define LLL_DISPLAY_FROM_SHADING
+#include "post/display.glsl"
 #ifdef LLL_INTERLEAVED_VPLS
 #include "gi/interleaved_vpls.glsl"
 #endif
@@ -91,7 +93,10 @@ void main() {
 #endif
   bool replaced = false;
   if (covered) color = lightingView(s, pixel, viewDepth, unlistedLight(s) + directOf(sums), replaced);
-  if (inside) imageStore(hdr, ivec2(pixel), vec4(color, 1.0));
+  if (inside) {
+    imageStore(hdr, ivec2(pixel), vec4(color, 1.0));
+    storeDisplay(ivec2(pixel), color);
+  }
 #ifdef LLL_INTERLEAVED_VPLS
   if (inside) storeInterleaved(pixel, covered && !replaced, s, viewDepth, sums, frame.view);
 #endif

@@ -34,6 +34,16 @@ struct GlassCounters {
 };
 LLL_CHECK_SIZE(GlassCounters, 16);
 
+// The glass pass's indirect dispatch: one workgroup per group of kTileGroupSize^2 pixels that holds
+// a glass fragment, listed by glass-groups (common/glass_groups.comp).
+struct GlassGroupDispatch {
+  uint groups;  // x: the groups listed
+  uint y;       // 1
+  uint z;       // 1
+  uint pad;
+};
+LLL_CHECK_SIZE(GlassGroupDispatch, 16);
+
 LLL_NAMESPACE_END
 
 #endif

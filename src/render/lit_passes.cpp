@@ -9,17 +9,24 @@
 #include "render/visibility.h"
 
 namespace lll {
+namespace {
+// post/display.glsl's kWritesDisplay.
+constexpr uint32_t kWritesDisplayConstant = 60;
+}  // namespace
 
 LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets& targets,
                      const VisibilityBuffer* visibility, OpaqueShading opaque, LightingInterface lighting,
-                     bool computeGlass, uint32_t vplInterleave)
+                     bool computeGlass, uint32_t vplInterleave, bool lastShading)
     : context_(context),
       opaque_(opaque),
       lighting_(std::move(lighting)),
       pixels_(double(targets.width) * targets.height),
       computeGlass_(computeGlass && scene.hasBlendDraws()) {
   const uint32_t interleave = vplInterleaveIn(scene, opaque_, vplInterleave);
+  writesDisplay_ = lastShading && opaque_ == OpaqueShading::Visibility && interleave == 1 &&
+                   (computeGlass_ || !scene.hasBlendDraws());
   SpecializationConstants constants = lightTypeConstants(scene);
+  constants[kWritesDisplayConstant] = writesDisplay_ ? 1u : 0u;
   if (opaque_ == OpaqueShading::Visibility) {
     if (!visibility) throw std::logic_error("LitPasses: visibility shading without a visibility buffer");
     SpecializationConstants opaqueConstants = constants;
@@ -78,6 +85,13 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
   requireStorageBufferFits(context, pixels, 4, "the glass fragments' list heads", "pixels",
                            "use a lower resolution or --glass raster");
   glassHeads_ = Buffer(context, pixels * 4, storage, MemoryUse::Device, "glass heads");
+  const uint64_t groups = uint64_t(divideRoundingUp(targets.width, gpu::kTileGroupSize)) *
+                          divideRoundingUp(targets.height, gpu::kTileGroupSize);
+  glassGroups_ = Buffer(context, groups * 8, storage, MemoryUse::Device, "glass groups");
+  glassDispatch_ = Buffer(context, sizeof(gpu::GlassGroupDispatch),
+                          storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryUse::Device, "glass dispatch");
+  glassGroupsLayout_ = PipelineLayout(context, {"common/glass_groups.comp"});
+  glassGroupsPipeline_ = Pipeline(context, glassGroupsLayout_, "common/glass_groups.comp");
   glassCounters_ =
       Buffer(context, sizeof(gpu::GlassCounters), storage, MemoryUse::Readback, "glass counters");
   // An eighth of the pixels to start with: where glass covers more, the first frame grows the pool.
@@ -96,6 +110,7 @@ void LitPasses::allocateGlassPool(uint64_t fragments) {
 
 DescriptorWriter& LitPasses::bindGlassLists(DescriptorWriter& writer) const {
   return writer.storage(32, glassHeads_.handle())
+      .storage(41, glassGroups_.handle())
       .storage(33, glassNodes_.handle())
       .storage(34, glassNext_.handle())
       .storage(35, glassCounters_.handle());
@@ -104,9 +119,18 @@ DescriptorWriter& LitPasses::bindGlassLists(DescriptorWriter& writer) const {
 void LitPasses::shadeGlassInCompute(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
   constexpr VkPipelineStageFlags2 kFragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-  frame.graph.step({uses(glassHeads_, Use::TransferWrite), uses(glassCounters_, Use::TransferWrite)},
-                   [&](VkCommandBuffer cmd) {
-                     vkCmdFillBuffer(cmd, glassHeads_.handle(), 0, VK_WHOLE_SIZE, gpu::kGlassListEnd);
+  // The heads and group flags are cleared whole once; after that the glass pass clears what it read.
+  const bool clearLists = !glassListsCleared_;
+  glassListsCleared_ = true;
+  frame.graph.step({uses(glassHeads_, Use::TransferWrite), uses(glassGroups_, Use::TransferWrite),
+                    uses(glassDispatch_, Use::TransferWrite), uses(glassCounters_, Use::TransferWrite)},
+                   [&, clearLists](VkCommandBuffer cmd) {
+                     if (clearLists) {
+                       vkCmdFillBuffer(cmd, glassHeads_.handle(), 0, VK_WHOLE_SIZE, gpu::kGlassListEnd);
+                       vkCmdFillBuffer(cmd, glassGroups_.handle(), 0, VK_WHOLE_SIZE, 0);
+                     }
+                     const gpu::GlassGroupDispatch none{0, 1, 1, 0};
+                     vkCmdUpdateBuffer(cmd, glassDispatch_.handle(), 0, sizeof(none), &none);
                      const gpu::GlassCounters start{0, uint32_t(glassCapacity_), 0, 0};
                      vkCmdUpdateBuffer(cmd, glassCounters_.handle(), 0, sizeof(start), &start);
                    });
@@ -115,7 +139,7 @@ void LitPasses::shadeGlassInCompute(FrameContext& frame) {
       "glass-fragments",
       {glassTestsDepth_ ? uses(opaqueDepth, Use::Sampled, kFragment) : uses(opaqueDepth, Use::DepthTest),
        uses(glassHeads_, Use::StorageReadWrite, kFragment), uses(glassNodes_, Use::StorageWrite, kFragment),
-       uses(glassNext_, Use::StorageWrite, kFragment),
+       uses(glassNext_, Use::StorageWrite, kFragment), uses(glassGroups_, Use::StorageWrite, kFragment),
        uses(glassCounters_, Use::StorageReadWrite, kFragment)},
       [&](VkCommandBuffer cmd) {
         beginRendering(cmd, t.width, t.height, {}, glassTestsDepth_ ? VK_NULL_HANDLE : t.depth.view(),
@@ -128,21 +152,38 @@ void LitPasses::shadeGlassInCompute(FrameContext& frame) {
         frame.scene.draw(cmd, glassFragmentsLayout_.handle(), DrawFilter::Blend);
         vkCmdEndRendering(cmd);
       });
-  frame.graph.pass("glass",
-                   std::vector<ResourceUse>{uses(t.hdr, Use::StorageReadWrite, kCompute),
-                                            uses(glassHeads_, Use::StorageRead, kCompute),
-                                            uses(glassNodes_, Use::StorageRead, kCompute),
-                                            uses(glassNext_, Use::StorageRead, kCompute),
-                                            uses(glassCounters_, Use::StorageReadWrite, kCompute)} +
-                       lighting_.reads(kCompute),
+  frame.graph.pass("glass-groups",
+                   {uses(glassGroups_, Use::StorageReadWrite, kCompute),
+                    uses(glassDispatch_, Use::StorageReadWrite, kCompute)},
                    [&](VkCommandBuffer cmd) {
-                     glassCompute_.bind(cmd);
-                     DescriptorWriter writer = litDescriptors(frame);
-                     bindGlassLists(writer)
-                         .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-                         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, glassLayout_);
-                     dispatchPerPixel(cmd, t);
+                     glassGroupsPipeline_.bind(cmd);
+                     DescriptorWriter()
+                         .storage(0, frame.uniformBuffer.handle())
+                         .storage(41, glassGroups_.handle())
+                         .storage(42, glassDispatch_.handle())
+                         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, glassGroupsLayout_);
+                     const uint32_t groups = divideRoundingUp(t.width, gpu::kTileGroupSize) *
+                                             divideRoundingUp(t.height, gpu::kTileGroupSize);
+                     vkCmdDispatch(cmd, divideRoundingUp(groups, 64u), 1, 1);
                    });
+  frame.graph.pass(
+      "glass",
+      std::vector<ResourceUse>{
+          uses(t.hdr, Use::StorageReadWrite, kCompute), uses(t.ldr, Use::StorageWrite, kCompute),
+          uses(glassDispatch_, Use::IndirectRead), uses(glassGroups_, Use::StorageReadWrite, kCompute),
+          uses(glassHeads_, Use::StorageReadWrite, kCompute), uses(glassNodes_, Use::StorageRead, kCompute),
+          uses(glassNext_, Use::StorageRead, kCompute),
+          uses(glassCounters_, Use::StorageReadWrite, kCompute)} +
+          lighting_.reads(kCompute),
+      [&](VkCommandBuffer cmd) {
+        glassCompute_.bind(cmd);
+        DescriptorWriter writer = litDescriptors(frame);
+        bindGlassLists(writer)
+            .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .image(40, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, glassLayout_);
+        vkCmdDispatchIndirect(cmd, glassDispatch_.handle(), 0);
+      });
   // afterFrame reads the counters (overflow, the deepest pixel).
   frame.graph.barriers({uses(glassCounters_, Use::HostRead)});
 }
@@ -205,12 +246,15 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
       // Every pixel written whole, from its rebuilt surface.
       frame.graph.pass("shade-opaque",
                        std::vector<ResourceUse>{uses(t.hdr, Use::StorageWrite, kCompute),
+                                                uses(t.ldr, Use::StorageWrite, kCompute),
                                                 uses(t.visibility, Use::StorageRead, kCompute)} +
                            lighting_.reads(kCompute) +
                            (interleaved_ ? interleaved_->shadingWrites() : std::vector<ResourceUse>{}),
                        [&](VkCommandBuffer cmd) {
                          DescriptorWriter writer = litDescriptors(frame);
                          frame.visibility->bindSurfaceData(writer, frame);
+                         writer.image(40, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.ldr.view(),
+                                      VK_IMAGE_LAYOUT_GENERAL);
                          if (interleaved_) interleaved_->bindImages(writer);
                          const VkDescriptorSet textures = frame.scene.textureTable();
                          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, computeLayout_.handle(),

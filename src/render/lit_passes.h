@@ -6,12 +6,15 @@
 //                  or per fragment of a geometry pass
 //   glass          blended primitives at their own depth, farthest first: with --glass compute
 //                  (the default) a "glass-fragments" geometry pass stores each pixel's glass
-//                  fragments and a compute pass lights and blends them (shared/glass_types.h);
+//                  fragments, "glass-groups" lists the 8x8-pixel groups that have some, and a
+//                  compute pass lights and blends them there (shared/glass_types.h);
 //                  with --glass raster a geometry pass lights each fragment and blends it
 //   vpl-filter     with --vpl-interleave K > 1, a scene with VPLs and opaque surfaces from the
 //                  visibility buffer: shade-opaque evaluates a K*K-th of the VPLs per pixel and this
 //                  gathers the rest (render/interleaved_vpls.h)
 // (particles are drawn by the particle system with the same interface: particles/particle_system.h).
+// Where shade-opaque and the compute glass write the frame's last colours (writesDisplay()), they
+// also write its display image (post/display.glsl), and the renderer records no tonemap pass.
 #include <memory>
 #include <string>
 #include <utility>
@@ -30,7 +33,7 @@ class LitPasses {
  public:
   LitPasses(Context& context, const GpuScene& scene, const FrameTargets& targets,
             const VisibilityBuffer* visibility, OpaqueShading opaque, LightingInterface lighting,
-            bool computeGlass, uint32_t vplInterleave = 1);
+            bool computeGlass, uint32_t vplInterleave = 1, bool lastShading = false);
   ~LitPasses();
   LitPasses(const LitPasses&) = delete;
   LitPasses& operator=(const LitPasses&) = delete;
@@ -39,6 +42,10 @@ class LitPasses {
   void shadeOpaque(FrameContext& frame);
   // The blended primitives over the lit frame.
   void shadeGlass(FrameContext& frame);
+  // Whether these passes write the display image (frame.targets.ldr) as well as hdr: asked for
+  // with `lastShading` (no pass after them changes hdr), and possible where shade-opaque is the
+  // visibility buffer's compute pass with no VPL gather after it and any glass is lit in compute.
+  bool writesDisplay() const { return writesDisplay_; }
 
   // Called once the frame's GPU work completed: true when the glass fragments overflowed their pool,
   // which has grown, and the frame must be drawn again.
@@ -56,6 +63,7 @@ class LitPasses {
 
   Context& context_;
   OpaqueShading opaque_;
+  bool writesDisplay_ = false;
   LightingInterface lighting_;
   double pixels_;
   PipelineLayout computeLayout_;
@@ -80,6 +88,13 @@ class LitPasses {
   PipelineLayout glassLayout_;
   Pipeline glassCompute_;
   Buffer glassHeads_, glassNodes_, glassNext_, glassCounters_;
+  // A flag per 8x8-pixel group with glass fragments, then the list of those groups (glass-groups
+  // makes it, and the glass pass's indirect dispatch, glassDispatch_, from the flags and clears
+  // them). The flags and glassHeads_ are cleared whole once, then by those passes.
+  Buffer glassGroups_, glassDispatch_;
+  PipelineLayout glassGroupsLayout_;
+  Pipeline glassGroupsPipeline_;
+  bool glassListsCleared_ = false;
   uint64_t glassCapacity_ = 0;
   gpu::GlassCounters lastGlass_{};
   uint32_t glassOverflows_ = 0;

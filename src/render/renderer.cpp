@@ -97,7 +97,8 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
       findTechnique(settings.technique).create(context, *gpuScene_, settings_, targets_, visibility_.get());
   lit_ = std::make_unique<LitPasses>(context, *gpuScene_, targets_, visibility_.get(),
                                      technique_->opaqueShading(), technique_->lighting(),
-                                     settings_.glass == "compute", settings_.vplInterleave);
+                                     settings_.glass == "compute", settings_.vplInterleave,
+                                     /*lastShading=*/!particles_);
 }
 
 void Renderer::chooseSurfaces() {
@@ -344,7 +345,8 @@ void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advancePartic
   if (particles_)
     particles_->draw(frame, technique_->lighting(),
                      aboutGlass ? ParticleLayer::InFrontOfGlass : ParticleLayer::All);
-  tonemap(frame);
+  // The last shading passes may have written the display image already (LitPasses::writesDisplay).
+  if (!lit_->writesDisplay()) tonemap(frame);
   if (capture) captureImages(graph);
 }
 
