@@ -343,20 +343,20 @@ LightingInterface LightLinkedList::lighting() const {
           {&heads_, &links_, &tileRange_}};
 }
 
+// The heads and counters are emptied by the tile-depth pass (lighting/lll/tile_depth.comp); only the
+// shells' depth bounds need a clear of their own.
 void LightLinkedList::clear(FrameContext& frame) {
-  std::vector<ResourceUse> cleared = {uses(heads_, Use::TransferWrite), uses(counters_, Use::TransferWrite)};
-  if (bounds_) cleared.push_back(uses(bounds_, Use::TransferWrite));
-  frame.graph.pass("lll-clear", cleared, [&](VkCommandBuffer cmd) {
-    vkCmdFillBuffer(cmd, heads_.handle(), 0, VK_WHOLE_SIZE, gpu::kLinkEnd);
-    vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
-    if (bounds_) vkCmdFillBuffer(cmd, bounds_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
+  if (!bounds_) return;
+  frame.graph.pass("lll-clear", {uses(bounds_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, bounds_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
   });
 }
 
 void LightLinkedList::reduceTileDepth(FrameContext& frame) {
   frame.graph.pass("lll-tile-depth",
                    {uses(frame.targets.sampledDepth(), Use::Sampled, kCompute),
-                    uses(tileRange_, Use::StorageWrite, kCompute), bins_.farDepthWrite(kCompute)},
+                    uses(tileRange_, Use::StorageWrite, kCompute), uses(heads_, Use::StorageWrite, kCompute),
+                    uses(counters_, Use::StorageWrite, kCompute), bins_.farDepthWrite(kCompute)},
                    [&](VkCommandBuffer cmd) {
                      tileDepthPipeline_.bind(cmd);
                      // Only this pass samples the depth buffer: binding it while shading reads it as an

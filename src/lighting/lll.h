@@ -1,9 +1,9 @@
 #pragma once
 // Technique "lll": the Light Linked List (Bezrati; ThreeL). Each frame the GPU builds, for every
 // screen tile, a linked list of the lights that touch it, then every surface walks its tile's list.
-// Its light data passes: lll-clear -> lll-tile-depth -> lll-fill-{shells|ray|compute} (-> lll-stats
-// on captured frames); the shared passes then walk the lists through its lighting interface
-// (shaders/lighting/lll/lighting.glsl).
+// Its light data passes: lll-tile-depth (which also empties the lists) -> lll-fill-{shells|ray|compute}
+// (-> lll-stats on captured frames; the shells' fill first clears its depth bounds in lll-clear); the shared
+// passes then walk the lists through its lighting interface (shaders/lighting/lll/lighting.glsl).
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <memory>
