@@ -78,8 +78,8 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--lll-fill", s.lllFill, "light linked list fill: shells | ray | compute")
       ->check(CLI::IsMember({"shells", "ray", "compute"}));
   cmd.add_option("--lll-fill-splits", s.lllFillSplits,
-                 "compute fill: workgroups sharing each 8x8-tile cell's lights (1 to 64; 0: 1 per 1,024 "
-                 "lights, 64 on a CPU device)")
+                 "compute fill: workgroups sharing each 8x8-tile cell's lights (1 to 64; 0: a quarter of the "
+                 "light count from 16 to 64, never more than the lights; 64 on a CPU device)")
       ->check(CLI::Range(0u, 64u));
   cmd.add_option(
          "--lll-slices", s.lllSlices,
