@@ -29,11 +29,12 @@ layout(std430, set = 0, binding = 35) buffer GlassCountersBlock {
   GlassCounters glassCounters;
 };
 
-// Groups of kTileGroupSize^2 pixels (row-major, glassGroupsAcross() wide): a flag per group, 1 where
-// glass-fragments stored a fragment; then the flagged groups listed by glass-groups
-// (GlassGroupDispatch.groups of them, from glassGroupListed(0)), which the glass pass runs over.
+// Groups of kTileGroupSize^2 pixels (row-major, glassGroupsAcross() wide): first a flag per group,
+// glassGroupWords[group], 1 where glass-fragments stored a fragment; then the flagged groups listed
+// by glass-groups, glassGroupWords[glassGroupListed(slot)] (GlassGroupDispatch.groups of them),
+// which the glass pass runs over.
 layout(std430, set = 0, binding = 41) buffer GlassGroupsBlock {
-  uint glassGroupFlags[];
+  uint glassGroupWords[];
 };
 
 uint glassGroupsAcross() {

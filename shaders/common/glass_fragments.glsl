@@ -34,5 +34,5 @@ void main() {
   // (listing the group for an indirect dispatch, with a read and an atomic exchange, cost the H200
   // 0.010 ms of this pass at 1080p and 0.030 at 4K, more than it saved the glass pass).
   uvec2 groupAt = at / kTileGroupSize;
-  glassGroupFlags[groupAt.y * glassGroupsAcross() + groupAt.x] = 1u;
+  glassGroupWords[groupAt.y * glassGroupsAcross() + groupAt.x] = 1u;
 }

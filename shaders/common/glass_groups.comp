@@ -15,7 +15,7 @@ layout(std430, set = 0, binding = 42) buffer GlassDispatchBlock {
 
 void main() {
   uint group = gl_GlobalInvocationID.x;
-  if (group >= glassGroupCount() || glassGroupFlags[group] == 0u) return;
-  glassGroupFlags[group] = 0u;
-  glassGroupFlags[glassGroupListed(atomicAdd(glassDispatch.groups, 1u))] = group;
+  if (group >= glassGroupCount() || glassGroupWords[group] == 0u) return;
+  glassGroupWords[group] = 0u;
+  glassGroupWords[glassGroupListed(atomicAdd(glassDispatch.groups, 1u))] = group;
 }

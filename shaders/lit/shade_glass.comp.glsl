@@ -79,7 +79,7 @@ void shadeGlassPixel(uvec2 pixel) {
 
 // One workgroup per group of 8x8 pixels with glass (listed by glass-groups).
 void main() {
-  uint group = glassGroupFlags[glassGroupListed(gl_WorkGroupID.x)];
+  uint group = glassGroupWords[glassGroupListed(gl_WorkGroupID.x)];
   uint across = glassGroupsAcross();
   uvec2 pixel = uvec2(group % across, group / across) * kTileGroupSize + gl_LocalInvocationID.xy;
   if (pixel.x < uint(frame.viewport.x) && pixel.y < uint(frame.viewport.y)) shadeGlassPixel(pixel);

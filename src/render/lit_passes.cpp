@@ -308,7 +308,8 @@ std::vector<std::pair<std::string, double>> LitPasses::stats() const {
                        {"glass-fragment-capacity", double(glassCapacity_)},
                        {"glass-deepest-pixel", double(lastGlass_.deepest)},
                        {"glass-pool-overflows", double(glassOverflows_)},
-                       {"glass_bytes", double(glassHeads_.size() + glassNodes_.size() + glassNext_.size())}});
+                       {"glass_bytes", double(glassHeads_.size() + glassNodes_.size() + glassNext_.size() +
+                                              glassGroups_.size() + glassDispatch_.size())}});
   return s;
 }
 

@@ -16,7 +16,6 @@ layout(set = 0, binding = 9) uniform sampler2D sceneDepth;
 
 void main() {
   uint headsPerTile = listSlices() * listClasses();
-  uint cellRow = kTileGroupSize * headsPerTile;  // a row of the cell's tiles' heads, which lie together
   uvec2 firstTile = gl_WorkGroupID.xy * kTileGroupSize;
   uint across = min(kTileGroupSize, frame.counts.z - firstTile.x);
   for (uint row = 0u; row < kTileGroupSize && firstTile.y + row < frame.counts.w; ++row) {
