@@ -1,5 +1,6 @@
 // The per-pixel lists of glass fragments (shared/glass_types.h): written by common/glass_fragments.frag,
-// read by lit/shade_glass.comp. GLASS_DATA_WRITE makes the buffers writable.
+// read by lit/shade_glass.comp. GLASS_DATA_WRITE makes the fragments writable; the heads and the
+// groups both passes write (the glass pass and glass-groups clear what they read).
 #ifndef LLL_GLASS_DATA_GLSL
 #define LLL_GLASS_DATA_GLSL
 #include "common/frame.glsl"

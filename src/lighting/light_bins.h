@@ -57,8 +57,7 @@ inline uint32_t cellSplitsFor(const Context& context, uint32_t lights) {
 // were slower still (the atrium + 1,024: 0.345, 0.209, 0.137).
 inline uint32_t lllFillSplitsFor(const Context& context, uint32_t lights) {
   if (context.isCpuDevice()) return kMaxCellSplits;
-  return std::clamp<uint32_t>(std::clamp<uint32_t>(lights / 4, 16, 64), 1,
-                              std::min<uint32_t>(kMaxCellSplits, std::max<uint32_t>(lights, 1)));
+  return std::min(std::clamp<uint32_t>(lights / 4, 16, kMaxCellSplits), std::max<uint32_t>(lights, 1));
 }
 
 class LightBins {
