@@ -103,10 +103,11 @@ TEST(InterleavedVpls, StaysCloseToEveryPixelEvaluatingEveryVpl) {
   }
 }
 
-// A glossy metal's VPL light is a spray of sharp glints: its pixels evaluate every class themselves
-// and the gather leaves them as they are. The Cornell room made of polished metal: the same image
-// as without interleaving (the light summed in another order: 1/255 at most); the room made
-// rougher, and the pattern's gather shows.
+// A glossy metal's VPL light is a spray of sharp glints: its pixels have every class and the gather
+// leaves them as they are. The Cornell room made of polished metal: the same image as without
+// interleaving (the light summed in another order: 1/255 at most); the room made rougher, and the
+// pattern's gather shows. With lll the first eighth of the metal pixels get vpl-classes' slots (their
+// classes lit by a workgroup each) and the rest walk every class themselves: both ways here.
 TEST(InterleavedVpls, GlossyMetalsEvaluateEveryVplThemselves) {
   for (const float roughness : {0.3f, 0.7f}) {
     Scene scene = cornellVpls(256);

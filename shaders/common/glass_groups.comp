@@ -9,8 +9,10 @@
 #include "common/glass_data.glsl"
 
 layout(local_size_x = 64) in;
+// The glass pass's dispatch, then glass-light's (its y the lights' parts, set by the CPU).
 layout(std430, set = 0, binding = 42) buffer GlassDispatchBlock {
   GlassGroupDispatch glassDispatch;
+  GlassGroupDispatch glassPartsDispatch;
 };
 
 void main() {
@@ -18,4 +20,5 @@ void main() {
   if (group >= glassGroupCount() || glassGroupWords[group] == 0u) return;
   glassGroupWords[group] = 0u;
   glassGroupWords[glassGroupListed(atomicAdd(glassDispatch.groups, 1u))] = group;
+  atomicAdd(glassPartsDispatch.groups, 1u);
 }

@@ -10,6 +10,12 @@
 //                                   the lights a pixel that evaluates one class of VPLs walks
 //                                   (--vpl-interleave, gi/interleaved_vpls.glsl); by default all
 //                                   of lightsAt's, the shading pass skipping the other classes
+// and (defining LIGHTING_LIST_PARTS)
+//   LightCursor lightsAtPart(uvec2 pixel, float viewDepth, uint part);
+//                                   part `part` of lightsAt's lights, of as many disjoint parts as
+//                                   the C++ side's LightingInterface::listParts says, so that
+//                                   several workgroups can walk one point's lights (the compute
+//                                   glass); by default one part, all of them
 // and cmake/EmbedShaders.cmake compiles every template with every interface.
 #ifndef LLL_LIGHTING_GLSL
 #define LLL_LIGHTING_GLSL
@@ -21,14 +27,28 @@ LightCursor lightsAtInClass(uvec2 pixel, float viewDepth, uint vplClass) {
 }
 #endif
 
-// Radiance the lights reflect from `s` towards the eye.
-vec3 lightSurface(Surface s, uvec2 pixel, float viewDepth) {
+#ifndef LIGHTING_LIST_PARTS
+LightCursor lightsAtPart(uvec2 pixel, float viewDepth, uint part) {
+  return lightsAt(pixel, viewDepth);
+}
+#endif
+
+vec3 lightCursorSum(Surface s, LightCursor cursor) {
   vec3 sum = vec3(0.0);
-  LightCursor cursor = lightsAt(pixel, viewDepth);
   BrdfTerms terms = brdfTerms(s);
   uint light;
   while (nextLight(cursor, light)) sum += evaluateLight(lights[light], s, terms);
   return sum;
+}
+
+// Radiance the lights reflect from `s` towards the eye.
+vec3 lightSurface(Surface s, uvec2 pixel, float viewDepth) {
+  return lightCursorSum(s, lightsAt(pixel, viewDepth));
+}
+
+// The same from part `part` of the lights (lightsAtPart): the parts' sums add up to lightSurface's.
+vec3 lightSurfacePart(Surface s, uvec2 pixel, float viewDepth, uint part) {
+  return lightCursorSum(s, lightsAtPart(pixel, viewDepth, part));
 }
 
 // Everything that leaves `s` towards the eye: ambient, emission and the lights, or the debug view

@@ -9,6 +9,8 @@
 #define LLL_INTERLEAVED_VPLS_GLSL
 #include "common/brdf.glsl"
 #include "gi/vpl_interleave_data.glsl"
+#define EVERY_CLASS_PLACE
+#include "gi/every_class.glsl"
 
 layout(set = 0, binding = 38, rgba16f) uniform writeonly image2D vplIndirect;
 layout(set = 0, binding = 39, rgba32ui) uniform writeonly uimage2D vplSurfaceKey;
@@ -18,6 +20,7 @@ struct InterleavedSums {
   vec3 direct;
   vec3 indirect;
   uint pixelClass;
+  uint slot;  // with pixelClass kClassesElsewhere: its slot (gi/every_class.glsl)
 };
 
 // The pixel an invocation shades (Segovia et al.'s "non-interleaved" shading of the pattern): the
@@ -29,16 +32,33 @@ uvec2 interleavedPixel(uvec2 group, uvec2 local) {
   return ((group / kVplInterleave) * kTileGroupSize + local) * kVplInterleave + group % kVplInterleave;
 }
 
-// pixelClass of a pixel that evaluates every class (evaluatesEveryClass).
+// pixelClass of a pixel that evaluates every class (evaluatesEveryClass), and of one whose classes
+// vpl-classes lights (kClassesElsewhere: it walks the lights before the VPLs alone).
 const uint kEveryClass = 0xFFFFFFFFu;
+const uint kClassesElsewhere = 0xFFFFFFFEu;
 
 InterleavedSums startInterleavedSums(uvec2 pixel) {
-  return InterleavedSums(vec3(0.0), vec3(0.0), vplClassOfPixel(pixel));
+  return InterleavedSums(vec3(0.0), vec3(0.0), vplClassOfPixel(pixel), 0u);
+}
+
+// A pixel that must have every class: a slot for vpl-classes to light them in where it lights them
+// (kClassesElsewhere) and one is left, else kEveryClass (it walks them all itself).
+void placeEveryClassPixel(inout InterleavedSums sums, uvec2 pixel, Surface s, float viewDepth) {
+  sums.pixelClass = kEveryClass;
+  if (!kVplClassesPass) return;
+  uint slot = atomicAdd(everyClass.pixels, 1u);
+  if (slot >= everyClass.capacity) return;
+  if (slot % 64u == 0u) atomicAdd(everyClass.groups, 1u);
+  everyClassSurfaces[slot] =
+      EveryClassSurface(vec4(s.position, viewDepth), vec4(s.normal, s.metallic),
+                        vec4(s.baseColor, s.roughness), uvec4(pixel.x | (pixel.y << 16), 0u, 0u, 0u));
+  sums.pixelClass = kClassesElsewhere;
+  sums.slot = slot;
 }
 
 // What light `index` is to the pixel: the VPLs are the lights from `firstVpl` on (FrameUniforms'
 // display.w), each in class (index - firstVpl) mod k*k; the pixel skips the other classes' without
-// reading their records.
+// reading their records (all of them with kClassesElsewhere).
 const uint kLightSkipped = 0u, kLightDirect = 1u, kLightIndirect = 2u;
 uint interleavedRole(uint index, uint firstVpl, uint pixelClass) {
   if (index < firstVpl) return kLightDirect;
@@ -47,8 +67,9 @@ uint interleavedRole(uint index, uint firstVpl, uint pixelClass) {
 }
 
 // What gi/vpl_filter.comp needs of this pixel; `lit` false where it must add nothing (no surface,
-// or a debug view replaced the colour). A pixel that evaluated every class is marked (key w 1): the
-// filter takes its own sum and leaves it out of its neighbours' gathers.
+// or a debug view replaced the colour). A pixel that evaluated every class is marked (key w 1), one
+// whose classes vpl-classes lit by its slot (w 2 + slot): the filter takes its own light and
+// leaves it out of its neighbours' gathers.
 void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, InterleavedSums sums, mat4 view) {
   if (!lit) {
     imageStore(vplIndirect, ivec2(pixel), vec4(0.0, 0.0, 0.0, -1.0));
@@ -58,9 +79,11 @@ void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, Interle
   vec3 key = albedoKey(s.baseColor);
   vec3 normal = normalize(mat3(view) * s.normal);
   imageStore(vplIndirect, ivec2(pixel), vec4(sums.indirect / key, viewDepth));
-  imageStore(vplSurfaceKey, ivec2(pixel),
-             uvec4(packSnorm2x16(octahedralEncode(normal)), packHalf2x16(key.rg),
-                   packHalf2x16(vec2(key.b, 0.0)), sums.pixelClass == kEveryClass ? 1u : 0u));
+  imageStore(
+      vplSurfaceKey, ivec2(pixel),
+      uvec4(packSnorm2x16(octahedralEncode(normal)), packHalf2x16(key.rg), packHalf2x16(vec2(key.b, 0.0)),
+            sums.pixelClass == kEveryClass ? 1u
+                                           : (sums.pixelClass == kClassesElsewhere ? 2u + sums.slot : 0u)));
 }
 
 #endif

@@ -9,6 +9,7 @@
 // for by the mean of the classes found (the sum scaled by k*k over their number). The sum is
 // multiplied back by p's albedo key. A pixel that evaluated every class (a glossy metal:
 // gi/vpl_interleave_data.glsl) keeps its own sum and is no sample.
+#include "gi/every_class.glsl"
 #include "gi/vpl_interleave_data.glsl"
 #include "shared/gpu_types.h"
 
@@ -40,8 +41,18 @@ void main() {
   uvec4 centreKey = imageLoad(vplSurfaceKey, p);
   vec3 normal = octahedralDecode(unpackSnorm2x16(centreKey.x));
   vec3 key = vec3(unpackHalf2x16(centreKey.y), unpackHalf2x16(centreKey.z).x);
-  if (centreKey.w != 0u) {  // it evaluated every class itself (a glossy metal)
+  if (centreKey.w == 1u) {  // it evaluated every class itself (a glossy metal)
     imageStore(hdr, p, imageLoad(hdr, p) + vec4(centre.rgb * key, 0.0));
+    return;
+  }
+  if (centreKey.w >= 2u) {  // vpl-classes lit its classes in slot w - 2, in class order
+    uint first = (centreKey.w - 2u) * kVplClasses;
+    vec3 classes = vec3(0.0);
+    for (uint c = 0u; c < kVplClasses; ++c) {
+      uvec2 light = everyClassLight[first + c];
+      classes += vec3(unpackHalf2x16(light.x), unpackHalf2x16(light.y).x);
+    }
+    imageStore(hdr, p, imageLoad(hdr, p) + vec4(classes, 0.0));
     return;
   }
   vec3 position = viewPosition(p, centre.w);

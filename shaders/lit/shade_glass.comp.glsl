@@ -2,7 +2,7 @@
 // nearest kGlassLayers of them, lit through the technique's lighting interface and blended over the
 // lit frame farthest first, as the raster path's premultiplied blend does draw by draw. A workgroup
 // shades a group of 8x8 pixels (one of lll's lists per layer), only those with glass.
-#include "common/glass_data.glsl"
+#include "common/glass_layers.glsl"
 #include "common/lighting.glsl"
 #define LLL_DISPLAY_FROM_SHADING
 #include "post/display.glsl"
@@ -11,65 +11,30 @@ layout(local_size_x = kTileGroupSize, local_size_y = kTileGroupSize) in;
 
 layout(set = 0, binding = 13, rgba16f) uniform image2D hdr;
 
-// Whether fragment a (at depth da) blends after fragment b: nearer, or at the same depth first in
-// the order of their contents, which does not depend on the order the fragments were stored in.
-bool nearerGlass(uint a, float da, uint b, float db) {
-  if (da != db) return da < db;
-  GlassFragment fa = glassFragments[a], fb = glassFragments[b];
-  vec4 ka[3] = vec4[3](fa.unlitRoughness, fa.baseColorMetallic, fa.normalAlpha);
-  vec4 kb[3] = vec4[3](fb.unlitRoughness, fb.baseColorMetallic, fb.normalAlpha);
-  for (int i = 0; i < 3; ++i)
-    for (int c = 0; c < 4; ++c)
-      if (ka[i][c] != kb[i][c]) return ka[i][c] < kb[i][c];
-  return false;  // the same surface: either order blends the same
+// The light on a layer: its lights walked here, or glass-light's parts added up in part order.
+vec3 layerLight(Surface s, uvec2 pixel, float viewDepth, uint node) {
+  if (kGlassLightParts == 0u) return lightSurface(s, pixel, viewDepth);
+  vec3 sum = vec3(0.0);
+  for (uint part = 0u; part < kGlassLightParts; ++part) sum += glassLight[node * kGlassLightParts + part].rgb;
+  return sum;
 }
 
 // Pixel `pixel`'s glass over what is behind it; its list head cleared for the next frame.
 void shadeGlassPixel(uvec2 pixel) {
-  // The nearest kGlassLayers fragments, nearest first (insertion: lists are short).
-  uint nodes[kGlassLayers];
-  float depths[kGlassLayers];
-  uint count = 0u, listed = 0u;
-  uint headIndex = pixel.y * uint(frame.viewport.x) + pixel.x;
-  uint link = glassHeads[headIndex];
+  uint headIndex = glassHeadIndex(pixel);
+  uint nodes[kGlassLayers], listed;
+  uint count = nearestGlassLayers(glassHeads[headIndex], nodes, listed);
   glassHeads[headIndex] = kGlassListEnd;
-  uint capacity = min(glassCounters.fragments, glassCounters.capacity);
-  while (link != kGlassListEnd && link < capacity && listed < capacity) {
-    float depth = glassFragments[link].positionDepth.w;
-    ++listed;
-    uint at = count < kGlassLayers ? count : kGlassLayers;
-    while (at > 0u && nearerGlass(link, depth, nodes[at - 1u], depths[at - 1u])) {
-      if (at < kGlassLayers) {
-        depths[at] = depths[at - 1u];
-        nodes[at] = nodes[at - 1u];
-      }
-      --at;
-    }
-    if (at < kGlassLayers) {
-      depths[at] = depth;
-      nodes[at] = link;
-      count = min(count + 1u, kGlassLayers);
-    }
-    link = glassNext[link];
-  }
   if (listed == 0u) return;
   atomicMax(glassCounters.deepest, listed);
   vec4 color = imageLoad(hdr, ivec2(pixel));
   for (uint i = count; i-- > 0u;) {
     GlassFragment f = glassFragments[nodes[i]];
-    Surface s;
-    s.position = f.positionDepth.xyz;
-    s.view = normalize(frame.cameraPosition.xyz - s.position);
-    s.normal = f.normalAlpha.xyz;
-    s.alpha = f.normalAlpha.w;
-    s.baseColor = f.baseColorMetallic.rgb;
-    s.metallic = f.baseColorMetallic.w;
-    s.roughness = f.unlitRoughness.w;
-    s.occlusion = 1.0;
-    s.emissive = vec3(0.0);
+    Surface s = glassSurface(f);
+    float depth = f.positionDepth.w;
     bool replaced;
     vec3 lit =
-        lightingView(s, pixel, depths[i], f.unlitRoughness.rgb + lightSurface(s, pixel, depths[i]), replaced);
+        lightingView(s, pixel, depth, f.unlitRoughness.rgb + layerLight(s, pixel, depth, nodes[i]), replaced);
     float alpha = replaced ? 1.0 : s.alpha;
     color = vec4(lit * alpha, alpha) + color * (1.0 - alpha);  // premultiplied over
   }
@@ -79,8 +44,6 @@ void shadeGlassPixel(uvec2 pixel) {
 
 // One workgroup per group of 8x8 pixels with glass (listed by glass-groups).
 void main() {
-  uint group = glassGroupWords[glassGroupListed(gl_WorkGroupID.x)];
-  uint across = glassGroupsAcross();
-  uvec2 pixel = uvec2(group % across, group / across) * kTileGroupSize + gl_LocalInvocationID.xy;
+  uvec2 pixel = glassGroupOrigin() + gl_LocalInvocationID.xy;
   if (pixel.x < uint(frame.viewport.x) && pixel.y < uint(frame.viewport.y)) shadeGlassPixel(pixel);
 }

@@ -73,7 +73,8 @@ void main() {
   vec3 color = vec3(0.0);
   LightSums sums = startSums(pixel);
 #ifdef LLL_INTERLEAVED_VPLS
-  if (covered && evaluatesEveryClass(s.metallic, s.roughness)) sums.pixelClass = kEveryClass;
+  if (covered && evaluatesEveryClass(s.metallic, s.roughness))
+    placeEveryClassPixel(sums, pixel, s, viewDepth);
 #endif
 #ifdef LIGHTING_EVERY_LIGHT
   lightFromChunks(s, covered, sums);
@@ -82,7 +83,9 @@ void main() {
 #ifdef LLL_INTERLEAVED_VPLS
     // Only the lights this pixel evaluates where the interface keeps the classes apart (lll's lists).
     LightCursor cursor = sums.pixelClass == kEveryClass ? lightsAt(pixel, viewDepth)
-                                                        : lightsAtInClass(pixel, viewDepth, sums.pixelClass);
+                         : sums.pixelClass == kClassesElsewhere
+                             ? lightsAtPart(pixel, viewDepth, 0u)
+                             : lightsAtInClass(pixel, viewDepth, sums.pixelClass);
 #else
     LightCursor cursor = lightsAt(pixel, viewDepth);
 #endif

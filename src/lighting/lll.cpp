@@ -340,7 +340,8 @@ LightingInterface LightLinkedList::lighting() const {
                 .storage(6, counters_.handle())
                 .storage(7, tileRange_.handle());
           },
-          {&heads_, &links_, &tileRange_}};
+          {&heads_, &links_, &tileRange_},
+          classes_};
 }
 
 // The heads and counters are emptied by the tile-depth pass (lighting/lll/tile_depth.comp); only the

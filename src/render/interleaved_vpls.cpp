@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "gpu/context.h"
 #include "render/gpu_scene.h"
 #include "scene/errors.h"
@@ -27,9 +29,24 @@ uint32_t vplInterleaveIn(const GpuScene& scene, OpaqueShading opaque, uint32_t r
   return vpls && opaque == OpaqueShading::Visibility ? requested : 1u;
 }
 
-InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, uint32_t side)
-    : context_(context), side_(side) {
+InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, uint32_t side,
+                                 bool classesElsewhere)
+    : context_(context), side_(side), classesElsewhere_(classesElsewhere) {
   checkVplInterleave(side);
+  // Slots for an eighth of the pixels: in a frame with more glossy metal the rest walk every class
+  // themselves (the same light, slower).
+  if (classesElsewhere_) slots_ = std::max(1u, targets.width * targets.height / 8);
+  const uint32_t classes = side_ * side_;
+  requireStorageBufferFits(context, uint64_t(slots_) * classes, 8, "the glossy metals' VPL light per class",
+                           "slots x classes", "use a lower resolution or a smaller --vpl-interleave");
+  constexpr VkBufferUsageFlags kSlots = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  header_ = Buffer(context, sizeof(gpu::EveryClassHeader),
+                   kSlots | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                   MemoryUse::Device, "glossy metal slots' header");
+  surfaces_ = Buffer(context, uint64_t(slots_) * sizeof(gpu::EveryClassSurface), kSlots, MemoryUse::Device,
+                     "glossy metal slots' surfaces");
+  light_ = Buffer(context, uint64_t(slots_) * classes * 8, kSlots, MemoryUse::Device,
+                  "glossy metal slots' light per class");
   constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT;
   indirect_ = Image(context, targets.width, targets.height, VK_FORMAT_R16G16B16A16_SFLOAT, kStorage,
                     "interleaved VPL light");
@@ -40,7 +57,28 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
 }
 
 std::vector<ResourceUse> InterleavedVpls::shadingWrites() const {
-  return {uses(indirect_, Use::StorageWrite, kCompute), uses(key_, Use::StorageWrite, kCompute)};
+  return {uses(indirect_, Use::StorageWrite, kCompute), uses(key_, Use::StorageWrite, kCompute),
+          uses(header_, Use::StorageReadWrite, kCompute), uses(surfaces_, Use::StorageWrite, kCompute)};
+}
+
+void InterleavedVpls::resetSlots(FrameContext& frame) {
+  frame.graph.step({uses(header_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
+    const gpu::EveryClassHeader start{0, side_ * side_, 1, 0, slots_, 0, 0, 0};
+    vkCmdUpdateBuffer(cmd, header_.handle(), 0, sizeof(start), &start);
+  });
+}
+
+std::vector<ResourceUse> InterleavedVpls::classesUses() const {
+  return {uses(header_, Use::IndirectRead), uses(header_, Use::StorageRead, kCompute),
+          uses(surfaces_, Use::StorageRead, kCompute), uses(light_, Use::StorageWrite, kCompute)};
+}
+
+DescriptorWriter& InterleavedVpls::bindSlots(DescriptorWriter& writer) const {
+  return writer.storage(44, header_.handle()).storage(45, surfaces_.handle()).storage(46, light_.handle());
+}
+
+void InterleavedVpls::dispatchClasses(VkCommandBuffer cmd) const {
+  vkCmdDispatchIndirect(cmd, header_.handle(), 0);
 }
 
 DescriptorWriter& InterleavedVpls::bindImages(DescriptorWriter& writer) const {
@@ -57,22 +95,25 @@ void InterleavedVpls::dispatch(VkCommandBuffer cmd, const FrameTargets& targets)
 
 void InterleavedVpls::filter(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
-  frame.graph.pass("vpl-filter",
-                   {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::StorageRead, kCompute),
-                    uses(key_, Use::StorageRead, kCompute)},
-                   [&](VkCommandBuffer cmd) {
-                     filter_.bind(cmd);
-                     DescriptorWriter writer;
-                     writer.storage(0, frame.uniformBuffer.handle())
-                         .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
-                     bindImages(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-                     dispatchPerPixel(cmd, t);
-                   });
+  frame.graph.pass(
+      "vpl-filter",
+      {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::StorageRead, kCompute),
+       uses(key_, Use::StorageRead, kCompute), uses(light_, Use::StorageRead, kCompute)},
+      [&](VkCommandBuffer cmd) {
+        filter_.bind(cmd);
+        DescriptorWriter writer;
+        writer.storage(0, frame.uniformBuffer.handle())
+            .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
+        bindSlots(bindImages(writer)).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+        dispatchPerPixel(cmd, t);
+      });
 }
 
 std::vector<std::pair<std::string, double>> InterleavedVpls::stats() const {
   const double pixels = double(indirect_.width()) * indirect_.height();
-  return {{"vpl-interleave", double(side_)}, {"vpl_interleave_bytes", pixels * (8.0 + 16.0)}};
+  return {{"vpl-interleave", double(side_)},
+          {"vpl_interleave_bytes",
+           pixels * (8.0 + 16.0) + double(header_.size() + surfaces_.size() + light_.size())}};
 }
 
 }  // namespace lll

@@ -9,7 +9,11 @@
 // within K-1 pixels that lie on the same surface and adds the sum times the pixel's albedo key.
 // Each pixel evaluates a K*K-th of the VPLs; the light is smoothed over at most 2K-1 pixels and
 // does not cross depth or normal edges. Only the opaque shading from the visibility buffer takes
-// part: glass and particles still evaluate every VPL.
+// part: glass and particles still evaluate every VPL. Glossy metals evaluate every class
+// (gi/vpl_interleave_data.glsl): where the lighting interface keeps the classes apart
+// (`classesElsewhere`, lll's class lists) shade-opaque gives each such pixel a slot and the
+// "vpl-classes" pass lights its classes on a workgroup each (shared/every_class_types.h); else
+// the pixel walks them all itself.
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -19,6 +23,7 @@
 #include "gpu/resources.h"
 #include "render/frame.h"
 #include "render/lighting_interface.h"
+#include "shared/every_class_types.h"
 
 namespace lll {
 
@@ -31,13 +36,22 @@ uint32_t vplInterleaveIn(const GpuScene& scene, OpaqueShading opaque, uint32_t r
 
 class InterleavedVpls {
  public:
-  InterleavedVpls(Context& context, const FrameTargets& targets, uint32_t side);
+  InterleavedVpls(Context& context, const FrameTargets& targets, uint32_t side, bool classesElsewhere);
 
   uint32_t side() const { return side_; }
-  // The pattern's side, for the shading pass and the filter (constant_id 33).
-  SpecializationConstants constants() const { return {{33, side_}}; }
-  // The opaque pass's writes to the per-pixel images (bindings 38 and 39).
+  bool classesElsewhere() const { return classesElsewhere_; }
+  // The pattern's side and whether vpl-classes runs, for the shading passes and the filter
+  // (constant_id 33, 62).
+  SpecializationConstants constants() const { return {{33, side_}, {62, classesElsewhere_ ? 1u : 0u}}; }
+  // The opaque pass's writes to the per-pixel images and the slots (bindings 38, 39, 44, 45).
   std::vector<ResourceUse> shadingWrites() const;
+  // Empties the slots (before the opaque pass), with classesElsewhere().
+  void resetSlots(FrameContext& frame);
+  // What vpl-classes reads and writes besides the light data, its bindings (44 to 46) and its
+  // indirect dispatch.
+  std::vector<ResourceUse> classesUses() const;
+  DescriptorWriter& bindSlots(DescriptorWriter& writer) const;
+  void dispatchClasses(VkCommandBuffer cmd) const;
   DescriptorWriter& bindImages(DescriptorWriter& writer) const;
   // The shading pass's grid: each 8x8 workgroup shades pixels of one class
   // (gi/interleaved_vpls.glsl's interleavedPixel).
@@ -51,7 +65,13 @@ class InterleavedVpls {
   Context& context_;
   uint32_t side_;
   Image indirect_;  // RGBA16F: the class's VPL light over the albedo key, w view depth (-1: none)
-  Image key_;       // RGBA32UI: x the view-space normal (octahedral, snorm16 x 2), y z the albedo key
+  Image key_;       // RGBA32UI: x the view-space normal (octahedral, snorm16 x 2), y z the albedo key,
+                    // w 0, 1 for a pixel that evaluated every class, 2 + its slot for vpl-classes'
+  bool classesElsewhere_ = false;
+  uint32_t slots_ = 1;  // glossy-metal pixels vpl-classes can take; the rest evaluate in place
+  Buffer header_;       // gpu::EveryClassHeader: vpl-classes' dispatch, the slots taken
+  Buffer surfaces_;     // gpu::EveryClassSurface per slot
+  Buffer light_;        // per slot and class, rgb as halves
   PipelineLayout layout_;
   Pipeline filter_;
 };

@@ -18,6 +18,9 @@ struct LightingInterface {
   std::function<void(DescriptorWriter&)> bind = [](DescriptorWriter&) {};
   // The buffers it reads, for the frame graph.
   std::vector<const Buffer*> buffers;
+  // How many parts a point's lights split into (lightListParts() in shaders/common/lighting.glsl:
+  // lll's heads with --vpl-interleave), which the compute glass lights on as many workgroups.
+  uint32_t listParts = 1;
 
   // What a lit pass reading the light data in `stages` declares.
   std::vector<ResourceUse> reads(VkPipelineStageFlags2 stages) const {

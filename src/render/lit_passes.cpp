@@ -12,6 +12,7 @@ namespace lll {
 namespace {
 // post/display.glsl's kWritesDisplay.
 constexpr uint32_t kWritesDisplayConstant = 60;
+constexpr uint32_t kGlassLightPartsConstant = 61;  // common/glass_layers.glsl
 }  // namespace
 
 LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets& targets,
@@ -33,9 +34,16 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
     opaqueConstants.merge(visibility->surfaceConstants(scene));
     std::string shader = litShader(lighting_, "shade_visibility.comp");
     if (interleave > 1) {
-      interleaved_ = std::make_unique<InterleavedVpls>(context, targets, interleave);
+      interleaved_ = std::make_unique<InterleavedVpls>(context, targets, interleave, lighting_.listParts > 1);
       opaqueConstants.merge(interleaved_->constants());
       shader = litShader(lighting_, "shade_visibility_interleaved.comp");
+      if (interleaved_->classesElsewhere()) {
+        SpecializationConstants classConstants = constants;
+        classConstants.merge(interleaved_->constants());
+        const std::string classes = litShader(lighting_, "vpl_classes.comp");
+        vplClassesLayout_ = PipelineLayout(context, {classes});
+        vplClasses_ = Pipeline(context, vplClassesLayout_, classes, classConstants);
+      }
     }
     shader = visibility->surfaceShader(shader);
     computeLayout_ = PipelineLayout(context, {shader}, {scene.textureTableLayout()}, opaqueConstants);
@@ -77,9 +85,17 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
   glassFragmentsLayout_ =
       PipelineLayout(context, {"common/mesh.vert", desc.fragmentShader}, {scene.materialSetLayout()});
   glassFragments_ = Pipeline(context, glassFragmentsLayout_, desc);
+  // Lights in parts (LightingInterface::listParts): glass-light lights each on workgroups of its own.
+  glassParts_ = std::max(lighting_.listParts, 1u);
+  constants[kGlassLightPartsConstant] = glassParts_ > 1 ? glassParts_ : 0u;
   const std::string shader = litShader(lighting_, "shade_glass.comp");
   glassLayout_ = PipelineLayout(context, {shader});
   glassCompute_ = Pipeline(context, glassLayout_, shader, constants);
+  if (glassParts_ > 1) {
+    const std::string parts = litShader(lighting_, "shade_glass_parts.comp");
+    glassLightLayout_ = PipelineLayout(context, {parts});
+    glassLight_ = Pipeline(context, glassLightLayout_, parts, constants);
+  }
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   const uint64_t pixels = uint64_t(targets.width) * targets.height;
   requireStorageBufferFits(context, pixels, 4, "the glass fragments' list heads", "pixels",
@@ -88,7 +104,7 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
   const uint64_t groups = uint64_t(divideRoundingUp(targets.width, gpu::kTileGroupSize)) *
                           divideRoundingUp(targets.height, gpu::kTileGroupSize);
   glassGroups_ = Buffer(context, groups * 8, storage, MemoryUse::Device, "glass groups");
-  glassDispatch_ = Buffer(context, sizeof(gpu::GlassGroupDispatch),
+  glassDispatch_ = Buffer(context, 2 * sizeof(gpu::GlassGroupDispatch),
                           storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryUse::Device, "glass dispatch");
   glassGroupsLayout_ = PipelineLayout(context, {"common/glass_groups.comp"});
   glassGroupsPipeline_ = Pipeline(context, glassGroupsLayout_, "common/glass_groups.comp");
@@ -106,6 +122,13 @@ void LitPasses::allocateGlassPool(uint64_t fragments) {
                        MemoryUse::Device, "glass fragments");
   glassNext_ = Buffer(context_, fragments * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device,
                       "glass fragment links");
+  // A vec4 per fragment and part (one, unread, without parts: the glass pass's layout has it).
+  const uint64_t lightSlots = glassParts_ > 1 ? fragments * glassParts_ : 1;
+  requireStorageBufferFits(context_, lightSlots, 16, "the glass fragments' light per part",
+                           "fragments x parts",
+                           "use a lower resolution, a smaller --vpl-interleave or --glass raster");
+  glassPartLight_ = Buffer(context_, lightSlots * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device,
+                           "glass light per part");
 }
 
 DescriptorWriter& LitPasses::bindGlassLists(DescriptorWriter& writer) const {
@@ -129,8 +152,8 @@ void LitPasses::shadeGlassInCompute(FrameContext& frame) {
                        vkCmdFillBuffer(cmd, glassHeads_.handle(), 0, VK_WHOLE_SIZE, gpu::kGlassListEnd);
                        vkCmdFillBuffer(cmd, glassGroups_.handle(), 0, VK_WHOLE_SIZE, 0);
                      }
-                     const gpu::GlassGroupDispatch none{0, 1, 1, 0};
-                     vkCmdUpdateBuffer(cmd, glassDispatch_.handle(), 0, sizeof(none), &none);
+                     const gpu::GlassGroupDispatch none[2] = {{0, 1, 1, 0}, {0, glassParts_, 1, 0}};
+                     vkCmdUpdateBuffer(cmd, glassDispatch_.handle(), 0, sizeof(none), none);
                      const gpu::GlassCounters start{0, uint32_t(glassCapacity_), 0, 0};
                      vkCmdUpdateBuffer(cmd, glassCounters_.handle(), 0, sizeof(start), &start);
                    });
@@ -166,19 +189,37 @@ void LitPasses::shadeGlassInCompute(FrameContext& frame) {
                                              divideRoundingUp(t.height, gpu::kTileGroupSize);
                      vkCmdDispatch(cmd, divideRoundingUp(groups, 64u), 1, 1);
                    });
+  if (glassParts_ > 1)
+    frame.graph.pass(
+        "glass-light",
+        std::vector<ResourceUse>{
+            uses(glassDispatch_, Use::IndirectRead), uses(glassGroups_, Use::StorageRead, kCompute),
+            uses(glassHeads_, Use::StorageRead, kCompute), uses(glassNodes_, Use::StorageRead, kCompute),
+            uses(glassNext_, Use::StorageRead, kCompute), uses(glassCounters_, Use::StorageRead, kCompute),
+            uses(glassPartLight_, Use::StorageWrite, kCompute)} +
+            lighting_.reads(kCompute),
+        [&](VkCommandBuffer cmd) {
+          glassLight_.bind(cmd);
+          DescriptorWriter writer = litDescriptors(frame);
+          bindGlassLists(writer)
+              .storage(43, glassPartLight_.handle())
+              .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, glassLightLayout_);
+          vkCmdDispatchIndirect(cmd, glassDispatch_.handle(), sizeof(gpu::GlassGroupDispatch));
+        });
   frame.graph.pass(
       "glass",
       std::vector<ResourceUse>{
           uses(t.hdr, Use::StorageReadWrite, kCompute), uses(t.ldr, Use::StorageWrite, kCompute),
           uses(glassDispatch_, Use::IndirectRead), uses(glassGroups_, Use::StorageReadWrite, kCompute),
           uses(glassHeads_, Use::StorageReadWrite, kCompute), uses(glassNodes_, Use::StorageRead, kCompute),
-          uses(glassNext_, Use::StorageRead, kCompute),
+          uses(glassNext_, Use::StorageRead, kCompute), uses(glassPartLight_, Use::StorageRead, kCompute),
           uses(glassCounters_, Use::StorageReadWrite, kCompute)} +
           lighting_.reads(kCompute),
       [&](VkCommandBuffer cmd) {
         glassCompute_.bind(cmd);
         DescriptorWriter writer = litDescriptors(frame);
         bindGlassLists(writer)
+            .storage(43, glassPartLight_.handle())
             .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
             .image(40, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
             .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, glassLayout_);
@@ -243,6 +284,7 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
                        });
       return;
     case OpaqueShading::Visibility:
+      if (interleaved_ && interleaved_->classesElsewhere()) interleaved_->resetSlots(frame);
       // Every pixel written whole, from its rebuilt surface.
       frame.graph.pass("shade-opaque",
                        std::vector<ResourceUse>{uses(t.hdr, Use::StorageWrite, kCompute),
@@ -255,12 +297,21 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
                          frame.visibility->bindSurfaceData(writer, frame);
                          writer.image(40, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.ldr.view(),
                                       VK_IMAGE_LAYOUT_GENERAL);
-                         if (interleaved_) interleaved_->bindImages(writer);
+                         if (interleaved_) interleaved_->bindSlots(interleaved_->bindImages(writer));
                          const VkDescriptorSet textures = frame.scene.textureTable();
                          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, computeLayout_.handle(),
                                                  1, 1, &textures, 0, nullptr);
                          dispatch(frame, cmd, writer);
                        });
+      if (interleaved_ && interleaved_->classesElsewhere())
+        frame.graph.pass("vpl-classes", interleaved_->classesUses() + lighting_.reads(kCompute),
+                         [&](VkCommandBuffer cmd) {
+                           vplClasses_.bind(cmd);
+                           DescriptorWriter writer = litDescriptors(frame);
+                           interleaved_->bindSlots(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                                                                vplClassesLayout_);
+                           interleaved_->dispatchClasses(cmd);
+                         });
       if (interleaved_) interleaved_->filter(frame);
       return;
   }
@@ -304,12 +355,13 @@ std::vector<std::pair<std::string, double>> LitPasses::stats() const {
     s.insert(s.end(), {{"gbuffer-bytes-per-pixel", GBuffer::kBytesPerPixel},
                        {"gbuffer_bytes", GBuffer::kBytesPerPixel * pixels_}});
   if (computeGlass_)
-    s.insert(s.end(), {{"glass-fragments", double(lastGlass_.fragments)},
-                       {"glass-fragment-capacity", double(glassCapacity_)},
-                       {"glass-deepest-pixel", double(lastGlass_.deepest)},
-                       {"glass-pool-overflows", double(glassOverflows_)},
-                       {"glass_bytes", double(glassHeads_.size() + glassNodes_.size() + glassNext_.size() +
-                                              glassGroups_.size() + glassDispatch_.size())}});
+    s.insert(s.end(),
+             {{"glass-fragments", double(lastGlass_.fragments)},
+              {"glass-fragment-capacity", double(glassCapacity_)},
+              {"glass-deepest-pixel", double(lastGlass_.deepest)},
+              {"glass-pool-overflows", double(glassOverflows_)},
+              {"glass_bytes", double(glassHeads_.size() + glassNodes_.size() + glassNext_.size() +
+                                     glassGroups_.size() + glassDispatch_.size() + glassPartLight_.size())}});
   return s;
 }
 

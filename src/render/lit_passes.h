@@ -7,11 +7,14 @@
 //   glass          blended primitives at their own depth, farthest first: with --glass compute
 //                  (the default) a "glass-fragments" geometry pass stores each pixel's glass
 //                  fragments, "glass-groups" lists the 8x8-pixel groups that have some, and a
-//                  compute pass lights and blends them there (shared/glass_types.h);
+//                  compute pass lights and blends them there (shared/glass_types.h); where the
+//                  lighting interface splits a point's lights into parts (lll's VPL classes),
+//                  "glass-light" lights each part of those groups on workgroups of its own first;
 //                  with --glass raster a geometry pass lights each fragment and blends it
 //   vpl-filter     with --vpl-interleave K > 1, a scene with VPLs and opaque surfaces from the
 //                  visibility buffer: shade-opaque evaluates a K*K-th of the VPLs per pixel and this
-//                  gathers the rest (render/interleaved_vpls.h)
+//                  gathers the rest (render/interleaved_vpls.h); before it, where the interface
+//                  keeps the classes apart (lll), "vpl-classes" lights the glossy metals' classes
 // (particles are drawn by the particle system with the same interface: particles/particle_system.h).
 // Where shade-opaque and the compute glass write the frame's last colours (writesDisplay()), they
 // also write its display image (post/display.glsl), and the renderer records no tonemap pass.
@@ -70,6 +73,9 @@ class LitPasses {
   Pipeline compute_;
   std::unique_ptr<GBuffer> gbuffer_;
   std::unique_ptr<InterleavedVpls> interleaved_;
+  // vpl-classes (InterleavedVpls::classesElsewhere): the glossy metals' VPL classes.
+  PipelineLayout vplClassesLayout_;
+  Pipeline vplClasses_;
   VkSampler depthSampler_ = VK_NULL_HANDLE;
   PipelineLayout meshLayout_;
   Pipeline geometryOpaque_;
@@ -87,6 +93,11 @@ class LitPasses {
   Pipeline glassFragments_;
   PipelineLayout glassLayout_;
   Pipeline glassCompute_;
+  // LightingInterface::listParts > 1: glass-light's pipeline and its light per fragment and part.
+  uint32_t glassParts_ = 1;
+  PipelineLayout glassLightLayout_;
+  Pipeline glassLight_;
+  Buffer glassPartLight_;
   Buffer glassHeads_, glassNodes_, glassNext_, glassCounters_;
   // A flag per 8x8-pixel group with glass fragments, then the list of those groups (glass-groups
   // makes it, and the glass pass's indirect dispatch, glassDispatch_, from the flags and clears

@@ -34,6 +34,14 @@ LightCursor lightsAtInClass(uvec2 pixel, float viewDepth, uint vplClass) {
   return cursor;
 }
 
+// Each of a list's heads is a part (common/lighting.glsl; LightingInterface::listParts is
+// listClasses()): the lights before the VPLs, then each class of VPLs with --vpl-interleave.
+#define LIGHTING_LIST_PARTS
+LightCursor lightsAtPart(uvec2 pixel, float viewDepth, uint part) {
+  uint head = listIndexOf(tileIndexOf(pixel), viewDepth) * listClasses() + part;
+  return LightCursor(tileHeads[head], 0u, viewDepth, head + 1u, 0u);
+}
+
 // One link at a time, each read where it is followed. Reading ahead was measured slower twice on
 // the H200: three consecutive links with the current one (b19e4e6: 1M lights' shading 2.70 -> 2.77
 // ms) and the next link loaded while a light is evaluated (2026-12-01: 12-25% slower, 5,144 VPLs

@@ -1,0 +1,38 @@
+// The glossy metals' VPL classes lit elsewhere (shared/every_class_types.h): shade-opaque takes the
+// slots (EVERY_CLASS_PLACE), vpl-classes lights them (EVERY_CLASS_LIGHT), vpl-filter reads the light.
+#ifndef LLL_EVERY_CLASS_GLSL
+#define LLL_EVERY_CLASS_GLSL
+#include "shared/every_class_types.h"
+
+// Whether vpl-classes lights the glossy metals' classes (else each such pixel walks them all).
+layout(constant_id = 62) const bool kVplClassesPass = false;
+
+#if defined(EVERY_CLASS_PLACE)
+#define EVERY_CLASS_HEADER_ACCESS
+#define EVERY_CLASS_SURFACE_ACCESS writeonly
+#else
+#define EVERY_CLASS_HEADER_ACCESS readonly
+#define EVERY_CLASS_SURFACE_ACCESS readonly
+#endif
+#if defined(EVERY_CLASS_LIGHT)
+#define EVERY_CLASS_LIGHT_ACCESS writeonly
+#else
+#define EVERY_CLASS_LIGHT_ACCESS readonly
+#endif
+
+#if defined(EVERY_CLASS_PLACE) || defined(EVERY_CLASS_LIGHT)
+layout(std430, set = 0, binding = 44) EVERY_CLASS_HEADER_ACCESS buffer EveryClassHeaderBlock {
+  EveryClassHeader everyClass;
+};
+layout(std430, set = 0, binding = 45) EVERY_CLASS_SURFACE_ACCESS buffer EveryClassSurfaceBlock {
+  EveryClassSurface everyClassSurfaces[];
+};
+#endif
+#if !defined(EVERY_CLASS_PLACE)
+// Each slot's light per class (slot * K*K + class), rgb as halves.
+layout(std430, set = 0, binding = 46) EVERY_CLASS_LIGHT_ACCESS buffer EveryClassLightBlock {
+  uvec2 everyClassLight[];
+};
+#endif
+
+#endif

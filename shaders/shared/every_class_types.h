@@ -1,0 +1,37 @@
+// --vpl-interleave where the lighting interface keeps each class of VPLs apart (lll's class
+// lists, LightingInterface::listParts > 1), shared by C++ and GLSL: shade-opaque lights a glossy
+// metal pixel, which must have every class (gi/vpl_interleave_data.glsl), by the lights before the
+// VPLs only, and places its surface in a slot; "vpl-classes" lights each slot's classes on
+// workgroups of their own (one class each); vpl-filter adds them up. Written once here; see
+// shared.h for the rules.
+#ifndef LLL_EVERY_CLASS_TYPES_H
+#define LLL_EVERY_CLASS_TYPES_H
+#include "shared/shared.h"
+
+LLL_NAMESPACE_BEGIN
+
+// vpl-classes' indirect dispatch (x groups of 64 slots, y the classes, z 1), then the slots.
+struct EveryClassHeader {
+  uint groups;    // workgroups of 64 slots: one more each time a slot that is a multiple of 64 is taken
+  uint classes;   // K*K
+  uint one;       // 1
+  uint pixels;    // slots asked for, also past `capacity` (those pixels evaluate every class in place)
+  uint capacity;  // slots the buffers hold
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+LLL_CHECK_SIZE(EveryClassHeader, 32);
+
+// A slot: the surface as the lights need it.
+struct EveryClassSurface {
+  vec4 positionDepth;       // world position, view depth
+  vec4 normalMetallic;      // shading normal, metallic
+  vec4 baseColorRoughness;  // base colour, roughness
+  uvec4 pixel;              // x: the pixel, x | y << 16
+};
+LLL_CHECK_SIZE(EveryClassSurface, 64);
+
+LLL_NAMESPACE_END
+
+#endif
