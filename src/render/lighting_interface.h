@@ -18,8 +18,9 @@ struct LightingInterface {
   std::function<void(DescriptorWriter&)> bind = [](DescriptorWriter&) {};
   // The buffers it reads, for the frame graph.
   std::vector<const Buffer*> buffers;
-  // How many parts a point's lights split into (lightListParts() in shaders/common/lighting.glsl:
-  // lll's heads with --vpl-interleave), which the compute glass lights on as many workgroups.
+  // How many parts a point's lights split into (lightsAtPart() in shaders/common/lighting.glsl:
+  // lll's heads with --vpl-interleave): glass-light lights them and vpl-classes the glossy metals'
+  // VPL classes on a workgroup each (render/lit_passes.h).
   uint32_t listParts = 1;
 
   // What a lit pass reading the light data in `stages` declares.
