@@ -79,7 +79,7 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(CLI::IsMember({"shells", "ray", "compute"}));
   cmd.add_option("--lll-fill-splits", s.lllFillSplits,
                  "compute fill: workgroups sharing each 8x8-tile cell's lights (1 to 64; 0: a quarter of the "
-                 "light count from 16 to 64, never more than the lights; 64 on a CPU device)")
+                 "light count from 4 to 64; 64 on a CPU device)")
       ->check(CLI::Range(0u, 64u));
   cmd.add_option(
          "--lll-slices", s.lllSlices,

@@ -47,17 +47,20 @@ inline uint32_t cellSplitsFor(const Context& context, uint32_t lights) {
   if (context.isCpuDevice()) return kMaxCellSplits;
   return std::clamp<uint32_t>((lights + 1023) / 1024, 1, kMaxCellSplits);
 }
-// lll's compute fill: a quarter as many workgroups a cell as there are lights, from 16 to 64 (and
-// no more than there are lights). With one a cell, 1080p at tile 16 is 135 workgroups of 64
-// invocations, each testing all its cell's lights against its tiles in turn: far too few to fill an
-// H200. Measured there at tile 16, 1080p (bench/README.md, 2026-12-03), fill ms at 16 / 32 / 64
-// splits: the atrium's 110 lights 0.027 / 0.028 / 0.036; + 1,024 lights 0.100 / 0.069 / 0.061;
-// + 4,096 small ones 0.183 / 0.126 / 0.094; + 131,072 tiny ones 1.52 / 0.83 / 0.59; ThreeL's 256
-// 0.173 / 0.164 / 0.097; the atrium's 7,489 VPLs (K = 3) 1.43 / 1.26 / 1.19. One a cell, 4 and 8
-// were slower still (the atrium + 1,024: 0.345, 0.209, 0.137).
+// lll's compute fill: a quarter as many workgroups a cell as there are lights, from 4 to 64. With one
+// a cell, 1080p at tile 16 is 135 workgroups of 64 invocations, each testing all its cell's lights
+// against its tiles in turn: far too few to fill an H200. Measured there at tile 16, 1080p
+// (bench/README.md, 2026-12-03), fill ms at 16 / 32 / 64 splits: the atrium's 110 lights 0.027 /
+// 0.028 / 0.036; + 1,024 lights 0.100 / 0.069 / 0.061; + 4,096 small ones 0.183 / 0.126 / 0.094;
+// + 131,072 tiny ones 1.52 / 0.83 / 0.59; ThreeL's 256 0.173 / 0.164 / 0.097; the atrium's 7,489
+// VPLs (K = 3) 1.43 / 1.26 / 1.19. One a cell, 4 and 8 were slower still (the atrium + 1,024: 0.345,
+// 0.209, 0.137). Few lights take fewer: each part pushes its own links, so a list is as many runs of
+// consecutive links as parts, and ThreeL's 16 lights walk 16 scattered links at 16 parts, one run
+// of 4 at 4: shade-opaque 0.243 -> 0.239 ms (4K 0.935 -> 0.913), the fill 0.019 -> 0.022 (4K 0.044
+// -> 0.039); at 1 part the fill costs more than that saves (0.042).
 inline uint32_t lllFillSplitsFor(const Context& context, uint32_t lights) {
   if (context.isCpuDevice()) return kMaxCellSplits;
-  return std::min(std::clamp<uint32_t>(lights / 4, 16, kMaxCellSplits), std::max<uint32_t>(lights, 1));
+  return std::clamp<uint32_t>(lights / 4, 4, kMaxCellSplits);
 }
 
 class LightBins {
