@@ -14,8 +14,8 @@
 //   LightCursor lightsAtPart(uvec2 pixel, float viewDepth, uint part);
 //                                   part `part` of lightsAt's lights, of as many disjoint parts as
 //                                   the C++ side's LightingInterface::listParts says, so that
-//                                   several workgroups can walk one point's lights (the compute
-//                                   glass); by default one part, all of them
+//                                   several workgroups can walk one point's lights (glass-light,
+//                                   vpl-classes); by default one part, all of them
 // and cmake/EmbedShaders.cmake compiles every template with every interface.
 #ifndef LLL_LIGHTING_GLSL
 #define LLL_LIGHTING_GLSL

@@ -1,7 +1,8 @@
 // glass (--glass compute): each pixel's glass fragments (stored by common/glass_fragments.frag), the
 // nearest kGlassLayers of them, lit through the technique's lighting interface and blended over the
 // lit frame farthest first, as the raster path's premultiplied blend does draw by draw. A workgroup
-// shades a group of 8x8 pixels (one of lll's lists per layer), only those with glass.
+// shades a group of 8x8 pixels, only those with glass: it walks each layer's lights itself, or,
+// where the interface splits them into parts (kGlassLightParts), adds up what glass-light lit.
 #include "common/glass_layers.glsl"
 #include "common/lighting.glsl"
 #define LLL_DISPLAY_FROM_SHADING

@@ -68,10 +68,12 @@ class InterleavedVpls {
   Image key_;       // RGBA32UI: x the view-space normal (octahedral, snorm16 x 2), y z the albedo key,
                     // w 0, 1 for a pixel that evaluated every class, 2 + its slot for vpl-classes'
   bool classesElsewhere_ = false;
-  uint32_t slots_ = 1;  // glossy-metal pixels vpl-classes can take; the rest evaluate in place
-  Buffer header_;       // gpu::EveryClassHeader: vpl-classes' dispatch, the slots taken
-  Buffer surfaces_;     // gpu::EveryClassSurface per slot
-  Buffer light_;        // per slot and class, rgb as halves
+  // Glossy-metal pixels vpl-classes can take; the rest evaluate in place. One without
+  // classesElsewhere(): the shading and filter shaders declare the slots' buffers either way.
+  uint32_t slots_ = 1;
+  Buffer header_;    // gpu::EveryClassHeader: vpl-classes' dispatch, the slots taken
+  Buffer surfaces_;  // gpu::EveryClassSurface per slot
+  Buffer light_;     // per slot and class, rgb as halves
   PipelineLayout layout_;
   Pipeline filter_;
 };
