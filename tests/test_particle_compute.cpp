@@ -8,6 +8,7 @@
 #include <string>
 
 #include "particle_test_support.h"
+#include "test_presets_json.h"
 
 namespace lll {
 namespace {
@@ -79,9 +80,9 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 // 40,000 puffs on 64 x 36 pixels (four by three tiles): each tile's list is cut in slabs of the
-// draw order a slab holds more particles than the shared sort takes
-// (sorted in place in the entry array), and the first frame's entry array (64 a tile, or one a particle) is
-// too small, so the frame is drawn again with a larger one.
+// draw order, a slab holds more particles than the shared sort takes (they are marked in a bitmap
+// of the slab's keys and read back in order), and the first frame's entry array (64 a tile, or one
+// a particle) is too small, so the frame is drawn again with a larger one.
 TEST(ComputeParticles, CrowdedTilesAndAGrownEntryArray) {
   const ComputeCase c{"smoke", "vertex", "lll"};
   const ParticleFrame raster = renderWith(c, "raster", 64, 36, 40000);
@@ -95,7 +96,7 @@ TEST(ComputeParticles, CrowdedTilesAndAGrownEntryArray) {
   const double used = stat(compute.image, "particle_tile_entries_used");
   EXPECT_LE(used, stat(compute.image, "particle_tile_entries_capacity"));
   EXPECT_GT(stat(compute.image, "particle_tile_longest"), double(gpu::kParticleTileSharedSort))
-      << "no tile needed the in-place sort";
+      << "no tile needed the bitmap";
   test::expectWithinBound(compute.image.ldr, raster.image.ldr, kCrowdedBound,
                           "compute particles crowded tiles");
 }
@@ -147,6 +148,35 @@ TEST(ComputeParticles, SlabsSharedOutToSeveralWorkgroups) {
   EXPECT_EQ(stat(many.image, "particle_tile_groups"), double(gpu::kParticleMaxGroups));
   EXPECT_EQ(stat(one.image, "particle_tile_groups"), 1.0);
   test::expectWithinBound(many.image.ldr, one.image.ldr, test::kSmokeBound, "every group a tile against one");
+}
+
+// A fog of large, nearly opaque puffs filling the view: every tile turns opaque in the nearest
+// group's slabs. The groups behind it stop once they see that and write nothing; particles-resolve
+// stops at the opaque group, so the image is one group's. Lavapipe runs the groups in order, so
+// there some must stop (a resolve that read on past the opaque group would take the layers no one
+// wrote this frame; a composite that never stopped would not count any).
+TEST(ComputeParticles, GroupsBehindAnOpaqueTileStop) {
+  static const Scene scene = loadScene(SceneRequest{"atrium", 0, 1});
+  nlohmann::json fog = stillPreset();
+  fog["count"] = 20000;
+  fog["emitter"] = {{"shape", "sphere"}, {"radius", 1.5}, {"offset", {0, 1.5, 0}}};
+  fog["size"] = {1.5};
+  fog["opacity"] = {0.9};
+  RenderSettings settings = settingsFor("lll", 128, 72);
+  settings.camera = "0,1.5,4,0,1.5,0";
+  settings.particles = writePreset(fog, "opaque-fog");
+  settings.particleLighting = "vertex";
+  settings.particleRender = "compute";
+  settings.particleResolution = "half";
+  const ParticleFrame many = renderParticles(scene, settings, 60);
+  settings.particleTileGroups = 1;
+  const ParticleFrame one = renderParticles(scene, settings, 60);
+  std::filesystem::remove(settings.particles);
+  EXPECT_GT(stat(many.image, "particle_tile_groups"), 1.0);
+  if (gpuContext().isCpuDevice()) EXPECT_GT(stat(many.image, "particle_tile_groups_stopped"), 0.0);
+  EXPECT_EQ(stat(one.image, "particle_tile_groups_stopped"), 0.0);
+  test::expectWithinBound(many.image.ldr, one.image.ldr, test::kSmokeBound,
+                          "opaque fog, every group against one");
 }
 
 // No atomic decides a colour: entries are sorted by key before blending. Lit by forward, whose

@@ -1,18 +1,19 @@
 // particles-composite (--particle-render compute): one workgroup per tile of the particles' tile
 // grid, one invocation per pixel. The tile's particles come in slabs of the draw order, nearest
-// first (ParticleTileHeader); each slab's are sorted nearest first (in shared memory, or in their
-// own range of tileEntries when there are more than kParticleTileSharedSort), staged
-// kParticleTileSize^2 at a time in shared memory, and blended front to back:
+// first (ParticleTileHeader); each slab's are put in order nearest first (sorted in shared memory,
+// or, when there are more than kParticleTileSharedSort, marked in a bitmap of the slab's keys that
+// is read in order), staged kParticleTileSize^2 at a time in shared memory, and blended front to
+// back:
 //   colour += transmittance * radiance * alpha;  transmittance *= 1 - alpha * (1 - additive)
 // which is the raster path's premultiplied back-to-front blend reordered, so both make the same
 // image. The tile's slabs are shared out to tileHeader.groups workgroups (the z of the dispatch),
 // each blending its own run into (colour, transmittance) for particles-resolve. A pixel stops once
-// less than kOpaqueTransmittance of the light behind it gets through, the group once all its
-// pixels have.
+// less than kParticleOpaqueTransmittance of the light behind it gets through, the group once all its
+// pixels have, and the groups behind it once they see that (tileGroupOpaque).
 // Specialization constant 0 says where the light comes from: 1 each pixel walks the technique's
 // lights (pixel lighting), 2 the particle's light atlas (atlas lighting), 0 the particle's own
 // radiance is complete (vertex lighting, or unlit).
-#define PARTICLE_TILES_SORT_WRITE
+#define PARTICLE_TILES_LONGEST_WRITE
 #define PARTICLE_LAYERS_WRITE
 #include "particles/scatter_lights.glsl"
 
@@ -37,12 +38,22 @@ layout(std430, set = 0, binding = 36) writeonly buffer ParticleLayersBehindBlock
   uvec2 particleLayersBehind[];
 };
 
-const uint kThreads = kParticleTileSize * kParticleTileSize;
-// The error this leaves is at most this share of what lies behind the pixel: far below the fp16
-// target's own rounding of the raster path's blends.
-const float kOpaqueTransmittance = 1.0 / 1024.0;
+// Per tile and group: 1 once the group made every pixel of its tile opaque (cleared each frame by
+// particles-bin). Groups behind it stop reading their slabs when they see it: particles-resolve
+// stops at the first group that leaves a pixel opaque, so it never reads what they left, and the
+// image does not depend on when they saw it.
+layout(std430, set = 0, binding = 47) coherent buffer ParticleTileOpaqueBlock {
+  uint tileGroupOpaque[];
+};
 
+const uint kThreads = kParticleTileSize * kParticleTileSize;
+
+// A slab's keys in order: sorted (at most kParticleTileSharedSort of them), or as a bitmap of the
+// slab's range of keys (bit k of word w: key base + 32 w + k), which holds every slab's range:
+// a slab spans at most ceil(kMaxParticles / kParticleMaxSlabs) keys (checked in particle_tiles.cpp).
 shared uint sortedKeys[kParticleTileSharedSort];
+// With the bitmap: the set bits before each invocation's run of words.
+shared uint runRanks[kParticleTileSize * kParticleTileSize];
 // A staged particle in two parts, the part every pixel reads and the part covered pixels read.
 struct ParticleShape {
   vec4 centre;
@@ -57,6 +68,7 @@ struct ParticleLook {
 shared ParticleShape stagedShape[kThreads];
 shared ParticleLook stagedLook[kThreads];
 shared uint finishedPixels;
+shared bool opaqueInFront;  // a group in front of this one made the whole tile opaque
 
 // The pair (a < b) that comparison `i` of one step of a bitonic sort compares, for blocks of `k`
 // and distance `j` (j == k / 2: the step that compares mirrored elements, so every block ends
@@ -70,61 +82,115 @@ uvec2 bitonicPair(uint i, uint k, uint j) {
   return uvec2(a, a + j);
 }
 
-// Puts the smaller of keys a < b first: in sortedKeys, or in tileEntries.
-void orderKeys(bool inShared, uint a, uint b) {
-  if (inShared) {
-    uint ka = sortedKeys[a], kb = sortedKeys[b];
-    if (ka > kb) {
-      sortedKeys[a] = kb;
-      sortedKeys[b] = ka;
-    }
-  } else {
-    uint ka = tileEntries[a], kb = tileEntries[b];
-    if (ka > kb) {
-      tileEntries[a] = kb;
-      tileEntries[b] = ka;
-    }
-  }
-}
-
-// Sorts `count` keys ascending from `first`: of sortedKeys when `inShared` (the same in every
-// invocation), else of tileEntries.
-void sortKeys(bool inShared, uint first, uint count) {
+// Sorts the first `count` keys of sortedKeys ascending (the same in every invocation).
+void sortKeys(uint count) {
   uint n = 2u;
   while (n < count) n <<= 1u;
   for (uint k = 2u; k <= n; k <<= 1u)
     for (uint j = k / 2u; j > 0u; j >>= 1u) {
       for (uint i = gl_LocalInvocationIndex; i < n / 2u; i += kThreads) {
         uvec2 ab = bitonicPair(i, k, j);
-        if (ab.y < count) orderKeys(inShared, first + ab.x, first + ab.y);
+        if (ab.y < count) {
+          uint ka = sortedKeys[ab.x], kb = sortedKeys[ab.y];
+          if (ka > kb) {
+            sortedKeys[ab.x] = kb;
+            sortedKeys[ab.y] = ka;
+          }
+        }
       }
-      if (!inShared) memoryBarrierBuffer();
       barrier();
     }
+}
+
+// The first key of slab `slab` (keys k with k * slabs / visible == slab).
+uint slabFirstKey(uint slab, uint slabs, uint visible) {
+  return (slab * visible + slabs - 1u) / slabs;
+}
+
+// Words of the bitmap per invocation's run (at most kParticleTileSharedSort / kThreads).
+uint bitmapRun(uint words) {
+  return (words + kThreads - 1u) / kThreads;
+}
+
+// Marks the cell's `count` keys from `first` in the bitmap of keys from `base` on (`words` words),
+// and counts the set bits before each invocation's run (runRanks). Call it uniformly.
+void markKeys(uint first, uint count, uint base, uint words) {
+  for (uint w = gl_LocalInvocationIndex; w < words; w += kThreads) sortedKeys[w] = 0u;
+  barrier();
+  for (uint i = gl_LocalInvocationIndex; i < count; i += kThreads) {
+    uint k = tileEntries[first + i] - base;
+    if (k < words * 32u) atomicOr(sortedKeys[k >> 5u], 1u << (k & 31u));
+  }
+  barrier();
+  uint run = bitmapRun(words);
+  uint begin = gl_LocalInvocationIndex * run, end = min(begin + run, words);
+  uint bits = 0u;
+  for (uint w = begin; w < end; ++w) bits += uint(bitCount(sortedKeys[w]));
+  runRanks[gl_LocalInvocationIndex] = bits;
+  barrier();
+  // Hillis-Steele inclusive scan of the runs' counts, then made exclusive.
+  for (uint offset = 1u; offset < kThreads; offset <<= 1u) {
+    uint add = gl_LocalInvocationIndex >= offset ? runRanks[gl_LocalInvocationIndex - offset] : 0u;
+    barrier();
+    runRanks[gl_LocalInvocationIndex] += add;
+    barrier();
+  }
+  uint inclusive = runRanks[gl_LocalInvocationIndex];
+  barrier();
+  runRanks[gl_LocalInvocationIndex] = inclusive - bits;
+  barrier();
+}
+
+// The key of rank `rank` (0: the nearest) in the bitmap markKeys made.
+uint keyOfRank(uint rank, uint base, uint words) {
+  // The last run with fewer set bits before it than `rank` + 1 holds it.
+  uint low = 0u, high = kThreads - 1u;
+  while (low < high) {
+    uint middle = (low + high + 1u) / 2u;
+    if (runRanks[middle] <= rank)
+      low = middle;
+    else
+      high = middle - 1u;
+  }
+  uint left = rank - runRanks[low];
+  uint run = bitmapRun(words);
+  for (uint w = low * run; w < min(low * run + run, words); ++w) {
+    uint word = sortedKeys[w];
+    uint bits = uint(bitCount(word));
+    if (left < bits) {
+      for (uint i = 0u; i < left; ++i) word &= word - 1u;  // drop the lowest set bits
+      return base + w * 32u + uint(findLSB(word));
+    }
+    left -= bits;
+  }
+  return base;  // not reached: the ranks count the bits
 }
 
 // Blends cell `cell`'s particles into the pixel, nearest first (barriers: call it uniformly): into
 // `front` (colour, transmittance), or with glass into `behind` those behind glassViewDepth.
 // `pixel` is in particle pixels, `framePixel` the frame pixel at its centre (for the lights).
 void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, float glassViewDepth,
-               uint visible, inout vec4 front, inout vec4 behind, inout bool finished) {
+               uint visible, uint slab, inout vec4 front, inout vec4 behind, inout bool finished) {
   uvec2 range = particleTileRange(cell);
   uint count = range.y;
   if (count == 0u) return;
   if (gl_LocalInvocationIndex == 0u) atomicMax(tileHeader.longest, count);
   bool sortedHere = count <= kParticleTileSharedSort;
+  uint slabs = tileHeader.cellsX;
+  uint base = slabFirstKey(slab, slabs, visible);
+  uint words = (slabFirstKey(slab + 1u, slabs, visible) - base + 31u) / 32u;
   if (sortedHere) {
     for (uint i = gl_LocalInvocationIndex; i < count; i += kThreads) sortedKeys[i] = tileEntries[range.x + i];
     barrier();
-    sortKeys(true, 0u, count);
+    sortKeys(count);
   } else {
-    sortKeys(false, range.x, count);
+    markKeys(range.x, count, base, words);
   }
   vec2 pixelCentre = vec2(pixel) + 0.5;
   for (uint start = 0u; start < count; start += kThreads) {
     uint index = start + gl_LocalInvocationIndex;
     if (index < count) {
-      uint key = sortedHere ? sortedKeys[index] : tileEntries[range.x + index];
+      uint key = sortedHere ? sortedKeys[index] : keyOfRank(index, base, words);
       uint order = visible - 1u - key;
       ParticleScreen s = particleScreen[order];
       stagedShape[gl_LocalInvocationIndex] = ParticleShape(s.centre, s.axes);
@@ -165,7 +231,7 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
       else
         front = layer;
       // Opaque in front: nothing behind shows; opaque behind: the front particles all came before.
-      if (layer.a < kOpaqueTransmittance) {
+      if (layer.a < kParticleOpaqueTransmittance) {
         finished = true;
         atomicAdd(finishedPixels, 1u);
       }
@@ -199,7 +265,10 @@ void main() {
   uvec2 framePixel = min(uvec2(pixel) * scale + scale / 2u, uvec2(frame.viewport.xy) - 1u);
   float sceneViewDepth = inside ? particlePixelDepth(sceneDepth, pixel) : 0.0;
   float glassViewDepth = inside && kBehindGlass ? particlePixelDepth(glassDepth, pixel) : 0.0;
-  if (gl_LocalInvocationIndex == 0u) finishedPixels = 0u;
+  if (gl_LocalInvocationIndex == 0u) {
+    finishedPixels = 0u;
+    opaqueInFront = false;
+  }
   barrier();
   bool finished = !inside;
   if (finished) atomicAdd(finishedPixels, 1u);
@@ -210,11 +279,24 @@ void main() {
   uint group = gl_WorkGroupID.z;
   uint firstSlab = group * slabs / tileHeader.groups, endSlab = (group + 1u) * slabs / tileHeader.groups;
   for (uint slab = firstSlab; slab < endSlab && finishedPixels < kThreads; ++slab) {
-    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, front, behind,
-              finished);
+    if (group > 0u) {
+      if (gl_LocalInvocationIndex == 0u) {
+        bool seen = false;
+        for (uint g = 0u; g < group && !seen; ++g) seen = tileGroupOpaque[tile * tileHeader.groups + g] != 0u;
+        opaqueInFront = seen;
+        if (seen) atomicAdd(tileHeader.stopped, 1u);
+      }
+      barrier();
+      if (opaqueInFront) break;  // the same in every invocation
+    }
+    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, slab, front,
+              behind, finished);
     barrier();
   }
-  if (!inside) return;
+  if (gl_LocalInvocationIndex == 0u && finishedPixels == kThreads)
+    tileGroupOpaque[tile * tileHeader.groups + group] = 1u;
+  // Stopped for a group in front: particles-resolve never reads this group here.
+  if (!inside || (group > 0u && opaqueInFront)) return;
   uint index = particleLayerIndex(group, pixel);
   particleLayers[index] = uvec2(packHalf2x16(front.rg), packHalf2x16(front.ba));
   if (kBehindGlass) particleLayersBehind[index] = uvec2(packHalf2x16(behind.rg), packHalf2x16(behind.ba));

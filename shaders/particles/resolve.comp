@@ -13,15 +13,28 @@ layout(set = 0, binding = 16) uniform sampler2D sceneDepth;
 layout(set = 0, binding = 21, rgba16f) uniform image2D hdr;
 layout(set = 0, binding = 24, r32f) uniform readonly image2D particleLayerDepth;
 
-// Colour (rgb) and transmittance (a) of all groups at particle pixel `pixel`.
+// The other layer with glass in the scene (the front one when this resolves the one behind, and the
+// other way round); without glass, the same one.
+layout(std430, set = 0, binding = 36) readonly buffer OtherParticleLayerBlock {
+  uvec2 otherParticleLayers[];
+};
+
+// Colour (rgb) and transmittance (a) of the groups at particle pixel `pixel`, front to back up to the
+// first that left either layer opaque there: a group behind it may have stopped early once it saw
+// the whole tile opaque (particles-composite), so what it left is never read; what it held is hidden.
 vec4 particlePixel(ivec2 pixel) {
   vec3 colour = vec3(0.0);
-  float transmittance = 1.0;
+  float transmittance = 1.0, other = 1.0;
   for (uint g = 0u; g < tileHeader.groups; ++g) {
-    uvec2 packed = particleLayers[particleLayerIndex(g, pixel)];
+    uint index = particleLayerIndex(g, pixel);
+    uvec2 packed = particleLayers[index];
     vec2 ba = unpackHalf2x16(packed.y);
     colour += transmittance * vec3(unpackHalf2x16(packed.x), ba.x);
     transmittance *= ba.y;
+    other *= unpackHalf2x16(otherParticleLayers[index].y).y;
+    // A group's transmittance below kParticleOpaqueTransmittance is at most it once packed as a half,
+    // and a product of transmittances is at most each of them.
+    if (min(transmittance, other) <= kParticleOpaqueTransmittance) break;
   }
   return vec4(colour, transmittance);
 }

@@ -6,29 +6,29 @@
 #include "particles/puff.glsl"
 #include "shared/light_bins_types.h"
 
-// Written by particles-bin (PARTICLE_TILES_WRITE); the entries and the header also by the
-// composite (PARTICLE_TILES_SORT_WRITE): its in-place sort, and the longest tile.
+// Written by particles-bin (PARTICLE_TILES_WRITE); the header also by the composite
+// (PARTICLE_TILES_LONGEST_WRITE): the longest tile.
 #ifdef PARTICLE_TILES_WRITE
 #define PARTICLE_TILES_ACCESS
-#define PARTICLE_TILES_SORT_WRITE
+#define PARTICLE_TILES_LONGEST_WRITE
 #else
 #define PARTICLE_TILES_ACCESS readonly
 #endif
-#ifdef PARTICLE_TILES_SORT_WRITE
-#define PARTICLE_TILES_SORT_ACCESS
+#ifdef PARTICLE_TILES_LONGEST_WRITE
+#define PARTICLE_TILES_HEADER_ACCESS
 #else
-#define PARTICLE_TILES_SORT_ACCESS readonly
+#define PARTICLE_TILES_HEADER_ACCESS readonly
 #endif
 
-layout(std430, set = 0, binding = 17) PARTICLE_TILES_SORT_ACCESS buffer ParticleTileHeaderBlock {
+layout(std430, set = 0, binding = 17) PARTICLE_TILES_HEADER_ACCESS buffer ParticleTileHeaderBlock {
   ParticleTileHeader tileHeader;
 };
 layout(std430, set = 0, binding = 18) PARTICLE_TILES_ACCESS buffer ParticleTileCellBlock {
   LightBinCell tileCells[];
 };
-// Each tile's particles as keys (visible - 1 - draw order: the nearest first); the composite pass
-// sorts a tile's range in place when it is too long for shared memory, hence coherent.
-layout(std430, set = 0, binding = 19) coherent PARTICLE_TILES_SORT_ACCESS buffer ParticleTileEntryBlock {
+// Each tile's particles as keys (visible - 1 - draw order: the nearest first), in the order the
+// scatter's atomics gave them (the composite puts each cell's in order).
+layout(std430, set = 0, binding = 19) PARTICLE_TILES_ACCESS buffer ParticleTileEntryBlock {
   uint tileEntries[];
 };
 layout(std430, set = 0, binding = 20) PARTICLE_TILES_ACCESS buffer ParticleScreenBlock {

@@ -76,8 +76,8 @@ LLL_CHECK_SIZE(ParticleCounters, 48);
 
 // The tiled compute renderer (--particle-render compute, src/particles/particle_tiles.cpp): the
 // screen in square tiles of kParticleTileSize pixels, one workgroup each; a tile's particles are
-// sorted front to back in shared memory when at most kParticleTileSharedSort, in the tile's own
-// range of the entry array otherwise, and blended kParticleTileSize^2 at a time.
+// put in order front to back in shared memory (sorted when at most kParticleTileSharedSort, else
+// marked in a bitmap of 32 x kParticleTileSharedSort keys), and blended kParticleTileSize^2 at a time.
 LLL_CONST(uint, kParticleTileSize, 16u);
 LLL_CONST(uint, kParticleTileSharedSort, 1024u);
 // Slabs a tile's list is cut into: one per kParticlesPerSlab particle slots, a power of two, at
@@ -89,6 +89,10 @@ LLL_CONST(uint, kParticleMaxSlabs, 64u);
 // Over is associative: each group blends its run of slabs into (colour, transmittance) and
 // particles-resolve combines the runs front to back.
 LLL_CONST(uint, kParticleMaxGroups, 8u);
+// A particle pixel is opaque once less than this share of the light behind it gets through: the
+// composite stops blending it, particles-resolve stops combining groups there. The error this leaves
+// is far below the fp16 target's own rounding of the raster path's blends; 2^-10 is exact as a half.
+LLL_CONST(float, kParticleOpaqueTransmittance, 1.0f / 1024.0f);
 
 // --particle-lighting atlas: each visible particle's light, per unit albedo, on a grid of
 // kParticleAtlasSide^2 texels over its quad (offsets -1..1 along the camera's right and up),
@@ -119,7 +123,7 @@ struct ParticleTileHeader {
   uint groups;      // workgroups per tile, each blending its own run of slabs (particleLayers)
   uint layerWidth;  // particle pixels across and down
   uint layerHeight;
-  uint pad;
+  uint stopped;  // groups that stopped because a group in front made their whole tile opaque
 };
 LLL_CHECK_SIZE(ParticleTileHeader, 48);
 

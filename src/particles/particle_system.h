@@ -140,13 +140,15 @@ class ParticleSystem {
     gpu::ParticleTileHeader header{};
     uint64_t maxEntries = 0;
     uint32_t lastRequested = 0;
-    uint32_t longestCell = 0;  // the most particles one tile's slab held in the last frame
+    uint32_t longestCell = 0;    // the most particles one tile's slab held in the last frame
+    uint32_t stoppedGroups = 0;  // groups that stopped at an opaque group in front, last frame
     uint32_t overflows = 0;
     Buffer headerBuffer;
     Buffer cells;
     Buffer entries;
     Buffer screen;
     Buffer layers;     // each tile group's colour and transmittance per particle pixel
+    Buffer opaque;     // per tile and group: 1 once the group made every pixel of its tile opaque
     Image layerDepth;  // below full resolution: the view depth each particle pixel was blended against
     // With glass, the same for the particles behind the nearest glass (the composite writes both).
     Buffer layersBehind;

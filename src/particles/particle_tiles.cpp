@@ -18,9 +18,12 @@
 // slab that made it opaque. With a million particles a tile may hold a hundred thousand; sorting
 // them all before blending the first cost most of the frame.
 // The entry array grows when a frame asked for more than it holds and the frame is drawn again
-// (afterFrame), as the light bins do: no particle is dropped. A tile's list longer than
-// kParticleTileSharedSort is sorted in place in the entry array instead of in shared memory:
-// slower, never wrong.
+// (afterFrame), as the light bins do: no particle is dropped.
+// A cell of more than kParticleTileSharedSort particles is not sorted: the composite marks its keys in
+// a bitmap of the slab's range of keys in shared memory and reads them back in order (the sort it
+// replaced, in place in the entry array, cost most of a million particles' composite on the H200).
+// A group that finds a group in front of it made its whole tile opaque stops and writes nothing
+// (tiles.opaque); particles-resolve stops combining at that group.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -39,6 +42,11 @@ namespace {
 static_assert(offsetof(gpu::ParticleTileHeader, requested) == offsetof(gpu::LightBinHeader, requested));
 static_assert(offsetof(gpu::ParticleTileHeader, cellsX) == offsetof(gpu::LightBinHeader, cellsX));
 static_assert(offsetof(gpu::ParticleTileHeader, cellsY) == offsetof(gpu::LightBinHeader, cellsY));
+// The composite's bitmap of a slab's keys (32 a word in kParticleTileSharedSort words) holds the
+// longest slab, ceil(visible / slabs) keys: below 2 x kParticlesPerSlab slots where the slabs are
+// bit_ceil(slots / kParticlesPerSlab), and kMaxParticles / kParticleMaxSlabs + 1 where they are capped.
+static_assert(gpu::kMaxParticles / gpu::kParticleMaxSlabs + 1 <= 32 * gpu::kParticleTileSharedSort);
+static_assert(2 * gpu::kParticlesPerSlab <= 32 * gpu::kParticleTileSharedSort);
 // Initial entries per tile (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerTile = 64;
 }  // namespace
@@ -77,6 +85,9 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
                            "use a lower resolution or --particle-resolution half");
   t.layers = Buffer(context_, layerBytes * t.header.groups, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                     MemoryUse::Device, "particle layers");
+  t.opaque = Buffer(context_, tiles * t.header.groups * sizeof(uint32_t),
+                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device,
+                    "particle tile groups opaque");
   if (frame.targets.glassDepth) {
     t.layersBehind = Buffer(context_, layerBytes * t.header.groups, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                             MemoryUse::Device, "particle layers behind glass");
@@ -130,14 +141,15 @@ void ParticleSystem::binTiles(FrameContext& frame) {
       uses(counters_, Use::IndirectRead), uses(counters_, Use::StorageRead, kCompute),
       uses(uniforms_, Use::StorageRead, kCompute), uses(particles_, Use::StorageRead, kCompute),
       uses(drawOrder_, Use::StorageRead, kCompute)};
-  std::vector<ResourceUse> clears{uses(t.headerBuffer, Use::TransferWrite),
-                                  uses(t.cells, Use::TransferWrite)};
+  std::vector<ResourceUse> clears{uses(t.headerBuffer, Use::TransferWrite), uses(t.cells, Use::TransferWrite),
+                                  uses(t.opaque, Use::TransferWrite)};
   if (radiance_) clears.push_back(uses(radiance_, Use::StorageRead, kCompute));
   frame.graph.pass("particles-bin", clears + particleReads, [&](VkCommandBuffer cmd) {
     gpu::ParticleTileHeader header = t.header;
     header.requested = 0;
     vkCmdUpdateBuffer(cmd, t.headerBuffer.handle(), 0, sizeof(header), &header);
     vkCmdFillBuffer(cmd, t.cells.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, t.opaque.handle(), 0, VK_WHOLE_SIZE, 0);
     DescriptorWriter writer = systemDescriptors(frame);
     // Read only with vertex lighting (specialization constant 1); a stand-in otherwise.
     if (!radiance_) writer.storage(15, t.screen.handle());
@@ -188,9 +200,10 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
                                 uses(uniforms_, Use::StorageRead, kCompute),
                                 uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
                                 uses(t.cells, Use::StorageRead, kCompute),
-                                uses(t.entries, Use::StorageReadWrite, kCompute),
+                                uses(t.entries, Use::StorageRead, kCompute),
                                 uses(t.screen, Use::StorageRead, kCompute),
                                 uses(t.layers, Use::StorageWrite, kCompute),
+                                uses(t.opaque, Use::StorageReadWrite, kCompute),
                                 uses(t.layerDepth, Use::StorageWrite, kCompute)};
   if (atlas_) used.push_back(uses(atlas_, Use::StorageRead, kCompute));
   if (behind) {
@@ -206,6 +219,7 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
         .storage(19, t.entries.handle())
         .storage(20, t.screen.handle())
         .storage(23, t.layers.handle())
+        .storage(47, t.opaque.handle())
         .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(), sampledLayout(depth),
                depthSampler_)
         .image(25, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, glass.view(), sampledLayout(glass),
@@ -226,18 +240,22 @@ void ParticleSystem::resolve(FrameContext& frame, ParticleLayer layer) {
   const Image& depth = particleSampledDepth(targets, layer);
   const bool behind = layer == ParticleLayer::BehindGlass;
   const Buffer& layers = behind ? t.layersBehind : t.layers;
+  // The other layer (without glass there is one: itself) says where the pixel turned opaque too.
+  const Buffer& otherLayers = behind ? t.layers : t.layersBehind ? t.layersBehind : t.layers;
   const Image& layerDepth = behind ? t.layerDepthBehind : t.layerDepth;
+  std::vector<ResourceUse> used{
+      uses(targets.hdr, Use::StorageReadWrite, kCompute), uses(depth, Use::Sampled, kCompute),
+      uses(t.headerBuffer, Use::StorageRead, kCompute), uses(layers, Use::StorageRead, kCompute),
+      uses(layerDepth, Use::StorageRead, kCompute)};
+  if (&otherLayers != &layers) used.push_back(uses(otherLayers, Use::StorageRead, kCompute));
   frame.graph.pass(
-      std::string("particles-resolve") + particlePassSuffix(layer),
-      {uses(targets.hdr, Use::StorageReadWrite, kCompute), uses(depth, Use::Sampled, kCompute),
-       uses(t.headerBuffer, Use::StorageRead, kCompute), uses(layers, Use::StorageRead, kCompute),
-       uses(layerDepth, Use::StorageRead, kCompute)},
-      [&](VkCommandBuffer cmd) {
+      std::string("particles-resolve") + particlePassSuffix(layer), used, [&](VkCommandBuffer cmd) {
         t.resolve.bind(cmd);
         DescriptorWriter()
             .storage(0, frame.uniformBuffer.handle())
             .storage(17, t.headerBuffer.handle())
             .storage(23, layers.handle())
+            .storage(36, otherLayers.handle())
             .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(), sampledLayout(depth),
                    depthSampler_)
             .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
@@ -255,6 +273,7 @@ bool ParticleSystem::afterFrame() {
   std::memcpy(&read, t.headerBuffer.mapped(), sizeof(read));
   t.lastRequested = read.requested;
   t.longestCell = read.longest;
+  t.stoppedGroups = read.stopped;
   if (read.requested <= t.header.capacity) return false;
   ++t.overflows;
   allocateTileEntries(grownCapacity(read.requested, t.maxEntries));
