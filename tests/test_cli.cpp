@@ -313,6 +313,17 @@ TEST_F(CliTest, RasterParticlesOnlyAtFullResolution) {
                  {"--particle-resolution", "eighth"});
 }
 
+// Tile groups belong to the compute renderer, 1 to kParticleMaxGroups of them.
+TEST_F(CliTest, ParticleTileGroupsOnlyForTheComputeRenderer) {
+  expectBadInput(render("atrium", {"--particles", "smoke", "--particle-render", "raster",
+                                   "--particle-tile-groups", "4"}),
+                 {"--particle-tile-groups 4", "compute"});
+  expectBadInput(render("atrium", {"--particles", "smoke", "--particle-tile-groups", "33"}),
+                 {"--particle-tile-groups", "33"});
+  expectBadInput(render("atrium", {"--particles", "smoke", "--particle-tile-groups", "0"}),
+                 {"--particle-tile-groups", "0"});
+}
+
 // The sun's shadow options: named with the value when out of range.
 TEST_F(CliTest, BadShadowOptions) {
   expectBadInput(render("plane", {"--shadows", "every"}), {"--shadows", "every"});

@@ -88,6 +88,7 @@ TEST_F(HostileCli, EveryWordOptionRejectsHostileValues) {
       {particles, "--particle-lighting"},
       {particles, "--particle-render"},
       {particles, "--particle-resolution"},
+      {particles, "--particle-tile-groups"},
       {particles, "--particle-emitter"},
       {render, "--shadows"},
       {render, "--shadow-filter"},

@@ -88,7 +88,7 @@ LLL_CONST(uint, kParticleMaxSlabs, 64u);
 // a plume may hold thousands of particles and one workgroup would hold up the frame blending them.
 // Over is associative: each group blends its run of slabs into (colour, transmittance) and
 // particles-resolve combines the runs front to back.
-LLL_CONST(uint, kParticleMaxGroups, 8u);
+LLL_CONST(uint, kParticleMaxGroups, 32u);
 // A particle pixel is opaque once less than this share of the light behind it gets through: the
 // composite stops blending it, particles-resolve stops combining groups there. The error this leaves
 // is far below the fp16 target's own rounding of the raster path's blends; 2^-10 is exact as a half.

@@ -207,6 +207,12 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "(compute renderer)")
       ->check(CLI::IsMember({"full", "half", "quarter"}))
       ->needs(particles);
+  cmd.add_option("--particle-tile-groups", s.particleTileGroups,
+                 "compute renderer: workgroups each particle tile's slabs are shared out to, 1 to 32 "
+                 "(default: 1 at full resolution; below it slabs x scale / 8, a slab per 4,096 particle "
+                 "slots up to 64, scale 2 at half and 4 at quarter)")
+      ->check(CLI::Range(1u, 32u))
+      ->needs(particles);
   cmd.add_option("--particle-count", s.particleCount, "particle slots, overriding the preset's count")
       ->check(CLI::Range(1u, 1000000u))
       ->needs(particles);

@@ -38,6 +38,14 @@ std::optional<ParticleSystemOptions> particleOptions(const Scene& scene, const R
         fmt::format("--particle-resolution {}: only --particle-render compute (or auto) draws "
                     "particles below full resolution",
                     settings.particleResolution));
+  if (settings.particleTileGroups > gpu::kParticleMaxGroups)
+    throw InputError(fmt::format("--particle-tile-groups {}: a particle tile goes to 1 to {} workgroups",
+                                 settings.particleTileGroups, gpu::kParticleMaxGroups));
+  if (settings.particleTileGroups != 0 && options.render == ParticleRender::Raster)
+    throw InputError(
+        fmt::format("--particle-tile-groups {}: only --particle-render compute (or auto) "
+                    "shares particle tiles out to workgroups",
+                    settings.particleTileGroups));
   if (settings.particleCount > gpu::kMaxParticles)
     throw InputError(fmt::format("--particle-count {}: a particle system holds 1 to {} particles",
                                  settings.particleCount, gpu::kMaxParticles));

@@ -51,6 +51,18 @@ static_assert(2 * gpu::kParticlesPerSlab <= 32 * gpu::kParticleTileSharedSort);
 constexpr uint64_t kInitialEntriesPerTile = 64;
 }  // namespace
 
+// Groups below full resolution only, where a tile covers 4 or 16 times the frame pixels. On the H200,
+// settled smoke at 1080p (vertex-lit; every particle pass, ms, with 1 / 2 / 4 / 8 / 16 / 32 groups):
+//   65,536 (16 slabs): full 3.93 / 4.17 / 4.30 / 5.25, half - / - / 2.03 / 2.27 / 3.02,
+//                      quarter - / - / 1.59 / 1.47 / 1.86;
+//   a million (64):    half - / - / - / 11.19 / 11.16 / 13.84, quarter - / - / 14.85 / 9.84 / 8.66 / 8.75.
+// At full resolution the groups behind mostly blend what the front ones make opaque before they see
+// it; below it more particles share a tile and one group would hold up the frame.
+uint32_t defaultParticleTileGroups(uint32_t slabs, uint32_t scale) {
+  if (scale <= 1) return 1;
+  return std::clamp(slabs * scale / 8, 1u, gpu::kParticleMaxGroups);
+}
+
 void ParticleSystem::prepareTiles(const FrameContext& frame) {
   Tiles& t = tiles_;
   if (t.width == frame.targets.width && t.height == frame.targets.height) return;
@@ -72,12 +84,10 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
   t.header.cellsY = t.header.tilesX * t.header.tilesY;
   const uint64_t tiles = t.header.cellsY;
   const uint64_t cells = tiles * t.header.cellsX;
-  // Groups below full resolution only, where a tile covers 4 or 16 times the frame pixels: on the
-  // H200, 65,536 settled smoke particles at 1080p, the composite took 3.82 ms with one group and
-  // 5.25 with eight at full resolution (the groups behind blend what the front ones made opaque),
-  // 2.82 and 2.30 at half, 2.86 and 1.50 at quarter. As many as one storage buffer holds.
+  // As many as one storage buffer holds.
   const uint64_t layerBytes = uint64_t(layerWidth) * layerHeight * sizeof(glm::uvec2);
-  const uint64_t mostGroups = tileGroups_ ? tileGroups_ : resolutionScale_ > 1 ? gpu::kParticleMaxGroups : 1;
+  const uint64_t mostGroups =
+      tileGroups_ ? tileGroups_ : defaultParticleTileGroups(t.header.cellsX, resolutionScale_);
   t.header.groups = uint32_t(std::clamp<uint64_t>(
       std::min<uint64_t>({t.header.cellsX, mostGroups, storageBufferCapacity(context_, layerBytes)}), 1,
       gpu::kParticleMaxGroups));

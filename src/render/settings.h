@@ -58,11 +58,10 @@ struct RenderSettings {
   std::string particleLighting = "pixel";   // pixel | atlas | vertex
   std::string particleRender = "auto";      // auto | raster | compute
   std::string particleResolution = "full";  // full | half | quarter
-  uint32_t particleTileGroups =
-      0;                        // workgroups a particle tile's slabs go to; 0: the renderer's choice (tests)
-  uint32_t particleCount = 0;   // 0: the preset's own count
-  std::string particleEmitter;  // "x,y,z": where the emitter sits; empty: the scene's smoke source
-  uint32_t seed = 1;            // simulation seed (the CLI's --seed)
+  uint32_t particleTileGroups = 0;  // workgroups a particle tile's slabs go to; 0: the renderer's choice
+  uint32_t particleCount = 0;       // 0: the preset's own count
+  std::string particleEmitter;      // "x,y,z": where the emitter sits; empty: the scene's smoke source
+  uint32_t seed = 1;                // simulation seed (the CLI's --seed)
   // Shadows: sun (shadows/sun_shadows.h) | all (the sun and the --shadow-lights most important
   // local lights, shadows/local_shadows.h) | none; cascades, texels along a cascade's side, pcf | none
   // (one texel, nearest) for both.
