@@ -85,7 +85,9 @@ BrdfTerms brdfTerms(Surface s) {
 // darkens partly metallic surfaces (0.86x the specification at metallic 0.5).
 // The GGX distribution a2 / (pi dd^2), the Smith visibility 0.5 / sum and the 1 / q share one
 // reciprocal, and Schlick's (1 - vDotH)^5 is multiplied out: this runs once per light per pixel.
-vec3 brdfCosineOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q) {
+// brdfLobesOver gives the diffuse and specular lobes apart, before the factor nDotL.
+void brdfLobesOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q, out vec3 diffuseLobe,
+                   out vec3 specularLobe) {
   vec3 h = halfVector(l, s.view);
   float nDotH = max(dot(s.normal, h), 0.0);
   float vDotH = clamp(dot(s.view, h), 0.0, 1.0);  // rounding can exceed 1 when l == v
@@ -95,7 +97,14 @@ vec3 brdfCosineOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q) {
   float r = 1.0 / (q * dd * dd * sum);  // every factor > 0: nDotL, nDotV > 0, dd >= a2, q >= 1e-4
   vec3 diffuse = t.diffuse * ((1.0 - kDielectricF0) * (1.0 - schlick));  // 1 - the dielectric's F
   vec3 fresnel = t.f0 + (1.0 - t.f0) * schlick;
-  return (diffuse * (dd * dd * sum * r) + fresnel * (t.a2 * (0.5 / kPi) * r)) * nDotL;
+  diffuseLobe = diffuse * (dd * dd * sum * r);
+  specularLobe = fresnel * (t.a2 * (0.5 / kPi) * r);
+}
+
+vec3 brdfCosineOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q) {
+  vec3 diffuseLobe, specularLobe;
+  brdfLobesOver(s, t, l, nDotL, q, diffuseLobe, specularLobe);
+  return (diffuseLobe + specularLobe) * nDotL;
 }
 
 // BRDF * cos(theta_l) for light arriving from unit direction l.
@@ -204,24 +213,47 @@ float shadowedAttenuation(GpuLight light, vec3 position, vec3 normal, vec3 toLig
   return attenuation;
 }
 
-// Radiance one light reflects from the surface towards the eye; `t` is brdfTerms(s), computed once
-// per surface by the loops over lights.
-vec3 evaluateLight(GpuLight light, Surface s, BrdfTerms t) {
+// Whether a light reaches the surface at all, and if so its direction `l`, nDotL, the inverse
+// square's denominator q and the window (range, cone or box, and the light's shadow).
+bool lightArrives(GpuLight light, Surface s, out vec3 l, out float nDotL, out float q, out float window) {
+  l = vec3(0.0);
+  nDotL = q = window = 0.0;
   vec3 toLight = light.positionRange.xyz - s.position;
   float distanceSquared = dot(toLight, toLight);
   float range = light.positionRange.w;
-  if (distanceSquared >= range * range) return vec3(0.0);
+  if (distanceSquared >= range * range) return false;
   float inverseDistance = inversesqrt(max(distanceSquared, 1e-12));
   float distance = distanceSquared * inverseDistance;
-  vec3 l = toLight * inverseDistance;
-  float nDotL = dot(s.normal, l);
-  if (nDotL <= 0.0) return vec3(0.0);
-  float q;
-  float window = lightWindow(light, toLight, l, distance, distanceSquared, q);
-  if (window <= 0.0) return vec3(0.0);
+  l = toLight * inverseDistance;
+  nDotL = dot(s.normal, l);
+  if (nDotL <= 0.0) return false;
+  window = lightWindow(light, toLight, l, distance, distanceSquared, q);
+  if (window <= 0.0) return false;
   if (kLocalShadows) window *= localShadow(light, s.position, s.normal, l, distance);
-  return brdfCosineOver(s, t, l, nDotL, max(q, 1e-4)) * light.colorIntensity.rgb *
-         (light.colorIntensity.w * window);
+  q = max(q, 1e-4);
+  return true;
+}
+
+// Radiance one light reflects from the surface towards the eye; `t` is brdfTerms(s), computed once
+// per surface by the loops over lights.
+vec3 evaluateLight(GpuLight light, Surface s, BrdfTerms t) {
+  vec3 l;
+  float nDotL, q, window;
+  if (!lightArrives(light, s, l, nDotL, q, window)) return vec3(0.0);
+  return brdfCosineOver(s, t, l, nDotL, q) * light.colorIntensity.rgb * (light.colorIntensity.w * window);
+}
+
+// The same radiance in its two lobes, diffuse + specular (the VPL filter scales only the diffuse by
+// the albedo: gi/interleaved_vpls.glsl).
+void evaluateLightLobes(GpuLight light, Surface s, BrdfTerms t, inout vec3 diffuse, inout vec3 specular) {
+  vec3 l;
+  float nDotL, q, window;
+  if (!lightArrives(light, s, l, nDotL, q, window)) return;
+  vec3 diffuseLobe, specularLobe;
+  brdfLobesOver(s, t, l, nDotL, q, diffuseLobe, specularLobe);
+  vec3 scale = light.colorIntensity.rgb * (light.colorIntensity.w * window * nDotL);
+  diffuse += diffuseLobe * scale;
+  specular += specularLobe * scale;
 }
 
 vec3 evaluateLight(GpuLight light, Surface s) {

@@ -2,9 +2,11 @@
 // k x k block of the screen split the VPLs k*k ways, each pixel evaluating only the VPLs of its
 // class (a VPL's class is its place among the VPLs, which end the light array, modulo k*k), and
 // gi/vpl_filter.comp adds up the classes of the neighbouring pixels that lie on the same surface.
-// A shading pass that includes this stores, per pixel, the class's sum divided by the surface's
-// albedo key (so that the filter carries light, not texture) and the key and normal the filter
-// compares.
+// A shading pass that includes this stores, per pixel, the class's sum in its two lobes, each
+// divided by the surface's reflectance for it (so that the filter carries light, not texture): the
+// diffuse by the albedo key, the specular by f0 (0.04 on every dielectric: dividing it by the
+// albedo too made the floor's texture edges the largest part of the filter's error at K = 4), and
+// the keys and normal the filter compares.
 #ifndef LLL_INTERLEAVED_VPLS_GLSL
 #define LLL_INTERLEAVED_VPLS_GLSL
 #include "common/brdf.glsl"
@@ -14,11 +16,14 @@
 
 layout(set = 0, binding = 38, rgba16f) uniform writeonly image2D vplIndirect;
 layout(set = 0, binding = 39, rgba32ui) uniform writeonly uimage2D vplSurfaceKey;
+layout(set = 0, binding = 48, rgba16f) uniform writeonly image2D vplSpecular;
 
-// The light sums of one pixel: everything but the VPLs, and the VPLs of the pixel's class.
+// The light sums of one pixel: everything but the VPLs, and the VPLs of the pixel's class (their
+// diffuse and specular lobes apart).
 struct InterleavedSums {
   vec3 direct;
   vec3 indirect;
+  vec3 indirectSpecular;
   uint pixelClass;
   uint slot;  // with pixelClass kClassesElsewhere: its slot (gi/every_class.glsl)
 };
@@ -38,7 +43,7 @@ const uint kEveryClass = 0xFFFFFFFFu;
 const uint kClassesElsewhere = 0xFFFFFFFEu;
 
 InterleavedSums startInterleavedSums(uvec2 pixel) {
-  return InterleavedSums(vec3(0.0), vec3(0.0), vplClassOfPixel(pixel), 0u);
+  return InterleavedSums(vec3(0.0), vec3(0.0), vec3(0.0), vplClassOfPixel(pixel), 0u);
 }
 
 // A pixel that must have every class: a slot for vpl-classes to light them in where it lights them
@@ -74,14 +79,17 @@ void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, Interle
   if (!lit) {
     imageStore(vplIndirect, ivec2(pixel), vec4(0.0, 0.0, 0.0, -1.0));
     imageStore(vplSurfaceKey, ivec2(pixel), uvec4(0u));
+    imageStore(vplSpecular, ivec2(pixel), vec4(0.0));
     return;
   }
   vec3 key = albedoKey(s.baseColor);
   vec3 normal = normalize(mat3(view) * s.normal);
   imageStore(vplIndirect, ivec2(pixel), vec4(sums.indirect / key, viewDepth));
+  imageStore(vplSpecular, ivec2(pixel), vec4(sums.indirectSpecular / specularKey(key, s.metallic), 0.0));
   imageStore(
       vplSurfaceKey, ivec2(pixel),
-      uvec4(packSnorm2x16(octahedralEncode(normal)), packHalf2x16(key.rg), packHalf2x16(vec2(key.b, 0.0)),
+      uvec4(packSnorm2x16(octahedralEncode(normal)), packHalf2x16(key.rg),
+            packHalf2x16(vec2(key.b, s.metallic)),
             sums.pixelClass == kEveryClass ? 1u
                                            : (sums.pixelClass == kClassesElsewhere ? 2u + sums.slot : 0u)));
 }

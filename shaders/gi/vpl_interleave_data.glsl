@@ -18,10 +18,16 @@ bool evaluatesEveryClass(float metallic, float roughness) {
   return metallic >= 0.5 && roughness <= 0.5;
 }
 
-// The light is divided by this before filtering and multiplied by the centre pixel's after: the
-// base colour, kept away from zero so that a black surface's specular survives the division.
+// The diffuse light is divided by this before filtering and multiplied by the centre pixel's after:
+// the base colour, kept away from zero so that a black surface's light survives the division.
 vec3 albedoKey(vec3 baseColor) {
   return max(baseColor, vec3(0.05));
+}
+
+// The same for the specular light: its reflectance at normal incidence, f0 = mix(0.04, base colour,
+// metallic) (common/brdf.glsl), with the albedo key for the base colour.
+vec3 specularKey(vec3 albedo, float metallic) {
+  return mix(vec3(0.04), albedo, metallic);
 }
 
 // A unit vector as two numbers in [-1, 1] (octahedral mapping).

@@ -25,13 +25,13 @@ layout(set = 0, binding = 13, rgba16f) uniform writeonly image2D hdr;
 #define startSums(pixel) startInterleavedSums(pixel)
 #define directOf(sums) sums.direct
 // Light `index` (its record `light`, read only where it counts) added to `sums`.
-#define addLight(sums, index, light, s)                                    \
-  {                                                                        \
-    uint role_ = interleavedRole(index, frame.display.w, sums.pixelClass); \
-    if (role_ == kLightDirect)                                             \
-      sums.direct += evaluateLight(light, s, terms);                       \
-    else if (role_ == kLightIndirect)                                      \
-      sums.indirect += evaluateLight(light, s, terms);                     \
+#define addLight(sums, index, light, s)                                          \
+  {                                                                              \
+    uint role_ = interleavedRole(index, frame.display.w, sums.pixelClass);       \
+    if (role_ == kLightDirect)                                                   \
+      sums.direct += evaluateLight(light, s, terms);                             \
+    else if (role_ == kLightIndirect)                                            \
+      evaluateLightLobes(light, s, terms, sums.indirect, sums.indirectSpecular); \
   }
 #else
 #define LightSums vec3

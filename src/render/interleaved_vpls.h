@@ -4,9 +4,11 @@
 // sample patterns"). The VPLs are split into K*K classes by their ordinal among the VPLs
 // (GpuLight's spotParams.y); the opaque pass (lit/shade_visibility_interleaved) lets each pixel
 // of a K x K block evaluate one class, writing the lights other than VPLs to hdr as usual and its
-// class's VPL light, divided by the surface's albedo key, to an image of its own; the "vpl-filter"
-// pass (gi/vpl_filter.comp) then sums, for each pixel, every class's mean over the neighbours
-// within K-1 pixels that lie on the same surface and adds the sum times the pixel's albedo key.
+// class's VPL light to images of their own: the diffuse lobe divided by the surface's albedo key,
+// the specular lobe as it is (it scales with f0, not the albedo); the "vpl-filter" pass
+// (gi/vpl_filter.comp) then sums, for each pixel, every class's mean over the neighbours within
+// K-1 pixels that lie on the same surface and adds the diffuse sum times the pixel's albedo key and
+// the specular sum.
 // Each pixel evaluates a K*K-th of the VPLs; the light is smoothed over at most 2K-1 pixels and
 // does not cross depth or normal edges. Only the opaque shading from the visibility buffer takes
 // part: glass and particles still evaluate every VPL. Glossy metals evaluate every class
@@ -43,7 +45,7 @@ class InterleavedVpls {
   // The pattern's side and whether vpl-classes runs, for the shading passes and the filter
   // (constant_id 33, 62).
   SpecializationConstants constants() const { return {{33, side_}, {62, classesElsewhere_ ? 1u : 0u}}; }
-  // The opaque pass's writes to the per-pixel images and the slots (bindings 38, 39, 44, 45).
+  // The opaque pass's writes to the per-pixel images and the slots (bindings 38, 39, 48, 44, 45).
   std::vector<ResourceUse> shadingWrites() const;
   // Empties the slots (before the opaque pass), with classesElsewhere().
   void resetSlots(FrameContext& frame);
@@ -64,8 +66,10 @@ class InterleavedVpls {
  private:
   Context& context_;
   uint32_t side_;
-  Image indirect_;  // RGBA16F: the class's VPL light over the albedo key, w view depth (-1: none)
-  Image key_;       // RGBA32UI: x the view-space normal (octahedral, snorm16 x 2), y z the albedo key,
+  Image indirect_;  // RGBA16F: the class's VPL diffuse light over the albedo key, w view depth (-1: none)
+  Image specular_;  // RGBA16F: the class's VPL specular light (not over the key: it is not the albedo's)
+  Image key_;       // RGBA32UI: x the view-space normal (octahedral, snorm16 x 2), y z the albedo key
+                    // and metallic (halves),
                     // w 0, 1 for a pixel that evaluated every class, 2 + its slot for vpl-classes'
   bool classesElsewhere_ = false;
   // Glossy-metal pixels vpl-classes can take; the rest evaluate in place. One without
