@@ -51,7 +51,7 @@ const uint kThreads = kParticleTileSize * kParticleTileSize;
 // A slab's keys in order: sorted (at most kParticleTileSharedSort of them), or as a bitmap of the
 // slab's range of keys (bit k of word w: key base + 32 w + k), which holds every slab's range:
 // a slab spans at most ceil(kMaxParticles / kParticleMaxSlabs) keys (checked in particle_tiles.cpp).
-shared uint sortedKeys[kParticleTileSharedSort];
+shared uint sortedKeys[kParticleTileBitmapWords];
 // With the bitmap: the set bits before each invocation's run of words.
 shared uint runRanks[kParticleTileSize * kParticleTileSize];
 // A staged particle in two parts, the part every pixel reads and the part covered pixels read.
@@ -107,7 +107,7 @@ uint slabFirstKey(uint slab, uint slabs, uint visible) {
   return (slab * visible + slabs - 1u) / slabs;
 }
 
-// Words of the bitmap per invocation's run (at most kParticleTileSharedSort / kThreads).
+// Words of the bitmap per invocation's run (at most kParticleTileBitmapWords / kThreads).
 uint bitmapRun(uint words) {
   return (words + kThreads - 1u) / kThreads;
 }

@@ -42,11 +42,12 @@ namespace {
 static_assert(offsetof(gpu::ParticleTileHeader, requested) == offsetof(gpu::LightBinHeader, requested));
 static_assert(offsetof(gpu::ParticleTileHeader, cellsX) == offsetof(gpu::LightBinHeader, cellsX));
 static_assert(offsetof(gpu::ParticleTileHeader, cellsY) == offsetof(gpu::LightBinHeader, cellsY));
-// The composite's bitmap of a slab's keys (32 a word in kParticleTileSharedSort words) holds the
+// The composite's bitmap of a slab's keys (32 a word in kParticleTileBitmapWords words) holds the
 // longest slab, ceil(visible / slabs) keys: below 2 x kParticlesPerSlab slots where the slabs are
 // bit_ceil(slots / kParticlesPerSlab), and kMaxParticles / kParticleMaxSlabs + 1 where they are capped.
-static_assert(gpu::kMaxParticles / gpu::kParticleMaxSlabs + 1 <= 32 * gpu::kParticleTileSharedSort);
-static_assert(2 * gpu::kParticlesPerSlab <= 32 * gpu::kParticleTileSharedSort);
+static_assert(gpu::kMaxParticles / gpu::kParticleMaxSlabs + 1 <= 32 * gpu::kParticleTileBitmapWords);
+static_assert(2 * gpu::kParticlesPerSlab <= 32 * gpu::kParticleTileBitmapWords);
+static_assert(gpu::kParticleTileSharedSort <= gpu::kParticleTileBitmapWords);
 // Initial entries per tile (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerTile = 64;
 }  // namespace
