@@ -213,44 +213,45 @@ float shadowedAttenuation(GpuLight light, vec3 position, vec3 normal, vec3 toLig
   return attenuation;
 }
 
-// Whether a light reaches the surface at all, and if so its direction `l`, nDotL, the inverse
-// square's denominator q and the window (range, cone or box, and the light's shadow).
-bool lightArrives(GpuLight light, Surface s, out vec3 l, out float nDotL, out float q, out float window) {
-  l = vec3(0.0);
-  nDotL = q = window = 0.0;
-  vec3 toLight = light.positionRange.xyz - s.position;
-  float distanceSquared = dot(toLight, toLight);
-  float range = light.positionRange.w;
-  if (distanceSquared >= range * range) return false;
-  float inverseDistance = inversesqrt(max(distanceSquared, 1e-12));
-  float distance = distanceSquared * inverseDistance;
-  l = toLight * inverseDistance;
-  nDotL = dot(s.normal, l);
-  if (nDotL <= 0.0) return false;
-  window = lightWindow(light, toLight, l, distance, distanceSquared, q);
-  if (window <= 0.0) return false;
-  if (kLocalShadows) window *= localShadow(light, s.position, s.normal, l, distance);
-  q = max(q, 1e-4);
-  return true;
-}
-
 // Radiance one light reflects from the surface towards the eye; `t` is brdfTerms(s), computed once
 // per surface by the loops over lights.
 vec3 evaluateLight(GpuLight light, Surface s, BrdfTerms t) {
-  vec3 l;
-  float nDotL, q, window;
-  if (!lightArrives(light, s, l, nDotL, q, window)) return vec3(0.0);
-  return brdfCosineOver(s, t, l, nDotL, q) * light.colorIntensity.rgb * (light.colorIntensity.w * window);
+  vec3 toLight = light.positionRange.xyz - s.position;
+  float distanceSquared = dot(toLight, toLight);
+  float range = light.positionRange.w;
+  if (distanceSquared >= range * range) return vec3(0.0);
+  float inverseDistance = inversesqrt(max(distanceSquared, 1e-12));
+  float distance = distanceSquared * inverseDistance;
+  vec3 l = toLight * inverseDistance;
+  float nDotL = dot(s.normal, l);
+  if (nDotL <= 0.0) return vec3(0.0);
+  float q;
+  float window = lightWindow(light, toLight, l, distance, distanceSquared, q);
+  if (window <= 0.0) return vec3(0.0);
+  if (kLocalShadows) window *= localShadow(light, s.position, s.normal, l, distance);
+  return brdfCosineOver(s, t, l, nDotL, max(q, 1e-4)) * light.colorIntensity.rgb *
+         (light.colorIntensity.w * window);
 }
 
-// The same radiance in its two lobes, diffuse + specular (the VPL filter scales only the diffuse by
-// the albedo: gi/interleaved_vpls.glsl).
+// The same radiance in its two lobes, added to `diffuse` and `specular` (the VPL filter scales only
+// the diffuse by the albedo: gi/interleaved_vpls.glsl). evaluateLight's steps, kept apart so that the
+// loop every shading pass runs stays exactly as it was measured.
 void evaluateLightLobes(GpuLight light, Surface s, BrdfTerms t, inout vec3 diffuse, inout vec3 specular) {
-  vec3 l;
-  float nDotL, q, window;
-  if (!lightArrives(light, s, l, nDotL, q, window)) return;
+  vec3 toLight = light.positionRange.xyz - s.position;
+  float distanceSquared = dot(toLight, toLight);
+  float range = light.positionRange.w;
+  if (distanceSquared >= range * range) return;
+  float inverseDistance = inversesqrt(max(distanceSquared, 1e-12));
+  float distance = distanceSquared * inverseDistance;
+  vec3 l = toLight * inverseDistance;
+  float nDotL = dot(s.normal, l);
+  if (nDotL <= 0.0) return;
+  float q;
+  float window = lightWindow(light, toLight, l, distance, distanceSquared, q);
+  if (window <= 0.0) return;
+  if (kLocalShadows) window *= localShadow(light, s.position, s.normal, l, distance);
   vec3 diffuseLobe, specularLobe;
-  brdfLobesOver(s, t, l, nDotL, q, diffuseLobe, specularLobe);
+  brdfLobesOver(s, t, l, nDotL, max(q, 1e-4), diffuseLobe, specularLobe);
   vec3 scale = light.colorIntensity.rgb * (light.colorIntensity.w * window * nDotL);
   diffuse += diffuseLobe * scale;
   specular += specularLobe * scale;
