@@ -16,7 +16,7 @@
 
 layout(set = 0, binding = 38, rgba16f) uniform writeonly image2D vplIndirect;
 layout(set = 0, binding = 39, rgba32ui) uniform writeonly uimage2D vplSurfaceKey;
-layout(set = 0, binding = 48, rgba16f) uniform writeonly image2D vplSpecular;
+layout(set = 0, binding = 48, rg32ui) uniform writeonly uimage2D vplAlbedoKey;
 
 // The light sums of one pixel: everything but the VPLs, and the VPLs of the pixel's class (their
 // diffuse and specular lobes apart).
@@ -72,26 +72,31 @@ uint interleavedRole(uint index, uint firstVpl, uint pixelClass) {
 }
 
 // What gi/vpl_filter.comp needs of this pixel; `lit` false where it must add nothing (no surface,
-// or a debug view replaced the colour). A pixel that evaluated every class is marked (key w 1), one
+// or a debug view replaced the colour): per pixel the diffuse light and view depth (vplIndirect),
+// the normal, specular light and mark the gather reads of every neighbour (vplSurfaceKey: two
+// reads a sample, as before the lobes were apart) and the keys only the pixel's own filtering reads
+// (vplAlbedoKey). A pixel that evaluated every class is marked (key w 1), one
 // whose classes vpl-classes lit by its slot (w 2 + slot): the filter takes its own light and
 // leaves it out of its neighbours' gathers.
 void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, InterleavedSums sums, mat4 view) {
   if (!lit) {
     imageStore(vplIndirect, ivec2(pixel), vec4(0.0, 0.0, 0.0, -1.0));
     imageStore(vplSurfaceKey, ivec2(pixel), uvec4(0u));
-    imageStore(vplSpecular, ivec2(pixel), vec4(0.0));
+    imageStore(vplAlbedoKey, ivec2(pixel), uvec4(0u));
     return;
   }
   vec3 key = albedoKey(s.baseColor);
   vec3 normal = normalize(mat3(view) * s.normal);
   imageStore(vplIndirect, ivec2(pixel), vec4(sums.indirect / key, viewDepth));
-  imageStore(vplSpecular, ivec2(pixel), vec4(sums.indirectSpecular / specularKey(key, s.metallic), 0.0));
+  vec3 specular = sums.indirectSpecular / specularKey(key, s.metallic);
   imageStore(
       vplSurfaceKey, ivec2(pixel),
-      uvec4(packSnorm2x16(octahedralEncode(normal)), packHalf2x16(key.rg),
-            packHalf2x16(vec2(key.b, s.metallic)),
+      uvec4(packSnorm2x16(octahedralEncode(normal)), packHalf2x16(specular.rg),
+            packHalf2x16(vec2(specular.b, 0.0)),
             sums.pixelClass == kEveryClass ? 1u
                                            : (sums.pixelClass == kClassesElsewhere ? 2u + sums.slot : 0u)));
+  imageStore(vplAlbedoKey, ivec2(pixel),
+             uvec4(packHalf2x16(key.rg), packHalf2x16(vec2(key.b, s.metallic)), 0u, 0u));
 }
 
 #endif

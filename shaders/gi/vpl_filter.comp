@@ -16,7 +16,7 @@
 #include "gi/vpl_interleave_data.glsl"
 #include "shared/gpu_types.h"
 
-layout(local_size_x = kTileGroupSize, local_size_y = kTileGroupSize) in;
+layout(local_size_x = 8, local_size_y = 8) in;
 
 const float kNormalCos = 0.8;
 const float kPlaneTolerance = 0.05;
@@ -27,7 +27,7 @@ layout(std430, set = 0, binding = 0) readonly buffer FrameBlock {  // see common
 layout(set = 0, binding = 13, rgba16f) uniform image2D hdr;
 layout(set = 0, binding = 38, rgba16f) uniform readonly image2D vplIndirect;
 layout(set = 0, binding = 39, rgba32ui) uniform readonly uimage2D vplSurfaceKey;
-layout(set = 0, binding = 48, rgba16f) uniform readonly image2D vplSpecular;
+layout(set = 0, binding = 48, rg32ui) uniform readonly uimage2D vplAlbedoKey;
 
 // The point of the view-space surface seen through pixel centre `p` at view depth `z`.
 vec3 viewPosition(ivec2 p, float z) {
@@ -36,71 +36,28 @@ vec3 viewPosition(ivec2 p, float z) {
   return vec3(ndc.x * frame.depthParams.z, -ndc.y * frame.depthParams.w, -1.0) * z;
 }
 
-// The group's pixels (kTileGroupSize a side) and every pixel the gather may read around them (out to 2K-1),
-// read once into shared memory: each pixel's gather reads up to (4K-1)^2 of them (on the H200 the filter read
-// them from the images, 0.46 ms at K = 4 and 1080p, 0.62 with the specular image beside them).
-const int kMostReach = 2 * int(kMaxVplInterleave) - 1;
-const int kGroupSide = int(kTileGroupSize);
-const int kMostTileSide = kGroupSide + 2 * kMostReach;
-shared vec4 tileLight[kMostTileSide * kMostTileSide];      // vplIndirect (w < 0: none, or outside)
-shared uint tileNormal[kMostTileSide * kMostTileSide];     // vplSurfaceKey.x
-shared uint tileEvery[kMostTileSide * kMostTileSide];      // vplSurfaceKey.w
-shared uvec2 tileSpecular[kMostTileSide * kMostTileSide];  // vplSpecular.rgb as halves
-
-int tileReach() {
-  return 2 * int(kVplInterleave) - 1;
-}
-
-uint tileIndex(ivec2 q) {
-  int reach = tileReach();
-  ivec2 t = q - ivec2(gl_WorkGroupID.xy) * kGroupSide + reach;
-  return uint(t.y * (kGroupSide + 2 * reach) + t.x);
-}
-
-// Call it uniformly (a barrier).
-void loadTile(ivec2 size) {
-  int reach = tileReach(), side = kGroupSide + 2 * reach;
-  ivec2 origin = ivec2(gl_WorkGroupID.xy) * kGroupSide - reach;
-  for (int i = int(gl_LocalInvocationIndex); i < side * side; i += kGroupSide * kGroupSide) {
-    ivec2 q = origin + ivec2(i % side, i / side);
-    vec4 light = vec4(0.0, 0.0, 0.0, -1.0);
-    uvec2 key = uvec2(0u), specular = uvec2(0u);
-    if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size))) {
-      light = imageLoad(vplIndirect, q);
-      key = imageLoad(vplSurfaceKey, q).xw;
-      vec3 s = imageLoad(vplSpecular, q).rgb;
-      specular = uvec2(packHalf2x16(s.rg), packHalf2x16(vec2(s.b, 0.0)));
-    }
-    tileLight[i] = light;
-    tileNormal[i] = key.x;
-    tileEvery[i] = key.y;
-    tileSpecular[i] = specular;
-  }
-  barrier();
-}
-
 // One class's samples around p: the offsets along each axis within `far` pixels whose pixel is in
 // the class (`start` the smallest, offsets k apart), leaving out those within `near` pixels along
 // both axes (gathered before; near < 0: none), with tent weights (far + 1 - |d|) per axis, where they
 // lie on p's surface (normal within kNormalCos, within planeTolerance of p's tangent plane).
-void gatherClass(ivec2 p, ivec2 start, int k, int near, int far, vec3 normal, vec3 position,
+void gatherClass(ivec2 p, ivec2 size, ivec2 start, int k, int near, int far, vec3 normal, vec3 position,
                  float planeTolerance, inout vec3 classSum, inout vec3 classSpecular,
                  inout float classWeight) {
   for (int dy = start.y; dy <= far; dy += k) {
     for (int dx = start.x; dx <= far; dx += k) {
       if (abs(dx) <= near && abs(dy) <= near) continue;
       ivec2 q = p + ivec2(dx, dy);
-      uint t = tileIndex(q);
-      vec4 sample_ = tileLight[t];
-      if (sample_.w < 0.0) continue;     // no surface, or outside the image
-      if (tileEvery[t] != 0u) continue;  // holds every class: no class's sample
-      vec3 n = octahedralDecode(unpackSnorm2x16(tileNormal[t]));
+      if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+      vec4 sample_ = imageLoad(vplIndirect, q);
+      if (sample_.w < 0.0) continue;
+      uvec4 qKey = imageLoad(vplSurfaceKey, q);
+      if (qKey.w != 0u) continue;  // holds every class: no class's sample
+      vec3 n = octahedralDecode(unpackSnorm2x16(qKey.x));
       if (dot(n, normal) < kNormalCos) continue;
       if (abs(dot(viewPosition(q, sample_.w) - position, normal)) > planeTolerance) continue;
       float w = float((far + 1 - abs(dx)) * (far + 1 - abs(dy)));
       classSum += w * sample_.rgb;
-      uvec2 specular = tileSpecular[t];
-      classSpecular += w * vec3(unpackHalf2x16(specular.x), unpackHalf2x16(specular.y).x);
+      classSpecular += w * vec3(unpackHalf2x16(qKey.y), unpackHalf2x16(qKey.z).x);
       classWeight += w;
     }
   }
@@ -109,17 +66,20 @@ void gatherClass(ivec2 p, ivec2 start, int k, int near, int far, vec3 normal, ve
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = ivec2(frame.viewport.xy);
-  loadTile(size);
   if (p.x >= size.x || p.y >= size.y) return;
-  vec4 centre = tileLight[tileIndex(p)];
+  vec4 centre = imageLoad(vplIndirect, p);
   if (centre.w < 0.0) return;  // no surface, or a debug view
   uvec4 centreKey = imageLoad(vplSurfaceKey, p);
   vec3 normal = octahedralDecode(unpackSnorm2x16(centreKey.x));
-  vec2 keyB = unpackHalf2x16(centreKey.z);  // the key's blue, and metallic
-  vec3 key = vec3(unpackHalf2x16(centreKey.y), keyB.x), specular = specularKey(key, keyB.y);
+  uvec2 albedoKeys = imageLoad(vplAlbedoKey, p).xy;
+  vec2 keyB = unpackHalf2x16(albedoKeys.y);  // the key's blue, and metallic
+  vec3 key = vec3(unpackHalf2x16(albedoKeys.x), keyB.x), specular = specularKey(key, keyB.y);
   if (centreKey.w == 1u) {  // it evaluated every class itself (a glossy metal)
     imageStore(hdr, p,
-               imageLoad(hdr, p) + vec4(centre.rgb * key + imageLoad(vplSpecular, p).rgb * specular, 0.0));
+               imageLoad(hdr, p) +
+                   vec4(centre.rgb * key +
+                            vec3(unpackHalf2x16(centreKey.y), unpackHalf2x16(centreKey.z).x) * specular,
+                        0.0));
     return;
   }
   if (centreKey.w >= 2u) {  // vpl-classes lit its classes in slot w - 2, in class order
@@ -147,11 +107,11 @@ void main() {
       ivec2 cell = ivec2(cx, cy) - inBlock;
       vec3 classSum = vec3(0.0), classSpecular = vec3(0.0);
       float classWeight = 0.0;
-      gatherClass(p, (cell + reach + k) % k - reach, k, -1, reach, normal, position, planeTolerance, classSum,
-                  classSpecular, classWeight);
+      gatherClass(p, size, (cell + reach + k) % k - reach, k, -1, reach, normal, position, planeTolerance,
+                  classSum, classSpecular, classWeight);
       // None on p's surface within reach (an edge): the class's next ring out, to 2k-1 pixels.
       if (classWeight == 0.0)
-        gatherClass(p, (cell + 2 * k - 1 + k) % k - (2 * k - 1), k, reach, 2 * k - 1, normal, position,
+        gatherClass(p, size, (cell + 2 * k - 1 + k) % k - (2 * k - 1), k, reach, 2 * k - 1, normal, position,
                     planeTolerance, classSum, classSpecular, classWeight);
       if (classWeight > 0.0) {
         sum += classSum / classWeight;

@@ -52,15 +52,15 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
                     "interleaved VPL light");
   key_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
                "interleaved VPL surface key");
-  specular_ = Image(context, targets.width, targets.height, VK_FORMAT_R16G16B16A16_SFLOAT, kStorage,
-                    "interleaved VPL specular light");
+  albedoKey_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32_UINT, kStorage,
+                     "interleaved VPL albedo key");
   layout_ = PipelineLayout(context, {"gi/vpl_filter.comp"}, {}, constants());
   filter_ = Pipeline(context, layout_, "gi/vpl_filter.comp", constants());
 }
 
 std::vector<ResourceUse> InterleavedVpls::shadingWrites() const {
   return {uses(indirect_, Use::StorageWrite, kCompute), uses(key_, Use::StorageWrite, kCompute),
-          uses(specular_, Use::StorageWrite, kCompute), uses(header_, Use::StorageReadWrite, kCompute),
+          uses(albedoKey_, Use::StorageWrite, kCompute), uses(header_, Use::StorageReadWrite, kCompute),
           uses(surfaces_, Use::StorageWrite, kCompute)};
 }
 
@@ -87,7 +87,7 @@ void InterleavedVpls::dispatchClasses(VkCommandBuffer cmd) const {
 DescriptorWriter& InterleavedVpls::bindImages(DescriptorWriter& writer) const {
   return writer.image(38, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, indirect_.view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(39, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, key_.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(48, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, specular_.view(), VK_IMAGE_LAYOUT_GENERAL);
+      .image(48, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, albedoKey_.view(), VK_IMAGE_LAYOUT_GENERAL);
 }
 
 void InterleavedVpls::dispatch(VkCommandBuffer cmd, const FrameTargets& targets) const {
@@ -102,7 +102,7 @@ void InterleavedVpls::filter(FrameContext& frame) {
   frame.graph.pass(
       "vpl-filter",
       {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::StorageRead, kCompute),
-       uses(key_, Use::StorageRead, kCompute), uses(specular_, Use::StorageRead, kCompute),
+       uses(key_, Use::StorageRead, kCompute), uses(albedoKey_, Use::StorageRead, kCompute),
        uses(light_, Use::StorageRead, kCompute)},
       [&](VkCommandBuffer cmd) {
         filter_.bind(cmd);

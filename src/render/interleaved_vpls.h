@@ -66,11 +66,11 @@ class InterleavedVpls {
  private:
   Context& context_;
   uint32_t side_;
-  Image indirect_;  // RGBA16F: the class's VPL diffuse light over the albedo key, w view depth (-1: none)
-  Image specular_;  // RGBA16F: the class's VPL specular light (not over the key: it is not the albedo's)
-  Image key_;       // RGBA32UI: x the view-space normal (octahedral, snorm16 x 2), y z the albedo key
-                    // and metallic (halves),
-                    // w 0, 1 for a pixel that evaluated every class, 2 + its slot for vpl-classes'
+  Image indirect_;   // RGBA16F: the class's VPL diffuse light over the albedo key, w view depth (-1: none)
+  Image key_;        // RGBA32UI: x the view-space normal (octahedral, snorm16 x 2), y z the class's VPL
+                     // specular light over f0 (halves), w 0, 1 for a pixel that evaluated every
+                     // class, 2 + its slot for vpl-classes' (what the gather reads of a neighbour)
+  Image albedoKey_;  // RG32UI: the albedo key and metallic as halves (read for the pixel itself)
   bool classesElsewhere_ = false;
   // Glossy-metal pixels vpl-classes can take; the rest evaluate in place. One without
   // classesElsewhere(): the shading and filter shaders declare the slots' buffers either way.
