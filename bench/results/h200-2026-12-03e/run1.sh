@@ -1,4 +1,4 @@
-# run.sh: smoke bench new (bitmap + opaque-group stop) vs old (9cfb2ef), particle GPU tests
+# run1: smoke bench new (bitmap + opaque-group stop) vs old (9cfb2ef), particle GPU tests
 set -u
 source .gpu/setup.sh
 mkdir -p build/tests && cp .gpu/bin/lll build/lll

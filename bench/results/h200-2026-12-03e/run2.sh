@@ -1,4 +1,4 @@
-# run.sh: --particle-tile-groups sweep with the bitmap + opaque-group stop build (render --stats, one settled frame each)
+# run2: --particle-tile-groups sweep with the bitmap + opaque-group stop build (render --stats, one settled frame each)
 set -u
 source .gpu/setup.sh
 N=.gpu/bin/lll
