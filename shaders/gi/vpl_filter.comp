@@ -103,7 +103,8 @@ void main() {
   uint found = 0u;
   for (int cy = 0; cy < k; ++cy) {
     for (int cx = 0; cx < k; ++cx) {
-      // The smallest offset >= -reach whose pixel is in class (cx, cy) (the modulo's arguments > 0).
+      // Class (cx, cy) relative to p's place in its block: the smallest offset >= -r of a pixel in the
+      // class is (cell + r + k) % k - r (the modulo's arguments > 0 for r < 2k).
       ivec2 cell = ivec2(cx, cy) - inBlock;
       vec3 classSum = vec3(0.0), classSpecular = vec3(0.0);
       float classWeight = 0.0;
