@@ -12,6 +12,7 @@
 #include "scene/errors.h"
 #include "scene/light_animation.h"
 #include "shared/limits.h"
+#include "shared/particle_types.h"
 #include "view/viewer.h"
 
 namespace {
@@ -208,10 +209,10 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(CLI::IsMember({"full", "half", "quarter"}))
       ->needs(particles);
   cmd.add_option("--particle-tile-groups", s.particleTileGroups,
-                 "compute renderer: workgroups each particle tile's slabs are shared out to, 1 to 32 "
-                 "(default: 1 at full resolution; below it slabs x scale / 8, a slab per 4,096 particle "
-                 "slots up to 64, scale 2 at half and 4 at quarter)")
-      ->check(CLI::Range(1u, 32u))
+                 "compute renderer: workgroups each particle tile's slabs are shared out to (default: 1 "
+                 "at full resolution; below it slabs x scale / 8, a slab per 4,096 particle slots up to "
+                 "64, scale 2 at half and 4 at quarter)")
+      ->check(CLI::Range(1u, lll::gpu::kParticleMaxGroups))
       ->needs(particles);
   cmd.add_option("--particle-count", s.particleCount, "particle slots, overriding the preset's count")
       ->check(CLI::Range(1u, 1000000u))
