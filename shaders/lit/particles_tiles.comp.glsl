@@ -15,7 +15,6 @@
 // radiance is complete (vertex lighting, or unlit).
 #define PARTICLE_TILES_LONGEST_WRITE
 #define PARTICLE_LAYERS_WRITE
-#define PARTICLE_TILE_LIVE_SLABS readonly
 #include "particles/scatter_lights.glsl"
 
 #include "particles/bitonic.glsl"
@@ -242,6 +241,22 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
   }
 }
 
+// The view depth a particle pixel blends against: the frame's, or below full resolution the
+// nearest in its block (no particle shows over geometry nearer than it; the upsample sorts out the
+// pixels behind).
+float particlePixelDepth(sampler2D depthImage, ivec2 pixel) {
+  int scale = int(tileHeader.scale);
+  if (scale == 1) return linearizeDepth(texelFetch(depthImage, pixel, 0).r);
+  ivec2 last = ivec2(frame.viewport.xy) - 1;
+  float nearest = 3.4e38;
+  for (int y = 0; y < scale; ++y)
+    for (int x = 0; x < scale; ++x) {
+      ivec2 p = min(pixel * scale + ivec2(x, y), last);
+      nearest = min(nearest, linearizeDepth(texelFetch(depthImage, p, 0).r));
+    }
+  return nearest;
+}
+
 void main() {
   uint tile = gl_WorkGroupID.y * tileHeader.tilesX + gl_WorkGroupID.x;
   ivec2 pixel = ivec2(gl_WorkGroupID.xy * kParticleTileSize + gl_LocalInvocationID.xy);
@@ -260,10 +275,9 @@ void main() {
   barrier();
   uint visible = particleCounters.dispatch.w;
   vec4 front = vec4(0.0, 0.0, 0.0, 1.0), behind = vec4(0.0, 0.0, 0.0, 1.0);
-  // The groups share out the slabs particles-bin left (tileLiveSlabs), front to back.
-  uint live = tileLiveSlabs[tile];
+  uint slabs = tileHeader.cellsX;
   uint group = gl_WorkGroupID.z;
-  uint firstSlab = group * live / tileHeader.groups, endSlab = (group + 1u) * live / tileHeader.groups;
+  uint firstSlab = group * slabs / tileHeader.groups, endSlab = (group + 1u) * slabs / tileHeader.groups;
   for (uint slab = firstSlab; slab < endSlab && finishedPixels < kThreads; ++slab) {
     if (group > 0u) {
       if (gl_LocalInvocationIndex == 0u) {
@@ -275,7 +289,7 @@ void main() {
       barrier();
       if (opaqueInFront) break;  // the same in every invocation
     }
-    blendCell(tile * tileHeader.cellsX + slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, slab, front,
+    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, slab, front,
               behind, finished);
     barrier();
   }

@@ -1,21 +1,15 @@
 #version 460
 #define PARTICLE_TILES_WRITE
-#define PARTICLE_TILE_NEAREST readonly
 // particles-bin's count and scatter passes (specialization constant 0: 0 counts, 1 scatters), one
 // thread per visible particle in draw order. The count pass writes what the tiles need of the
 // particle (ParticleScreen) and counts it in every tile its disc may cover; after the prefix sum
 // (bin_scan.comp) the scatter pass visits the same tiles and appends its key at their cursors.
-// The count pass also adds the particle's optical depth bound to each tile it covers whole
-// (particleTileOpticalDepth); cull_slabs.comp then empties the cells behind a tile's opaque slabs,
-// and the scatter skips them.
 // Constant 1 is 1 when the particle's light was computed at its centre (particles-light).
 #include "particles/tiles.glsl"
 
 layout(local_size_x = 64) in;
 layout(constant_id = 0) const uint kScatter = 0u;
 layout(constant_id = 1) const uint kCentreLit = 0u;
-// Constant 2 is 1 when particles-bin culls (the optical depth bounds are summed), 0 with --no-particle-cull.
-layout(constant_id = 2) const uint kCull = 1u;
 
 ParticleScreen screenOf(uint order) {
   uint slot = drawOrder[order].y;
@@ -60,11 +54,7 @@ void main() {
       uint cell = (y * tileHeader.tilesX + x) * slabs + slab;
       if (kScatter == 0u) {
         atomicAdd(tileCells[cell].count, 1u);
-        if (kCull != 0u) {
-          uint depth = particleTileOpticalDepth(s, uvec2(x, y), tileNearest[y * tileHeader.tilesX + x]);
-          if (depth > 0u) atomicAdd(tileCells[cell].farBits, depth);
-        }
-      } else if (tileCells[cell].count != 0u) {  // culled cells hold none
+      } else {
         uint slot = atomicAdd(tileCells[cell].cursor, 1u);
         if (slot < tileHeader.capacity) tileEntries[slot] = key;
       }

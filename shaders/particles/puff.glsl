@@ -24,11 +24,6 @@ float puffDensity(float r2, vec2 pattern) {
   return (1.0 - r2) * (1.0 - r2) * (0.45 + 0.55 * noise);
 }
 
-// The least puffDensity at radius^2 r2, whatever the noise (its texels are in 0..1).
-float puffDensityLowerBound(float r2) {
-  return (1.0 - r2) * (1.0 - r2) * 0.45;
-}
-
 // What does not vary across a particle's quad, from its slot and the frame's light at its centre
 // (`centreLight`: per-particle lighting, or zero when lit per pixel).
 struct PuffLook {

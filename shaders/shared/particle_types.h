@@ -97,18 +97,6 @@ LLL_CONST(uint, kParticleMaxGroups, 32u);
 // composite stops blending it, particles-resolve stops combining groups there. The error this leaves
 // is far below the fp16 target's own rounding of the raster path's blends; 2^-10 is exact as a half.
 LLL_CONST(float, kParticleOpaqueTransmittance, 1.0f / 1024.0f);
-// particles-bin culls the slabs of a tile behind the one where the tile is surely opaque. Each
-// particle whose disc covers every pixel of a tile adds a lower bound of its optical depth there
-// (-ln(1 - alpha) with its least density over the tile and its fade at the tile's nearest depth,
-// particleTileOpticalDepth in particles/tiles.glsl) to its cell, in units of 1 /
-// kParticleCullDepthScale, each particle at most kParticleCullDepthMost, so that a slab's sum stays
-// below 2^32 (checked in particle_tiles.cpp). A slab behind those whose sums reach
-// kParticleCullOpticalDepth is dropped: every pixel of the tile let through less than e^-8 (1 in
-// 2,981) of the light behind it before it, and had stopped at kParticleOpaqueTransmittance (1 in
-// 1,024) with room to spare for rounding; what the composite blends does not change.
-LLL_CONST(float, kParticleCullOpticalDepth, 8.0f);
-LLL_CONST(float, kParticleCullDepthScale, 16384.0f);
-LLL_CONST(uint, kParticleCullDepthMost, 262143u);
 
 // --particle-lighting atlas: each visible particle's light, per unit albedo, on a grid of
 // kParticleAtlasSide^2 texels over its quad (offsets -1..1 along the camera's right and up),
@@ -126,8 +114,7 @@ LLL_CONST(uint, kPuffNoiseTexelsPerCell, 4u);
 // first), so a tile whose front slabs make it opaque never sorts or reads the rest. Its cells (LightBinCell,
 // one per tile and slab, tile-major) are summed by the light bins' prefix sum (lighting/bins/bin_scan.comp):
 // the fields it reads, requested, cellsX and cellsY, are where LightBinHeader has them (checked in
-// particle_tiles.cpp). A particle cell's farBits (the light bins' depth mask) holds the slab's
-// optical depth bound instead (kParticleCullOpticalDepth).
+// particle_tiles.cpp).
 struct ParticleTileHeader {
   uint requested;  // entries the scatter asked for, also past `capacity`
   uint capacity;   // entries tileEntries holds
@@ -141,10 +128,8 @@ struct ParticleTileHeader {
   uint layerWidth;  // particle pixels across and down
   uint layerHeight;
   uint stopped;  // groups that stopped because a group in front made their whole tile opaque
-  uint culled;   // entries particles-bin culled behind a tile's opaque slabs (kParticleCullOpticalDepth)
-  uint pad0, pad1, pad2;
 };
-LLL_CHECK_SIZE(ParticleTileHeader, 64);
+LLL_CHECK_SIZE(ParticleTileHeader, 48);
 
 // What the tiled renderer needs of one visible particle, by position in the draw order: written
 // once per frame (particles-bin), read by every pixel of every tile it covers. The quad is a disc

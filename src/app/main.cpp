@@ -214,11 +214,6 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "64, scale 2 at half and 4 at quarter)")
       ->check(CLI::Range(1u, lll::gpu::kParticleMaxGroups))
       ->needs(particles);
-  cmd.add_flag_callback(
-         "--no-particle-cull", [&s] { s.particleCull = false; },
-         "compute renderer: keep the slabs of a particle tile behind those that make it opaque (by "
-         "default they are culled; the image is the same), to measure what culling saves")
-      ->needs(particles);
   cmd.add_option("--particle-count", s.particleCount, "particle slots, overriding the preset's count")
       ->check(CLI::Range(1u, 1000000u))
       ->needs(particles);

@@ -33,7 +33,6 @@ std::optional<ParticleSystemOptions> particleOptions(const Scene& scene, const R
   options.render = parseParticleRender(settings.particleRender);
   options.resolutionScale = parseParticleResolution(settings.particleResolution);
   options.tileGroups = settings.particleTileGroups;
-  options.cull = settings.particleCull;
   if (options.resolutionScale > 1 && options.render == ParticleRender::Raster)
     throw InputError(
         fmt::format("--particle-resolution {}: only --particle-render compute (or auto) draws "

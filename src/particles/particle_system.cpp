@@ -55,7 +55,6 @@ ParticleSystem::ParticleSystem(Context& context, const ParticleSystemOptions& op
       render_(resolveRender(context, options)),
       resolutionScale_(options.resolutionScale),
       tileGroups_(options.tileGroups),
-      cull_(options.cull),
       capacity_(checkedCapacity(options)),
       // The emitter spawns capacity / lifetimeMax particles a second: a slot's previous particle
       // has always died when its next one is born.
@@ -276,7 +275,6 @@ std::vector<std::pair<std::string, double>> ParticleSystem::stats() const {
           {"particle_resolution_scale", double(resolutionScale_)},
           {"particle_tile_longest", double(tiles_.longestCell)},
           {"particle_tile_groups_stopped", double(tiles_.stoppedGroups)},
-          {"particle_tile_entries_culled", double(tiles_.culledEntries)},
           {"particle_tile_overflows", double(tiles_.overflows)}};
 }
 

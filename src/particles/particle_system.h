@@ -90,8 +90,7 @@ struct ParticleSystemOptions {
   ParticleLighting lighting = ParticleLighting::Pixel;
   ParticleRender render = ParticleRender::Auto;
   uint32_t resolutionScale = 1;  // parseParticleResolution; above 1 needs the compute renderer
-  uint32_t tileGroups = 0;       // the compute renderer's workgroups a tile (1 to 32); 0: its choice
-  bool cull = true;              // the compute renderer culls slabs behind a tile's opaque ones
+  uint32_t tileGroups = 0;       // the compute renderer's workgroups a tile (1 to 8); 0: its choice
 };
 
 class ParticleSystem {
@@ -148,14 +147,11 @@ class ParticleSystem {
     uint32_t lastRequested = 0;
     uint32_t longestCell = 0;    // the most particles one tile's slab held in the last frame
     uint32_t stoppedGroups = 0;  // groups that stopped at an opaque group in front, last frame
-    uint32_t culledEntries = 0;  // entries culled behind opaque slabs, last frame
     uint32_t overflows = 0;
     Buffer headerBuffer;
     Buffer cells;
     Buffer entries;
     Buffer screen;
-    Buffer nearest;    // per tile: the nearest depth its particle pixels fade against (tile_depth.comp)
-    Buffer liveSlabs;  // per tile: its slabs in front of those the cull emptied (cull_slabs.comp)
     Buffer layers;     // each tile group's colour and transmittance per particle pixel
     Buffer opaque;     // per tile and group: 1 once the group made every pixel of its tile opaque
     Image layerDepth;  // below full resolution: the view depth each particle pixel was blended against
@@ -165,10 +161,6 @@ class ParticleSystem {
     PipelineLayout binLayout;
     Pipeline count;
     Pipeline scatter;
-    PipelineLayout tileDepthLayout;
-    Pipeline tileDepth;
-    PipelineLayout cullLayout;
-    Pipeline cull;
     PipelineLayout scanLayout;
     Pipeline scan;
     PipelineLayout resolveLayout;
@@ -205,7 +197,6 @@ class ParticleSystem {
   ParticleRender render_;
   uint32_t resolutionScale_ = 1;
   uint32_t tileGroups_ = 0;
-  bool cull_ = true;
   uint32_t capacity_ = 0;
   double stepsPerLifetime_ = 0.0;  // the preset's longest lifetime, in steps
   uint64_t steps_ = 0;

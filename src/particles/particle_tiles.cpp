@@ -1,12 +1,9 @@
 // The tiled compute particle renderer (--particle-render compute), after AMD's GPUParticles11 and
 // MiniEngine's ParticleTileRender: no quad reaches the rasterizer.
-//   particles-bin        tile depth: each tile's nearest depth; count: each visible particle
-//                        (draw order) writes what the tiles need of it, counts itself in the tiles
-//                        its disc may cover and adds a bound of its optical depth to those it
-//                        covers whole; cull: a tile's slabs behind those that surely make it opaque
-//                        are emptied (kParticleCullOpticalDepth); scan: a prefix sum of the counts
-//                        (the light bins' shader, lighting/bins/bin_scan.comp); scatter: each
-//                        particle appends its key to those tiles.
+//   particles-bin        count: each visible particle (draw order) writes what the tiles need of
+//                        it and counts itself in the tiles its disc may cover; scan: a prefix sum
+//                        of the counts (the light bins' shader, lighting/bins/bin_scan.comp);
+//                        scatter: each particle appends its key to those tiles.
 //   particles-composite  workgroups per tile (groups) each sort their run of the tile's slabs
 //                        nearest first and blend every pixel front to back into (colour,
 //                        transmittance), stopping where it is opaque (lit/particles_tiles.comp);
@@ -51,10 +48,6 @@ static_assert(offsetof(gpu::ParticleTileHeader, cellsY) == offsetof(gpu::LightBi
 static_assert(gpu::kMaxParticles / gpu::kParticleMaxSlabs + 1 <= 32 * gpu::kParticleTileBitmapWords);
 static_assert(2 * gpu::kParticlesPerSlab <= 32 * gpu::kParticleTileBitmapWords);
 static_assert(gpu::kParticleTileSharedSort <= gpu::kParticleTileBitmapWords);
-// A slab's optical depth bound (a particle adds at most kParticleCullDepthMost) fits its 32 bits.
-static_assert(uint64_t(gpu::kMaxParticles / gpu::kParticleMaxSlabs + 1) * gpu::kParticleCullDepthMost <
-              (uint64_t(1) << 32));
-static_assert(uint64_t(2 * gpu::kParticlesPerSlab) * gpu::kParticleCullDepthMost < (uint64_t(1) << 32));
 // Initial entries per tile (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerTile = 64;
 }  // namespace
@@ -124,10 +117,6 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
                            "particles", "use fewer particles (--particle-count)");
   t.screen = Buffer(context_, uint64_t(capacity_) * sizeof(gpu::ParticleScreen),
                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device, "particle screen data");
-  t.nearest = Buffer(context_, tiles * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device,
-                     "particle tiles nearest depth");
-  t.liveSlabs = Buffer(context_, tiles * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                       MemoryUse::Device, "particle tiles live slabs");
   allocateTileEntries(std::min(t.maxEntries, std::max<uint64_t>(tiles * kInitialEntriesPerTile, capacity_)));
   if (!t.count) {
     t.binLayout = PipelineLayout(context_, {"particles/bin.comp"});
@@ -137,16 +126,10 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
       SpecializationConstants c = constants;
       c[0] = scatter;
       c[1] = centreLit;
-      c[2] = cull_ ? 1 : 0;
       return Pipeline(context_, t.binLayout, "particles/bin.comp", c);
     };
     t.count = bin(0);
     t.scatter = bin(1);
-    t.tileDepthLayout = PipelineLayout(context_, {"particles/tile_depth.comp"});
-    t.tileDepth = Pipeline(context_, t.tileDepthLayout, "particles/tile_depth.comp");
-    t.cullLayout = PipelineLayout(context_, {"particles/cull_slabs.comp"});
-    t.cull = Pipeline(context_, t.cullLayout, "particles/cull_slabs.comp",
-                      SpecializationConstants{{0, cull_ ? 1u : 0u}});
     t.scanLayout = PipelineLayout(context_, {"lighting/bins/bin_scan.comp"});
     t.scan = Pipeline(context_, t.scanLayout, "lighting/bins/bin_scan.comp");
     t.resolveLayout = PipelineLayout(context_, {"particles/resolve.comp"});
@@ -172,9 +155,6 @@ void ParticleSystem::binTiles(FrameContext& frame) {
   std::vector<ResourceUse> clears{uses(t.headerBuffer, Use::TransferWrite), uses(t.cells, Use::TransferWrite),
                                   uses(t.opaque, Use::TransferWrite)};
   if (radiance_) clears.push_back(uses(radiance_, Use::StorageRead, kCompute));
-  // What the composite fades the particles in front of the glass against (particleFadeDepth).
-  const Image& fade = frame.targets.glassDepth ? frame.targets.glassDepth : frame.targets.sampledDepth();
-  clears.push_back(uses(fade, Use::Sampled, kCompute));
   frame.graph.pass("particles-bin", clears + particleReads, [&](VkCommandBuffer cmd) {
     gpu::ParticleTileHeader header = t.header;
     header.requested = 0;
@@ -193,31 +173,10 @@ void ParticleSystem::binTiles(FrameContext& frame) {
       writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.binLayout);
       vkCmdDispatchIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, dispatch));
     };
-    frame.graph.barriers(
-        {uses(t.headerBuffer, Use::StorageRead, kCompute), uses(t.nearest, Use::StorageWrite, kCompute)});
-    t.tileDepth.bind(cmd);
-    DescriptorWriter()
-        .storage(0, frame.uniformBuffer.handle())
-        .storage(17, t.headerBuffer.handle())
-        .storage(49, t.nearest.handle())
-        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fade.view(), sampledLayout(fade), depthSampler_)
-        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.tileDepthLayout);
-    if (cull_) vkCmdDispatch(cmd, t.header.tilesX, t.header.tilesY, 1);
-    frame.graph.barriers(
-        {uses(t.headerBuffer, Use::StorageRead, kCompute), uses(t.cells, Use::StorageReadWrite, kCompute),
-         uses(t.screen, Use::StorageWrite, kCompute), uses(t.nearest, Use::StorageRead, kCompute)});
-    writer.storage(49, t.nearest.handle());
-    dispatch(t.count);
-    frame.graph.barriers({uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
+    frame.graph.barriers({uses(t.headerBuffer, Use::StorageRead, kCompute),
                           uses(t.cells, Use::StorageReadWrite, kCompute),
-                          uses(t.liveSlabs, Use::StorageWrite, kCompute)});
-    t.cull.bind(cmd);
-    DescriptorWriter()
-        .storage(17, t.headerBuffer.handle())
-        .storage(18, t.cells.handle())
-        .storage(50, t.liveSlabs.handle())
-        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.cullLayout);
-    vkCmdDispatch(cmd, t.header.tilesX, t.header.tilesY, 1);
+                          uses(t.screen, Use::StorageWrite, kCompute)});
+    dispatch(t.count);
     frame.graph.barriers({uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
                           uses(t.cells, Use::StorageReadWrite, kCompute)});
     // The scan reads the tiles where it reads the light bins (common/light_bins.glsl: 11 to 14).
@@ -252,7 +211,6 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
                                 uses(uniforms_, Use::StorageRead, kCompute),
                                 uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
                                 uses(t.cells, Use::StorageRead, kCompute),
-                                uses(t.liveSlabs, Use::StorageRead, kCompute),
                                 uses(t.entries, Use::StorageRead, kCompute),
                                 uses(t.screen, Use::StorageRead, kCompute),
                                 uses(t.layers, Use::StorageWrite, kCompute),
@@ -273,7 +231,6 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
         .storage(20, t.screen.handle())
         .storage(23, t.layers.handle())
         .storage(47, t.opaque.handle())
-        .storage(50, t.liveSlabs.handle())
         .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(), sampledLayout(depth),
                depthSampler_)
         .image(25, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, glass.view(), sampledLayout(glass),
@@ -328,7 +285,6 @@ bool ParticleSystem::afterFrame() {
   t.lastRequested = read.requested;
   t.longestCell = read.longest;
   t.stoppedGroups = read.stopped;
-  t.culledEntries = read.culled;
   if (read.requested <= t.header.capacity) return false;
   ++t.overflows;
   allocateTileEntries(grownCapacity(read.requested, t.maxEntries));

@@ -59,9 +59,6 @@ struct RenderSettings {
   std::string particleRender = "auto";      // auto | raster | compute
   std::string particleResolution = "full";  // full | half | quarter
   uint32_t particleTileGroups = 0;  // workgroups a particle tile's slabs go to; 0: the renderer's choice
-  // The compute renderer empties a tile's slabs behind those that surely make it opaque
-  // (kParticleCullOpticalDepth); off (--no-particle-cull) only to measure what that saves.
-  bool particleCull = true;
   uint32_t particleCount = 0;       // 0: the preset's own count
   std::string particleEmitter;      // "x,y,z": where the emitter sits; empty: the scene's smoke source
   uint32_t seed = 1;                // simulation seed (the CLI's --seed)
