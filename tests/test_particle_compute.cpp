@@ -101,6 +101,19 @@ TEST(ComputeParticles, CrowdedTilesAndAGrownEntryArray) {
                           "compute particles crowded tiles");
 }
 
+// particles-bin sums the cells' counts (one per tile and slab) in blocks of kParticleScanBlock:
+// 40,000 puffs at 320 x 180 make 20 x 12 tiles of 8 slabs, 1,920 cells in two blocks, and the
+// second block's cells start where the first block's end.
+TEST(ComputeParticles, TheCellsAreSummedInBlocks) {
+  const ComputeCase c{"smoke", "vertex", "lll"};
+  const ParticleFrame raster = renderWith(c, "raster", 320, 180, 40000);
+  const ParticleFrame compute = renderWith(c, "compute", 320, 180, 40000);
+  const double cells = stat(compute.image, "particle_tile_slabs") * 20 * 12;
+  EXPECT_GT(cells, double(gpu::kParticleScanBlock));
+  test::expectWithinBound(compute.image.ldr, raster.image.ldr, kCrowdedBound,
+                          "compute particles, cells in blocks");
+}
+
 // The light atlas (4 x 4 texels a particle, interpolated) against lighting every pixel: the same
 // lights, sampled coarsely across each puff. The bound is what it costs (lavapipe and the H200).
 TEST(ComputeParticles, AtlasLightingIsCloseToPixelLighting) {

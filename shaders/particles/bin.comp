@@ -3,7 +3,7 @@
 // particles-bin's count and scatter passes (specialization constant 0: 0 counts, 1 scatters), one
 // thread per visible particle in draw order. The count pass writes what the tiles need of the
 // particle (ParticleScreen) and counts it in every tile its disc may cover; after the prefix sum
-// (bin_scan.comp) the scatter pass visits the same tiles and appends its key at their cursors.
+// (tile_scan.comp) the scatter pass visits the same tiles and appends its key at their cursors.
 // Constant 1 is 1 when the particle's light was computed at its centre (particles-light).
 #include "particles/tiles.glsl"
 

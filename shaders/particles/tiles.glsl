@@ -1,6 +1,6 @@
 // The tiled compute renderer's data (--particle-render compute): bindings 17 to 20 beside the
 // particle system's 11 to 16. Cells are the light bins' (shared/light_bins_types.h), one per tile
-// and slab (ParticleTileHeader), so that one prefix sum (lighting/bins/bin_scan.comp) serves both.
+// and slab (ParticleTileHeader), summed in blocks by particles/tile_scan.comp.
 #ifndef LLL_PARTICLE_TILES_GLSL
 #define LLL_PARTICLE_TILES_GLSL
 #include "particles/puff.glsl"
@@ -64,6 +64,14 @@ bool particleTiles(ParticleScreen s, out uvec4 tiles) {
   tiles = uvec4(clamp(first, vec2(0.0), lastTile), clamp(last, vec2(0.0), lastTile));
   return true;
 }
+
+#ifdef PARTICLE_TILE_BLOCKS
+// particles/tile_scan.comp's sums per block of kParticleScanBlock cells: x the block's count, then
+// its first entry; y the count in float.
+layout(std430, set = 0, binding = 49) buffer ParticleTileBlockSumBlock {
+  uvec2 tileBlockSums[];
+};
+#endif
 
 // The range of tileEntries holding cell `cell`'s particles (clamped to the capacity: past it the
 // frame is drawn again with more room, ParticleSystem::afterFrame).

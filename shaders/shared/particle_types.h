@@ -88,6 +88,8 @@ LLL_CONST(uint, kParticleTileBitmapWords, 1024u);
 // most kParticleMaxSlabs (ParticleTileHeader).
 LLL_CONST(uint, kParticlesPerSlab, 4096u);
 LLL_CONST(uint, kParticleMaxSlabs, 64u);
+// Cells a workgroup of particles-bin's prefix sum takes (particles/tile_scan.comp).
+LLL_CONST(uint, kParticleScanBlock, 1024u);
 // Workgroups a tile's slabs are shared out to (ParticleTileHeader.groups): one tile in the middle of
 // a plume may hold thousands of particles and one workgroup would hold up the frame blending them.
 // Over is associative: each group blends its run of slabs into (colour, transmittance) and
@@ -112,9 +114,7 @@ LLL_CONST(uint, kPuffNoiseTexelsPerCell, 4u);
 // --particle-resolution full, 2 x 2 or 4 x 4 of them (`scale`) at half or quarter resolution. Each tile's
 // list is cut into `slabs` by draw order (slab s holds the keys k with k * slabs / visible == s, nearest
 // first), so a tile whose front slabs make it opaque never sorts or reads the rest. Its cells (LightBinCell,
-// one per tile and slab, tile-major) are summed by the light bins' prefix sum (lighting/bins/bin_scan.comp):
-// the fields it reads, requested, cellsX and cellsY, are where LightBinHeader has them (checked in
-// particle_tiles.cpp).
+// one per tile and slab, tile-major) are summed in blocks of kParticleScanBlock (particles/tile_scan.comp).
 struct ParticleTileHeader {
   uint requested;  // entries the scatter asked for, also past `capacity`
   uint capacity;   // entries tileEntries holds

@@ -162,7 +162,9 @@ class ParticleSystem {
     Pipeline count;
     Pipeline scatter;
     PipelineLayout scanLayout;
-    Pipeline scan;
+    Pipeline scan[3];  // particles/tile_scan.comp's steps
+    uint32_t scanBlocks = 0;
+    Buffer blockSums;
     PipelineLayout resolveLayout;
     Pipeline resolve;
   };

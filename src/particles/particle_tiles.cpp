@@ -2,8 +2,8 @@
 // MiniEngine's ParticleTileRender: no quad reaches the rasterizer.
 //   particles-bin        count: each visible particle (draw order) writes what the tiles need of
 //                        it and counts itself in the tiles its disc may cover; scan: a prefix sum
-//                        of the counts (the light bins' shader, lighting/bins/bin_scan.comp);
-//                        scatter: each particle appends its key to those tiles.
+//                        of the counts in blocks (particles/tile_scan.comp); scatter: each
+//                        particle appends its key to those tiles.
 //   particles-composite  workgroups per tile (groups) each sort their run of the tile's slabs
 //                        nearest first and blend every pixel front to back into (colour,
 //                        transmittance), stopping where it is opaque (lit/particles_tiles.comp);
@@ -30,6 +30,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstring>
+#include <stdexcept>
 
 #include "gpu/context.h"
 #include "particles/particle_system.h"
@@ -38,10 +39,6 @@
 namespace lll {
 
 namespace {
-// The light bins' prefix sum reads the tiles' header as its own (shared/particle_types.h).
-static_assert(offsetof(gpu::ParticleTileHeader, requested) == offsetof(gpu::LightBinHeader, requested));
-static_assert(offsetof(gpu::ParticleTileHeader, cellsX) == offsetof(gpu::LightBinHeader, cellsX));
-static_assert(offsetof(gpu::ParticleTileHeader, cellsY) == offsetof(gpu::LightBinHeader, cellsY));
 // The composite's bitmap of a slab's keys (32 a word in kParticleTileBitmapWords words) holds the
 // longest slab, ceil(visible / slabs) keys: below 2 x kParticlesPerSlab slots where the slabs are
 // bit_ceil(slots / kParticlesPerSlab), and kMaxParticles / kParticleMaxSlabs + 1 where they are capped.
@@ -110,6 +107,12 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
   t.headerBuffer = Buffer(context_, sizeof(gpu::ParticleTileHeader),
                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                           MemoryUse::Readback, "particle tiles header");
+  t.scanBlocks = uint32_t(divideRoundingUp(cells, uint64_t(gpu::kParticleScanBlock)));
+  // 8192 x 8192 pixels (the CLI's most) with 64 slabs: 16,384 blocks; Vulkan dispatches 65,535 or more.
+  if (t.scanBlocks > 65535)
+    throw std::logic_error(fmt::format("{} particle tile cells: more blocks than one dispatch holds", cells));
+  t.blockSums = Buffer(context_, uint64_t(t.scanBlocks) * sizeof(glm::uvec2),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device, "particle tiles block sums");
   t.cells = Buffer(context_, cells * sizeof(gpu::LightBinCell),
                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Device,
                    "particle tiles cells");
@@ -130,8 +133,10 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
     };
     t.count = bin(0);
     t.scatter = bin(1);
-    t.scanLayout = PipelineLayout(context_, {"lighting/bins/bin_scan.comp"});
-    t.scan = Pipeline(context_, t.scanLayout, "lighting/bins/bin_scan.comp");
+    t.scanLayout = PipelineLayout(context_, {"particles/tile_scan.comp"});
+    for (uint32_t step = 0; step < 3; ++step)
+      t.scan[step] =
+          Pipeline(context_, t.scanLayout, "particles/tile_scan.comp", SpecializationConstants{{0, step}});
     t.resolveLayout = PipelineLayout(context_, {"particles/resolve.comp"});
     t.resolve = Pipeline(context_, t.resolveLayout, "particles/resolve.comp");
   }
@@ -179,15 +184,17 @@ void ParticleSystem::binTiles(FrameContext& frame) {
     dispatch(t.count);
     frame.graph.barriers({uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
                           uses(t.cells, Use::StorageReadWrite, kCompute)});
-    // The scan reads the tiles where it reads the light bins (common/light_bins.glsl: 11 to 14).
-    t.scan.bind(cmd);
-    DescriptorWriter()
-        .storage(11, t.headerBuffer.handle())
-        .storage(12, t.cells.handle())
-        .storage(13, t.entries.handle())
-        .storage(14, t.entries.handle())
-        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.scanLayout);
-    vkCmdDispatch(cmd, 1, 1, 1);
+    DescriptorWriter scan;
+    scan.storage(17, t.headerBuffer.handle()).storage(18, t.cells.handle()).storage(49, t.blockSums.handle());
+    for (uint32_t step = 0; step < 3; ++step) {
+      if (step > 0)
+        frame.graph.barriers({uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
+                              uses(t.cells, Use::StorageReadWrite, kCompute),
+                              uses(t.blockSums, Use::StorageReadWrite, kCompute)});
+      t.scan[step].bind(cmd);
+      scan.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.scanLayout);
+      vkCmdDispatch(cmd, step == 1 ? 1 : t.scanBlocks, 1, 1);
+    }
     frame.graph.barriers(
         {uses(t.headerBuffer, Use::StorageRead, kCompute), uses(t.cells, Use::StorageReadWrite, kCompute),
          // Only read, but one shader with the count pass, which writes it.
