@@ -71,8 +71,9 @@ struct ParticleCounters {
   uvec4 draw;      // VkDrawIndirectCommand: 6 vertices per visible particle, 1 instance, 0, 0
   uvec4 dispatch;  // VkDispatchIndirectCommand of the per-particle lighting pass; w visible particles
   uvec4 alive;     // x alive particles, yzw unused
+  uvec4 atlas;     // VkDispatchIndirectCommand of atlas lighting (kParticleAtlasGroup particles a group), w unused
 };
-LLL_CHECK_SIZE(ParticleCounters, 48);
+LLL_CHECK_SIZE(ParticleCounters, 64);
 
 // The tiled compute renderer (--particle-render compute, src/particles/particle_tiles.cpp): the
 // screen in square tiles of kParticleTileSize pixels, one workgroup each; a tile's particles are
@@ -105,6 +106,9 @@ LLL_CONST(float, kParticleOpaqueTransmittance, 1.0f / 1024.0f);
 // sampled bilinearly by every pixel. Texel (i, j) of the particle at draw order k is
 // particleAtlas[k * kParticleAtlasSide^2 + j * kParticleAtlasSide + i], rgb as halves.
 LLL_CONST(uint, kParticleAtlasSide, 4u);
+// Particles a workgroup of atlas lighting takes, an invocation per texel (kMaxParticles /
+// kParticleAtlasGroup groups: within the 65,535 a dispatch holds everywhere).
+LLL_CONST(uint, kParticleAtlasGroup, 16u);
 // The puffs' noise texture (particles/puff.glsl, src/particles/puff_noise.h): value noise over a
 // lattice of kPuffNoisePeriod^2 points that repeats, kPuffNoiseTexelsPerCell texels per cell.
 LLL_CONST(uint, kPuffNoisePeriod, 64u);

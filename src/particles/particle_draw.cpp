@@ -117,7 +117,9 @@ void ParticleSystem::lightParticles(FrameContext& frame, const DrawPipelines& pi
         pipelines.light.bind(cmd);
         descriptors(frame, lighting)
             .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.lightLayout);
-        vkCmdDispatchIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, dispatch));
+        vkCmdDispatchIndirect(
+            cmd, counters_.handle(),
+            atlas_ ? offsetof(gpu::ParticleCounters, atlas) : offsetof(gpu::ParticleCounters, dispatch));
       });
 }
 
