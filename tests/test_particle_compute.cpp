@@ -195,6 +195,26 @@ TEST(ComputeParticles, GroupsBehindAnOpaqueTileStop) {
                           "opaque fog, every group against one");
 }
 
+// A million slots, the load at which a build of 2026-11-22 (69b9518) did not finish a frame within
+// 40 s on the H200, even two steps in, raster-drawn and vertex-lit in the atrium with 256 lights
+// (bench/README.md): two steps and a frame, both renderers, and the same image from both.
+TEST(ComputeParticles, AMillionSlotsTwoStepsInDrawAFrame) {
+  static const Scene scene = loadScene(SceneRequest{"atrium", 256, 1});
+  RenderSettings settings = settingsFor("lll", 128, 72);
+  settings.particles = "smoke";
+  settings.particleCount = gpu::kMaxParticles;
+  settings.particleLighting = "vertex";
+  settings.particleRender = "raster";
+  const ParticleFrame raster = renderParticles(scene, settings, 2);
+  settings.particleRender = "compute";
+  const ParticleFrame compute = renderParticles(scene, settings, 2);
+  EXPECT_EQ(raster.particles.size(), size_t(gpu::kMaxParticles));
+  EXPECT_GT(compute.counters.dispatch.w, 1000u);  // a million / 6 s spawned a second, for 1/30 s
+  EXPECT_EQ(compute.counters.dispatch.w, raster.counters.dispatch.w);
+  test::expectWithinBound(compute.image.ldr, raster.image.ldr, test::kSmokeBound,
+                          "a million slots two steps in, compute against raster");
+}
+
 // No atomic decides a colour: entries are sorted by key before blending. Lit by forward, whose
 // lights come in index order: lll's fill links a tile's lights in the order its atomics ran, so on
 // a GPU the sum over a list can round differently from run to run (the H200 showed it), as every
