@@ -6,35 +6,25 @@
 
 namespace lll {
 
-namespace {
-// The octaves' weights: the second adds detail without hiding the puff's shape.
-constexpr float kOctaveWeights[2] = {0.65f, 0.35f};
-}  // namespace
-
-float puffLatticeValue(int x, int y, int octave) {
-  const int period = int(gpu::kPuffNoisePeriod) << octave;
+float puffLatticeValue(int x, int y) {
+  const int period = int(gpu::kPuffNoisePeriod);
   const uint32_t px = uint32_t(((x % period) + period) % period),
                  py = uint32_t(((y % period) + period) % period);
-  // One multiply-xorshift round, its seed by octave: the shaders hashed this per pixel before the
-  // noise was baked.
-  uint32_t h = px * 0x8da6b343u ^ py * 0xd8163841u ^ uint32_t(octave) * 0x9e3779b9u;
+  // One multiply-xorshift round: the shaders hashed this per pixel before the noise was baked.
+  uint32_t h = px * 0x8da6b343u ^ py * 0xd8163841u;
   h = (h ^ (h >> 15u)) * 0x2c1b3c6du;
   h ^= h >> 12u;
   return float(h >> 8u) * (1.0f / 16777216.0f);
 }
 
-float puffValueNoise(glm::vec2 p, int octave) {
+float puffValueNoise(glm::vec2 p) {
   const glm::vec2 cell = glm::floor(p);
   const glm::vec2 f = p - cell;
   const glm::vec2 u = f * f * (3.0f - 2.0f * f);
   const int x = int(cell.x), y = int(cell.y);
-  const float a = puffLatticeValue(x, y, octave), b = puffLatticeValue(x + 1, y, octave);
-  const float c = puffLatticeValue(x, y + 1, octave), d = puffLatticeValue(x + 1, y + 1, octave);
+  const float a = puffLatticeValue(x, y), b = puffLatticeValue(x + 1, y);
+  const float c = puffLatticeValue(x, y + 1), d = puffLatticeValue(x + 1, y + 1);
   return glm::mix(glm::mix(a, b, u.x), glm::mix(c, d, u.x), u.y);
-}
-
-float puffNoise(glm::vec2 p) {
-  return kOctaveWeights[0] * puffValueNoise(p, 0) + kOctaveWeights[1] * puffValueNoise(2.0f * p, 1);
 }
 
 uint32_t puffNoiseSide() {
@@ -47,7 +37,7 @@ std::vector<uint8_t> bakePuffNoise() {
   std::vector<uint8_t> texels(size_t(side) * side);
   for (uint32_t y = 0; y < side; ++y)
     for (uint32_t x = 0; x < side; ++x) {
-      const float v = puffNoise((glm::vec2(x, y) + 0.5f) * perTexel);
+      const float v = puffValueNoise((glm::vec2(x, y) + 0.5f) * perTexel);
       texels[size_t(y) * side + x] = uint8_t(std::lround(v * 255.0f));
     }
   return texels;
