@@ -22,15 +22,16 @@ const uint kPerThread = kParticleScanBlock / kThreads;
 shared uint sums[kThreads];
 shared float approxSums[kThreads];
 
-// Hillis-Steele inclusive scan of sums and approxSums over the workgroup.
-void scanShared() {
+// Hillis-Steele inclusive scan of sums over the workgroup, and of approxSums with `approx` (the same
+// in every invocation).
+void scanShared(bool approx) {
   uint i = gl_LocalInvocationIndex;
   for (uint offset = 1u; offset < kThreads; offset <<= 1u) {
     uint add = i >= offset ? sums[i - offset] : 0u;
-    float addApprox = i >= offset ? approxSums[i - offset] : 0.0;
+    float addApprox = approx && i >= offset ? approxSums[i - offset] : 0.0;
     barrier();
     sums[i] += add;
-    approxSums[i] += addApprox;
+    if (approx) approxSums[i] += addApprox;
     barrier();
   }
 }
@@ -71,7 +72,7 @@ void main() {
     sums[i] = sum;
     approxSums[i] = approx;
     barrier();
-    scanShared();
+    scanShared(true);
     uint first = sums[i] - sum;
     for (uint b = begin; b < end; ++b) {
       uint own = tileBlockSums[b].x;
@@ -79,8 +80,7 @@ void main() {
       first += own;
     }
     // A total past 2^31 entries fits no storage buffer: ask for the most, which the CPU refuses.
-    if (i == kThreads - 1u)
-      tileHeader.requested = approxSums[i] >= 2147483648.0 ? 0xFFFFFFFFu : sums[i];
+    if (i == kThreads - 1u) tileHeader.requested = approxSums[i] >= 2147483648.0 ? 0xFFFFFFFFu : sums[i];
   } else {
     // Each invocation kPerThread consecutive cells.
     uint base = gl_WorkGroupID.x * kParticleScanBlock + i * kPerThread;
@@ -91,9 +91,8 @@ void main() {
       sum += counts[k];
     }
     sums[i] = sum;
-    approxSums[i] = 0.0;
     barrier();
-    scanShared();
+    scanShared(false);
     uint first = tileBlockSums[gl_WorkGroupID.x].x + sums[i] - sum;
     for (uint k = 0u; k < kPerThread; ++k) {
       if (base + k >= cells) break;

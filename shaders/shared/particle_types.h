@@ -71,7 +71,7 @@ struct ParticleCounters {
   uvec4 draw;      // VkDrawIndirectCommand: 6 vertices per visible particle, 1 instance, 0, 0
   uvec4 dispatch;  // VkDispatchIndirectCommand of the per-particle lighting pass; w visible particles
   uvec4 alive;     // x alive particles, yzw unused
-  uvec4 atlas;     // VkDispatchIndirectCommand of atlas lighting (kParticleAtlasGroup particles a group), w unused
+  uvec4 atlas;     // VkDispatchIndirectCommand of atlas lighting (kParticleAtlasGroup particles a group)
 };
 LLL_CHECK_SIZE(ParticleCounters, 64);
 
