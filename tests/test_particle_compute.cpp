@@ -108,7 +108,9 @@ TEST(ComputeParticles, TheCellsAreSummedInBlocks) {
   const ComputeCase c{"smoke", "vertex", "lll"};
   const ParticleFrame raster = renderWith(c, "raster", 320, 180, 40000);
   const ParticleFrame compute = renderWith(c, "compute", 320, 180, 40000);
-  const double cells = stat(compute.image, "particle_tile_slabs") * 20 * 12;
+  const double tiles =
+      double(divideRoundingUp(320u, gpu::kParticleTileSize) * divideRoundingUp(180u, gpu::kParticleTileSize));
+  const double cells = stat(compute.image, "particle_tile_slabs") * tiles;
   EXPECT_GT(cells, double(gpu::kParticleScanBlock));
   test::expectWithinBound(compute.image.ldr, raster.image.ldr, kCrowdedBound,
                           "compute particles, cells in blocks");

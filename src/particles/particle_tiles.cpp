@@ -184,15 +184,19 @@ void ParticleSystem::binTiles(FrameContext& frame) {
     dispatch(t.count);
     frame.graph.barriers({uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
                           uses(t.cells, Use::StorageReadWrite, kCompute)});
-    DescriptorWriter scan;
-    scan.storage(17, t.headerBuffer.handle()).storage(18, t.cells.handle()).storage(49, t.blockSums.handle());
+    // The three steps share one layout: the descriptors pushed once stay bound across them.
     for (uint32_t step = 0; step < 3; ++step) {
       if (step > 0)
         frame.graph.barriers({uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
                               uses(t.cells, Use::StorageReadWrite, kCompute),
                               uses(t.blockSums, Use::StorageReadWrite, kCompute)});
       t.scan[step].bind(cmd);
-      scan.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.scanLayout);
+      if (step == 0)
+        DescriptorWriter()
+            .storage(17, t.headerBuffer.handle())
+            .storage(18, t.cells.handle())
+            .storage(49, t.blockSums.handle())
+            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.scanLayout);
       vkCmdDispatch(cmd, step == 1 ? 1 : t.scanBlocks, 1, 1);
     }
     frame.graph.barriers(
