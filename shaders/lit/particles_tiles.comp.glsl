@@ -174,7 +174,9 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
   uvec2 range = particleTileRange(cell);
   uint count = range.y;
   if (count == 0u) return;
-  if (gl_LocalInvocationIndex == 0u) atomicMax(tileHeader.longest, count);
+  // The longest cell, for the stats: an atomic only where the value read (perhaps stale, never
+  // above the true one) does not already hold it; one address that every cell's atomic went to.
+  if (gl_LocalInvocationIndex == 0u && count > tileHeader.longest) atomicMax(tileHeader.longest, count);
   bool sortedHere = count <= kParticleTileSharedSort;
   uint slabs = tileHeader.cellsX;
   uint base = slabFirstKey(slab, slabs, visible);

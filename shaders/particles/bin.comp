@@ -2,7 +2,8 @@
 #define PARTICLE_TILES_WRITE
 // particles-bin's count and scatter passes (specialization constant 0: 0 counts, 1 scatters), one
 // thread per visible particle in draw order. The count pass writes what the tiles need of the
-// particle (ParticleScreen) and counts it in every tile its disc may cover; after the prefix sum
+// particle (ParticleScreen) and counts it in every tile its disc may cover (row by row, the tiles of
+// the disc's chord in the row: about an eighth fewer than its bounding box's); after the prefix sum
 // (tile_scan.comp) the scatter pass visits the same tiles and appends its key at their cursors.
 // Constant 1 is 1 when the particle's light was computed at its centre (particles-light).
 #include "particles/tiles.glsl"
@@ -49,8 +50,12 @@ void main() {
   uint key = visible - 1u - order;
   uint slabs = tileHeader.cellsX;
   uint slab = key * slabs / visible;  // below 2^32: kMaxParticles x kParticleMaxSlabs
-  for (uint y = tiles.y; y <= tiles.w; ++y)
-    for (uint x = tiles.x; x <= tiles.z; ++x) {
+  for (uint y = tiles.y; y <= tiles.w; ++y) {
+    // The row's tiles the disc reaches, not its whole bounding box: the disc's widest chord in the
+    // row's band (conservative by a margin against rounding: a tile left out has no pixel centre the
+    // composite would blend it at).
+    uvec2 span = particleRowTiles(s, y, tiles);
+    for (uint x = span.x; x <= span.y; ++x) {
       uint cell = (y * tileHeader.tilesX + x) * slabs + slab;
       if (kScatter == 0u) {
         atomicAdd(tileCells[cell].count, 1u);
@@ -59,4 +64,5 @@ void main() {
         if (slot < tileHeader.capacity) tileEntries[slot] = key;
       }
     }
+  }
 }

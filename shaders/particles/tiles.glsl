@@ -65,6 +65,23 @@ bool particleTiles(ParticleScreen s, out uvec4 tiles) {
   return true;
 }
 
+// The tiles of row `y` (first x, last y) that the disc of particle `s` reaches, within `tiles` (from
+// particleTiles), or an empty span (x > y). Tile (x, y) spans [x, x + 1) x [y, y + 1) times
+// kParticleTileSize particle pixels; the disc is |(p - centre) * axes.xy| < 1. Its chord across the
+// row is widest where the row comes nearest the centre; widened by a thousandth and a hundredth of a
+// pixel so rounding never leaves out a tile the composite's r2 < 1 finds a pixel in.
+uvec2 particleRowTiles(ParticleScreen s, uint y, uvec4 tiles) {
+  const float size = float(kParticleTileSize);
+  vec2 scale = abs(s.axes.xy);
+  float top = float(y) * size, bottom = top + size;
+  float dy = max(0.0, max(top - s.centre.y, s.centre.y - bottom)) * scale.y;
+  if (dy >= 1.0) return uvec2(1u, 0u);
+  float chord = sqrt(1.0 - dy * dy) / scale.x * 1.001 + 0.01;
+  float first = max(floor((s.centre.x - chord) / size), float(tiles.x));
+  float last = min(floor((s.centre.x + chord) / size), float(tiles.z));
+  return first > last ? uvec2(1u, 0u) : uvec2(first, last);
+}
+
 #ifdef PARTICLE_TILE_BLOCKS
 // particles/tile_scan.comp's sums per block of kParticleScanBlock cells: x the block's count, then
 // its first entry; y the count in float.
