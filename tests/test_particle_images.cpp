@@ -285,5 +285,44 @@ TEST(GlassAndParticles, AParticleBehindAPaneIsSeenThroughIt) {
   }
 }
 
+// A cloud of puffs through the pane, on both sides of it, at half resolution: the composite blends
+// the layer in front of the pane and the one behind it; with four workgroups a tile each layer is
+// four groups' blends, which particles-merge combines into group 0's before either resolve reads it.
+// The image must be the one group's (a merge that dropped the groups of either layer loses the
+// puffs of the slabs behind the first).
+TEST(GlassAndParticles, GroupsMergedOnBothSidesOfThePane) {
+  json preset = stillPreset();
+  preset["count"] = 16384;          // four slabs
+  preset["lifetime"] = {1.0, 1.0};  // all of them alive after a second
+  preset["emitter"] = {{"shape", "sphere"}, {"radius", 0.9}, {"offset", {0, 0, 0}}};
+  preset["size"] = {0.1};
+  preset["opacity"] = {0.25};
+  preset["emission"] = {1.5};
+  RenderSettings settings = settingsFor("lll", 160, 90);
+  settings.particles = writePreset(preset, "through-pane");
+  settings.particleEmitter = "0,0,1";  // the sphere about the pane
+  settings.particleRender = "compute";
+  settings.particleResolution = "half";
+  settings.particleTileGroups = 4;
+  const ParticleFrame many = renderParticles(paneScene(true), settings, 50);
+  settings.particleTileGroups = 1;
+  const ParticleFrame one = renderParticles(paneScene(true), settings, 50);
+  const Rendered none = render(paneScene(true), settingsFor("lll", 160, 90));
+  uint32_t inFront = 0, behind = 0;
+  for (const gpu::Particle& p : many.particles) {
+    if (!alive(p)) continue;
+    (p.positionAge.z > 1.0f ? inFront : behind) += 1;
+  }
+  EXPECT_GT(inFront, 4000u);
+  EXPECT_GT(behind, 4000u);
+  EXPECT_EQ(stat(many.image, "particle_tile_groups"), 4.0);
+  EXPECT_EQ(stat(one.image, "particle_tile_groups"), 1.0);
+  // The puffs show: the middle is brighter than without them.
+  const glm::vec3 glow = meanColor(many.image.hdr, 80, 45, 6) - meanColor(none.hdr, 80, 45, 6);
+  EXPECT_GT(glow.g, 0.2f);
+  expectWithinBound(many.image.ldr, one.image.ldr, kSmokeBound,
+                    "four groups a tile against one, about a pane");
+}
+
 }  // namespace
 }  // namespace lll

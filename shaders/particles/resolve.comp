@@ -1,11 +1,11 @@
 #version 460
-// particles-resolve: the particle layers over the frame. Each particle pixel's groups are combined
-// front to back (over is associative: group 0 holds the nearest slabs) into colour and
-// transmittance, and the frame pixel becomes colour + transmittance x scene. At full resolution the
-// frame pixel is the particle pixel; at half or quarter (--particle-resolution) a frame pixel takes
-// its four nearest particle pixels, weighted bilinearly and by how near the depth each was blended
-// against is to its own (relative difference), so smoke behind an edge is not taken from the
-// pixels of the surface in front of it.
+// particles-resolve: the particle layer over the frame: the frame pixel becomes colour +
+// transmittance x scene, from group 0's (colour, transmittance), which with more than one group a
+// tile particles-merge made the combination of them all. At full resolution the frame pixel is the
+// particle pixel; at half or quarter (--particle-resolution) a frame pixel takes its four nearest
+// particle pixels, weighted bilinearly and by how near the depth each was blended against is to its
+// own (relative difference), so smoke behind an edge is not taken from the pixels of the surface in
+// front of it.
 #include "particles/tiles.glsl"
 
 layout(local_size_x = kTileGroupSize, local_size_y = kTileGroupSize) in;
@@ -13,30 +13,10 @@ layout(set = 0, binding = 16) uniform sampler2D sceneDepth;
 layout(set = 0, binding = 21, rgba16f) uniform image2D hdr;
 layout(set = 0, binding = 24, r32f) uniform readonly image2D particleLayerDepth;
 
-// The other layer with glass in the scene (the front one when this resolves the one behind, and the
-// other way round); without glass, the same one.
-layout(std430, set = 0, binding = 36) readonly buffer OtherParticleLayerBlock {
-  uvec2 otherParticleLayers[];
-};
-
-// Colour (rgb) and transmittance (a) of the groups at particle pixel `pixel`, front to back up to the
-// first that left either layer opaque there: a group behind it may have stopped early once it saw
-// the whole tile opaque (particles-composite), so what it left is never read; what it held is hidden.
+// Colour (rgb) and transmittance (a) of the particles at particle pixel `pixel`.
 vec4 particlePixel(ivec2 pixel) {
-  vec3 colour = vec3(0.0);
-  float transmittance = 1.0, other = 1.0;
-  for (uint g = 0u; g < tileHeader.groups; ++g) {
-    uint index = particleLayerIndex(g, pixel);
-    uvec2 packed = particleLayers[index];
-    vec2 ba = unpackHalf2x16(packed.y);
-    colour += transmittance * vec3(unpackHalf2x16(packed.x), ba.x);
-    transmittance *= ba.y;
-    other *= unpackHalf2x16(otherParticleLayers[index].y).y;
-    // A group's transmittance below kParticleOpaqueTransmittance is at most it once packed as a half,
-    // and a product of transmittances is at most each of them.
-    if (min(transmittance, other) <= kParticleOpaqueTransmittance) break;
-  }
-  return vec4(colour, transmittance);
+  uvec2 packed = particleLayers[particleLayerIndex(0u, pixel)];
+  return vec4(unpackHalf2x16(packed.x), unpackHalf2x16(packed.y));
 }
 
 void main() {

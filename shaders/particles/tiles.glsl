@@ -34,14 +34,17 @@ layout(std430, set = 0, binding = 19) PARTICLE_TILES_ACCESS buffer ParticleTileE
 layout(std430, set = 0, binding = 20) PARTICLE_TILES_ACCESS buffer ParticleScreenBlock {
   ParticleScreen particleScreen[];
 };
-#ifdef PARTICLE_LAYERS_WRITE
+#if defined(PARTICLE_LAYERS_READ_WRITE)
+#define PARTICLE_LAYERS_ACCESS
+#elif defined(PARTICLE_LAYERS_WRITE)
 #define PARTICLE_LAYERS_ACCESS writeonly
 #else
 #define PARTICLE_LAYERS_ACCESS readonly
 #endif
 // Each tile group's blend of its slabs at each particle pixel, colour and transmittance as halves:
 // group g's pixel (x, y) at (g * layerHeight + y) * layerWidth + x (particles-composite writes
-// every one, particles-resolve reads them).
+// every one; with more than one group particles-merge combines them into group 0's; particles-resolve
+// reads group 0's).
 layout(std430, set = 0, binding = 23) PARTICLE_LAYERS_ACCESS buffer ParticleLayerBlock {
   uvec2 particleLayers[];
 };

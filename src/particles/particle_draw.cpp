@@ -153,6 +153,7 @@ void ParticleSystem::draw(FrameContext& frame, const LightingInterface& lighting
     if (first) {
       binTiles(frame);
       composite(frame, pipelines, lighting);
+      mergeGroups(frame);
     }
     resolve(frame, layer);
   }

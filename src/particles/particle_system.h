@@ -165,6 +165,8 @@ class ParticleSystem {
     Pipeline scan[3];  // particles/tile_scan.comp's steps
     uint32_t scanBlocks = 0;
     Buffer blockSums;
+    PipelineLayout mergeLayout;
+    Pipeline merge[2];  // particles/merge_groups.comp without and with glass (constant 0)
     PipelineLayout resolveLayout;
     Pipeline resolve;
   };
@@ -191,6 +193,8 @@ class ParticleSystem {
   void binTiles(FrameContext& frame);
   // Every layer at once: with glass in the scene, the particles in front of it and behind it.
   void composite(FrameContext& frame, const DrawPipelines& pipelines, const LightingInterface& lighting);
+  // More than one group a tile: the groups combined into group 0's layers.
+  void mergeGroups(FrameContext& frame);
   void resolve(FrameContext& frame, ParticleLayer layer);
 
   Context& context_;

@@ -9,10 +9,12 @@
 //                        transmittance), stopping where it is opaque (lit/particles_tiles.comp);
 //                        with glass in the scene, two layers at once: the particles in front of
 //                        the nearest glass and those behind it;
-//   particles-resolve    the groups combined front to back, upsampled with the depth below full
-//                        resolution, over the frame (particles/resolve.comp); with glass, the
-//                        layer behind it before the glass pass (particles-resolve-behind-glass),
-//                        the one in front after.
+//   particles-merge      with more than one group a tile: each particle pixel's groups combined
+//                        front to back into group 0's (particles/merge_groups.comp), both layers;
+//   particles-resolve    group 0's layer, upsampled with the depth below full resolution, over
+//                        the frame (particles/resolve.comp); with glass, the layer behind it
+//                        before the glass pass (particles-resolve-behind-glass), the one in front
+//                        after.
 // A tile's list is cut into slabs of the draw order (one per kParticlesPerSlab slots, up to
 // kParticleMaxSlabs): a tile sorts and reads one slab at a time, front first, and stops at the
 // slab that made it opaque. With a million particles a tile may hold a hundred thousand; sorting
@@ -23,7 +25,7 @@
 // a bitmap of the slab's range of keys in shared memory and reads them back in order (the sort it
 // replaced, in place in the entry array, cost most of a million particles' composite on the H200).
 // A group that finds a group in front of it made its whole tile opaque stops and writes nothing
-// (tiles.opaque); particles-resolve stops combining at that group.
+// (tiles.opaque); particles-merge stops combining at that group.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -137,6 +139,10 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
     for (uint32_t step = 0; step < 3; ++step)
       t.scan[step] =
           Pipeline(context_, t.scanLayout, "particles/tile_scan.comp", SpecializationConstants{{0, step}});
+    t.mergeLayout = PipelineLayout(context_, {"particles/merge_groups.comp"});
+    for (uint32_t glass = 0; glass < 2; ++glass)
+      t.merge[glass] = Pipeline(context_, t.mergeLayout, "particles/merge_groups.comp",
+                                SpecializationConstants{{0, glass}});
     t.resolveLayout = PipelineLayout(context_, {"particles/resolve.comp"});
     t.resolve = Pipeline(context_, t.resolveLayout, "particles/resolve.comp");
   }
@@ -256,20 +262,38 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
   });
 }
 
+void ParticleSystem::mergeGroups(FrameContext& frame) {
+  Tiles& t = tiles_;
+  if (t.header.groups <= 1) return;
+  const bool behind = bool(frame.targets.glassDepth);
+  std::vector<ResourceUse> used{uses(t.headerBuffer, Use::StorageRead, kCompute),
+                                uses(t.layers, Use::StorageReadWrite, kCompute)};
+  if (behind) used.push_back(uses(t.layersBehind, Use::StorageReadWrite, kCompute));
+  frame.graph.pass("particles-merge", used, [&](VkCommandBuffer cmd) {
+    t.merge[behind ? 1 : 0].bind(cmd);
+    // Without glass binding 36 is never read: the front layer stands in.
+    DescriptorWriter()
+        .storage(0, frame.uniformBuffer.handle())
+        .storage(17, t.headerBuffer.handle())
+        .storage(23, t.layers.handle())
+        .storage(36, (behind ? t.layersBehind : t.layers).handle())
+        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.mergeLayout);
+    vkCmdDispatch(cmd, divideRoundingUp(t.header.layerWidth, gpu::kTileGroupSize),
+                  divideRoundingUp(t.header.layerHeight, gpu::kTileGroupSize), 1);
+  });
+}
+
 void ParticleSystem::resolve(FrameContext& frame, ParticleLayer layer) {
   Tiles& t = tiles_;
   const FrameTargets& targets = frame.targets;
   const Image& depth = particleSampledDepth(targets, layer);
   const bool behind = layer == ParticleLayer::BehindGlass;
   const Buffer& layers = behind ? t.layersBehind : t.layers;
-  // The other layer (without glass there is one: itself) says where the pixel turned opaque too.
-  const Buffer& otherLayers = behind ? t.layers : t.layersBehind ? t.layersBehind : t.layers;
   const Image& layerDepth = behind ? t.layerDepthBehind : t.layerDepth;
-  std::vector<ResourceUse> used{
+  const std::vector<ResourceUse> used{
       uses(targets.hdr, Use::StorageReadWrite, kCompute), uses(depth, Use::Sampled, kCompute),
       uses(t.headerBuffer, Use::StorageRead, kCompute), uses(layers, Use::StorageRead, kCompute),
       uses(layerDepth, Use::StorageRead, kCompute)};
-  if (&otherLayers != &layers) used.push_back(uses(otherLayers, Use::StorageRead, kCompute));
   frame.graph.pass(
       std::string("particles-resolve") + particlePassSuffix(layer), used, [&](VkCommandBuffer cmd) {
         t.resolve.bind(cmd);
@@ -277,7 +301,6 @@ void ParticleSystem::resolve(FrameContext& frame, ParticleLayer layer) {
             .storage(0, frame.uniformBuffer.handle())
             .storage(17, t.headerBuffer.handle())
             .storage(23, layers.handle())
-            .storage(36, otherLayers.handle())
             .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(), sampledLayout(depth),
                    depthSampler_)
             .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
