@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdlib>
 #include <cstring>
 
 #include "gpu/vk_check.h"
@@ -398,6 +399,18 @@ void Context::createDevice(bool swapchain) {
   f12.shaderSampledImageArrayNonUniformIndexing = supported12.shaderSampledImageArrayNonUniformIndexing;
 
   std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  // A diagnostic for measurement runs (bench/README.md): the driver's statistics of each compute
+  // pipeline, where it offers them.
+  VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executableInfo{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+  if (std::getenv("LLL_SHADER_STATS") &&
+      hasExtension(physical_, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) {
+    executableInfo.pipelineExecutableInfo = VK_TRUE;
+    executableInfo.pNext = f13.pNext;
+    f13.pNext = &executableInfo;
+    extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+    shaderStatistics_ = true;
+  }
   if (swapchain) {
     if (!hasExtension(physical_, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
       throw InputError(fmt::format("device {} cannot present to a window (no {})", info_.name,
@@ -413,6 +426,13 @@ void Context::createDevice(bool swapchain) {
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
   cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
       vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+  if (shaderStatistics_) {
+    getPipelineExecutableProperties = reinterpret_cast<PFN_vkGetPipelineExecutablePropertiesKHR>(
+        vkGetDeviceProcAddr(device_, "vkGetPipelineExecutablePropertiesKHR"));
+    getPipelineExecutableStatistics = reinterpret_cast<PFN_vkGetPipelineExecutableStatisticsKHR>(
+        vkGetDeviceProcAddr(device_, "vkGetPipelineExecutableStatisticsKHR"));
+    shaderStatistics_ = getPipelineExecutableProperties && getPipelineExecutableStatistics;
+  }
 
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;

@@ -67,6 +67,9 @@ class Context {
   // shaderSampledImageArrayNonUniformIndexing is enabled: a shader may index a sampler array with a
   // value that differs between invocations (the visibility buffer's surface rebuild).
   bool nonUniformTextureFeatures() const { return nonUniformTextures_; }
+  // LLL_SHADER_STATS set and VK_KHR_pipeline_executable_properties there: each compute pipeline's
+  // driver statistics (registers, shared memory, ...) are printed to stderr as it is made.
+  bool shaderStatistics() const { return shaderStatistics_; }
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
                           VkMemoryPropertyFlags preferred = 0) const;
@@ -79,6 +82,8 @@ class Context {
   bool validationEnabled() const { return validation_; }
 
   PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+  PFN_vkGetPipelineExecutablePropertiesKHR getPipelineExecutableProperties = nullptr;
+  PFN_vkGetPipelineExecutableStatisticsKHR getPipelineExecutableStatistics = nullptr;
 
  private:
   static VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
@@ -107,6 +112,7 @@ class Context {
   bool visibilityBuffer_ = false;
   bool computeRaster_ = false;
   bool nonUniformTextures_ = false;
+  bool shaderStatistics_ = false;
   mutable std::mutex messagesMutex_;
   std::vector<std::string> messages_;
 };

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "gpu/context.h"
 #include "gpu/reflection.h"
@@ -156,6 +157,56 @@ void PipelineLayout::release() {
   context_ = nullptr;
 }
 
+namespace {
+
+// One line per executable of `pipeline` on stderr: "shader stats NAME {id: value, ...}: statistic
+// value, ..." (Context::shaderStatistics).
+void printShaderStatistics(Context& context, VkPipeline pipeline, const std::string& name,
+                           const SpecializationConstants& constants) {
+  VkPipelineInfoKHR info{VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR};
+  info.pipeline = pipeline;
+  uint32_t count = 0;
+  context.getPipelineExecutableProperties(context.device(), &info, &count, nullptr);
+  std::vector<VkPipelineExecutablePropertiesKHR> executables(
+      count, VkPipelineExecutablePropertiesKHR{VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR});
+  context.getPipelineExecutableProperties(context.device(), &info, &count, executables.data());
+  std::string specialization;
+  for (const auto& [id, value] : constants)
+    specialization += fmt::format("{}{}: {}", specialization.empty() ? "" : ", ", id, value);
+  for (uint32_t e = 0; e < count; ++e) {
+    VkPipelineExecutableInfoKHR executable{VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR};
+    executable.pipeline = pipeline;
+    executable.executableIndex = e;
+    uint32_t statistics = 0;
+    context.getPipelineExecutableStatistics(context.device(), &executable, &statistics, nullptr);
+    std::vector<VkPipelineExecutableStatisticKHR> values(
+        statistics, VkPipelineExecutableStatisticKHR{VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR});
+    context.getPipelineExecutableStatistics(context.device(), &executable, &statistics, values.data());
+    std::string line;
+    for (const VkPipelineExecutableStatisticKHR& v : values) {
+      std::string value;
+      switch (v.format) {
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_BOOL32_KHR:
+          value = v.value.b32 ? "true" : "false";
+          break;
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_INT64_KHR:
+          value = fmt::format("{}", v.value.i64);
+          break;
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_UINT64_KHR:
+          value = fmt::format("{}", v.value.u64);
+          break;
+        default:
+          value = fmt::format("{}", v.value.f64);
+          break;
+      }
+      line += fmt::format("{}{} {}", line.empty() ? "" : ", ", v.name, value);
+    }
+    fmt::print(stderr, "shader stats {} {{{}}} {}: {}\n", name, specialization, executables[e].name, line);
+  }
+}
+
+}  // namespace
+
 Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const GraphicsPipelineDesc& desc)
     : context_(&context), bindPoint_(VK_PIPELINE_BIND_POINT_GRAPHICS), cullMode_(desc.cullMode) {
   ShaderModule vertex(context, desc.vertexShader);
@@ -298,7 +349,9 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const std::st
                 "main",
                 spec.get()};
   info.layout = layout.handle();
+  if (context.shaderStatistics()) info.flags |= VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR;
   VK_CHECK(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
+  if (context.shaderStatistics()) printShaderStatistics(context, pipeline_, computeShader, constants);
 }
 
 Pipeline::~Pipeline() {
