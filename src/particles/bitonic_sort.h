@@ -1,8 +1,10 @@
 #pragma once
 // Sorts (key, value) pairs of 32-bit words on the GPU, ascending by key then by value: a bitonic
-// sorting network in compute. Each block of 2 x workgroup-size pairs is sorted in shared memory in
-// one dispatch; each larger merge takes one dispatch per compare distance down to the block size,
-// then one shared-memory dispatch for the rest. 2^20 pairs with 512-thread groups: 66 dispatches.
+// sorting network in compute. Each block (2,048 pairs where shared memory allows) is sorted in
+// shared memory in one dispatch; each larger merge takes its compare distances down to the block
+// size up to four at a time (one dispatch each, the elements they compare held in registers), then
+// one shared-memory dispatch for the rest. 2^20 pairs in blocks of 2,048: 25 dispatches (one step a
+// dispatch in blocks of 1,024 took 66).
 // A network, not a radix sort: no atomics and no subgroup operations (lavapipe's subgroups are 8
 // wide, NVIDIA's 32), so the order is the same on every device, ties included.
 #include <vulkan/vulkan.h>
@@ -31,12 +33,13 @@ class BitonicSort {
 
  private:
   Context& context_;
-  uint32_t threads_ = 0;
+  uint32_t block_ = 0;    // pairs a shared-memory block holds
+  uint32_t threads_ = 0;  // a workgroup's invocations
   uint32_t padded_ = 0;
   PipelineLayout layout_;
   Pipeline sortBlocks_;
   Pipeline mergeInBlocks_;
-  Pipeline mergeStep_;
+  Pipeline mergeSteps_[4];  // 1 to 4 global steps a dispatch
 };
 
 }  // namespace lll
