@@ -20,22 +20,37 @@ bool insideFrustum(vec3 view, float radius) {
   return all(lessThanEqual(outside, radius * sqrt(1.0 + tanHalf * tanHalf)));
 }
 
+// The workgroup's counts, added to the counters once: a million invocations' atomics on the same two
+// words cost most of particles-sort on the H200 (bench/README.md, 2026-12-03 seventh).
+shared uint groupAlive, groupVisible;
+
 void main() {
+  if (gl_LocalInvocationIndex == 0u) {
+    groupAlive = 0u;
+    groupVisible = 0u;
+  }
+  barrier();
   uint index = gl_GlobalInvocationID.x;
-  if (index >= sortPush.step.z) return;
-  uvec2 pair = uvec2(kParticleHiddenKey, index);
-  if (index < system.modes.z) {
-    Particle p = particles[index];
-    if (isAlive(p)) {
-      atomicAdd(particleCounters.alive.x, 1u);
-      vec3 view = (frame.view * vec4(p.positionAge.xyz, 1.0)).xyz;
-      if (insideFrustum(view, particleRadius(p))) {
-        // Positive floats order like their bits; inverted, the farthest sorts first. The depth
-        // is kept above zero so no key equals kParticleHiddenKey.
-        pair.x = ~floatBitsToUint(max(-view.z, 1e-20));
-        atomicAdd(particleCounters.dispatch.w, 1u);
+  if (index < sortPush.step.z) {
+    uvec2 pair = uvec2(kParticleHiddenKey, index);
+    if (index < system.modes.z) {
+      Particle p = particles[index];
+      if (isAlive(p)) {
+        atomicAdd(groupAlive, 1u);
+        vec3 view = (frame.view * vec4(p.positionAge.xyz, 1.0)).xyz;
+        if (insideFrustum(view, particleRadius(p))) {
+          // Positive floats order like their bits; inverted, the farthest sorts first. The depth
+          // is kept above zero so no key equals kParticleHiddenKey.
+          pair.x = ~floatBitsToUint(max(-view.z, 1e-20));
+          atomicAdd(groupVisible, 1u);
+        }
       }
     }
+    drawOrder[index] = pair;
   }
-  drawOrder[index] = pair;
+  barrier();
+  if (gl_LocalInvocationIndex == 0u) {
+    if (groupAlive > 0u) atomicAdd(particleCounters.alive.x, groupAlive);
+    if (groupVisible > 0u) atomicAdd(particleCounters.dispatch.w, groupVisible);
+  }
 }
