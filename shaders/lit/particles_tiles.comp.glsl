@@ -15,7 +15,6 @@
 // radiance is complete (vertex lighting, or unlit).
 #define PARTICLE_TILES_LONGEST_WRITE
 #define PARTICLE_LAYERS_WRITE
-#define PUFF_NOISE_SHARED
 #include "particles/scatter_lights.glsl"
 
 #include "particles/bitonic.glsl"
@@ -272,7 +271,6 @@ void main() {
     finishedPixels = 0u;
     opaqueInFront = false;
   }
-  loadPuffLattice(kThreads);
   barrier();
   bool finished = !inside;
   if (finished) atomicAdd(finishedPixels, 1u);

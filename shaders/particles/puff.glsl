@@ -6,48 +6,15 @@
 #include "particles/random.glsl"
 #include "particles/scattering.glsl"
 
-// Value noise: smoothstep-interpolated hashed lattice values over a lattice of kPuffNoisePeriod^2
-// points that repeats, the values made on the CPU (particles/puff_noise.h), a texel each. Hashing
-// per pixel cost the H200 28% of the composite pass (3.74 ms with it, 2.68 with constant noise, at
-// 65,536 vertex-lit particles); a baked texture read with the sampler's bilinear filter took 0.58 of
-// the composite's 2.46 ms (settled smoke, 1080p: the reads' latency, with few warps resident, in a
-// loop whose every step waits on the one before). The compute renderer now keeps the lattice in
-// shared memory (PUFF_NOISE_SHARED: loadPuffLattice() before the first barrier); everything else
-// reads the texture; both interpolate the same 8-bit values with the same arithmetic.
+// Value noise (smoothstep-interpolated hashed lattice values) over a lattice of kPuffNoisePeriod^2
+// points that repeats, baked on the CPU at kPuffNoiseTexelsPerCell texels per lattice cell
+// (particles/puff_noise.h) and filtered bilinearly by the sampler, which wraps. Hashing the four
+// lattice points per pixel cost the H200 28% of the composite pass (65,536 vertex-lit particles:
+// 3.74 ms with it, 2.68 with constant noise); the texture is two filtered reads.
 layout(set = 0, binding = 31) uniform sampler2D puffNoise;
 
-#ifdef PUFF_NOISE_SHARED
-// The lattice, four values a word (value i in bits 8 (i % 4) of word i / 4).
-shared uint puffLatticeWords[kPuffNoisePeriod * kPuffNoisePeriod / 4u];
-
-// Called by every invocation of the workgroup (`invocations` of them); a barrier must follow.
-void loadPuffLattice(uint invocations) {
-  for (uint w = gl_LocalInvocationIndex; w < kPuffNoisePeriod * kPuffNoisePeriod / 4u; w += invocations) {
-    ivec2 at = ivec2((w * 4u) % kPuffNoisePeriod, (w * 4u) / kPuffNoisePeriod);
-    uint word = 0u;
-    for (int i = 0; i < 4; ++i)
-      word |= uint(round(texelFetch(puffNoise, at + ivec2(i, 0), 0).r * 255.0)) << (8 * i);
-    puffLatticeWords[w] = word;
-  }
-}
-
-float puffLattice(ivec2 point) {
-  uint i = uint(point.y & int(kPuffNoisePeriod - 1u)) * kPuffNoisePeriod + uint(point.x & int(kPuffNoisePeriod - 1u));
-  return float((puffLatticeWords[i >> 2u] >> ((i & 3u) * 8u)) & 255u) / 255.0;
-}
-#else
-float puffLattice(ivec2 point) {
-  return float(uint(round(texelFetch(puffNoise, point & ivec2(kPuffNoisePeriod - 1u), 0).r * 255.0))) / 255.0;
-}
-#endif
-
 float valueNoise(vec2 p) {
-  vec2 cell = floor(p);
-  vec2 f = p - cell;
-  vec2 u = f * f * (3.0 - 2.0 * f);
-  ivec2 c = ivec2(cell);
-  return mix(mix(puffLattice(c), puffLattice(c + ivec2(1, 0)), u.x),
-             mix(puffLattice(c + ivec2(0, 1)), puffLattice(c + ivec2(1, 1)), u.x), u.y);
+  return textureLod(puffNoise, p * (1.0 / float(kPuffNoisePeriod)), 0.0).r;
 }
 
 // Density of the puff at radius^2 r2: falls smoothly to zero at the rim, broken up by two octaves

@@ -117,8 +117,7 @@ void ParticleSystem::createNoise() {
                       VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
   });
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  // Read with texelFetch (the shaders interpolate): the sampler's filter is never used.
-  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+  info.magFilter = info.minFilter = VK_FILTER_LINEAR;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
   VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &noiseSampler_));
