@@ -14,10 +14,7 @@
 layout(set = 0, binding = 31) uniform sampler2D puffNoise;
 
 float valueNoise(vec2 p) {
-  vec2 cell = floor(p);
-  vec2 f = p - cell;
-  vec2 u = f * f * (3.0 - 2.0 * f);
-  return textureLod(puffNoise, (cell + u + 0.5) * (1.0 / float(kPuffNoisePeriod)), 0.0).r;
+  return textureLod(puffNoise, p * (1.0 / float(kPuffNoisePeriod)), 0.0).r;
 }
 
 // Density of the puff at radius^2 r2: falls smoothly to zero at the rim, broken up by two octaves

@@ -28,27 +28,19 @@ float puffValueNoise(glm::vec2 p) {
 }
 
 uint32_t puffNoiseSide() {
-  return gpu::kPuffNoisePeriod;
+  return gpu::kPuffNoisePeriod * gpu::kPuffNoiseTexelsPerCell;
 }
 
 std::vector<uint8_t> bakePuffNoise() {
   const uint32_t side = puffNoiseSide();
+  const float perTexel = 1.0f / float(gpu::kPuffNoiseTexelsPerCell);
   std::vector<uint8_t> texels(size_t(side) * side);
   for (uint32_t y = 0; y < side; ++y)
-    for (uint32_t x = 0; x < side; ++x)
-      texels[size_t(y) * side + x] = uint8_t(std::lround(puffLatticeValue(int(x), int(y)) * 255.0f));
+    for (uint32_t x = 0; x < side; ++x) {
+      const float v = puffValueNoise((glm::vec2(x, y) + 0.5f) * perTexel);
+      texels[size_t(y) * side + x] = uint8_t(std::lround(v * 255.0f));
+    }
   return texels;
-}
-
-float puffNoiseFromTexels(const std::vector<uint8_t>& texels, glm::vec2 p) {
-  const glm::vec2 cell = glm::floor(p);
-  const glm::vec2 f = p - cell;
-  const glm::vec2 u = f * f * (3.0f - 2.0f * f);
-  const int mask = int(gpu::kPuffNoisePeriod) - 1, x = int(cell.x), y = int(cell.y);
-  auto at = [&](int i, int j) {
-    return float(texels[size_t(j & mask) * gpu::kPuffNoisePeriod + size_t(i & mask)]) / 255.0f;
-  };
-  return glm::mix(glm::mix(at(x, y), at(x + 1, y), u.x), glm::mix(at(x, y + 1), at(x + 1, y + 1), u.x), u.y);
 }
 
 }  // namespace lll

@@ -1,8 +1,7 @@
 #pragma once
-// The puffs' noise: smoothstep-interpolated value noise over hashed lattice values, the lattice
-// repeating every gpu::kPuffNoisePeriod points. The values are made once on the CPU into a small
-// texture, a texel per lattice point, which particles/puff.glsl interpolates (the compute
-// renderer from a copy in shared memory).
+// The puffs' noise, baked once on the CPU into a small tiling texture (particles/puff.glsl reads it
+// with bilinear filtering and wrapping): smoothstep-interpolated value noise over hashed lattice
+// values, the lattice repeating every gpu::kPuffNoisePeriod points.
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
@@ -13,12 +12,10 @@ namespace lll {
 float puffLatticeValue(int x, int y);
 // The noise at lattice coordinates `p` (periodic).
 float puffValueNoise(glm::vec2 p);
-// Side of the texture in texels: the period.
+// Side of the texture in texels: period x texels per cell.
 uint32_t puffNoiseSide();
-// The texture, row by row, as 8-bit UNORM: texel (x, y) holds lattice point (x, y)'s value.
+// The texture, row by row, as 8-bit UNORM: texel (x, y) holds the noise at its centre,
+// ((x, y) + 0.5) / texels per cell.
 std::vector<uint8_t> bakePuffNoise();
-// The noise at `p` as the shaders compute it from `texels` (bakePuffNoise's): the smoothstep
-// interpolation of the four 8-bit lattice values about it.
-float puffNoiseFromTexels(const std::vector<uint8_t>& texels, glm::vec2 p);
 
 }  // namespace lll
