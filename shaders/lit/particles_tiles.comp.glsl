@@ -166,60 +166,6 @@ uint keyOfRank(uint rank, uint base, uint words) {
   return base;  // not reached: the ranks count the bits
 }
 
-// The particle staged at `j` at this pixel: false where it does not reach it; else its radiance
-// and alpha, and whether it is behind the glass.
-bool stagedSample(uint j, vec2 pixelCentre, uvec2 framePixel, float sceneViewDepth, float glassViewDepth,
-                  out vec4 radianceAlpha, out bool isBehind) {
-  radianceAlpha = vec4(0.0);
-  isBehind = false;
-  // The shape first: most of a tile's particles miss most of its pixels.
-  ParticleShape shape = stagedShape[j];
-  if (shape.centre.z >= sceneViewDepth) return false;  // behind the scene: faded out entirely
-  isBehind = kBehindGlass && shape.centre.z >= glassViewDepth;
-  float fadeDepth = isBehind || !kBehindGlass ? sceneViewDepth : glassViewDepth;
-  vec2 offset = (pixelCentre - shape.centre.xy) * shape.axes.xy;
-  float r2 = dot(offset, offset);
-  if (r2 >= 1.0) return false;
-  ParticleLook look = stagedLook[j];
-  // The offset turned back by the particle's rotation: where the puff's pattern is read.
-  vec2 corner = vec2(shape.axes.z * offset.x + shape.axes.w * offset.y,
-                     shape.axes.z * offset.y - shape.axes.w * offset.x);
-  float alpha = look.albedoOpacity.a *
-                puffDensity(r2, corner * 1.5 + vec2(shape.centre.w, look.baseRadiance.w)) *
-                softFade(fadeDepth, shape.centre.z);
-  vec3 radiance = look.baseRadiance.rgb;
-  if (kLightSource == 1u) {
-    vec3 world =
-        look.worldRadius.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * look.worldRadius.w;
-    radiance += look.albedoOpacity.rgb * puffLight(world, offset, r2, framePixel, shape.centre.z);
-  } else if (kLightSource == 2u) {
-    radiance += look.albedoOpacity.rgb * atlasLight(look.order, offset);
-  }
-  radianceAlpha = vec4(radiance, alpha);
-  return true;
-}
-
-// Blends a sample into its layer, front to back; `finished` once the layer is opaque (opaque in
-// front: nothing behind shows; opaque behind: the front particles all came before).
-void blendSample(vec4 radianceAlpha, bool isBehind, inout vec4 front, inout vec4 behind, inout bool finished) {
-  vec4 layer = isBehind ? behind : front;
-  layer.rgb += layer.a * radianceAlpha.rgb * radianceAlpha.a;
-  layer.a *= 1.0 - radianceAlpha.a * (1.0 - system.blend.x);
-  if (isBehind)
-    behind = layer;
-  else
-    front = layer;
-  if (layer.a < kParticleOpaqueTransmittance) {
-    finished = true;
-    atomicAdd(finishedPixels, 1u);
-  }
-}
-
-// Staged particles a pixel evaluates before blending them: two with the particle's light ready
-// (vertex, atlas or none), so one's noise reads are in flight with the other's; one with pixel
-// lighting, whose light walk needs the registers.
-const uint kPairStep = kLightSource == 1u ? 1u : 2u;
-
 // Blends cell `cell`'s particles into the pixel, nearest first (barriers: call it uniformly): into
 // `front` (colour, transmittance), or with glass into `behind` those behind glassViewDepth.
 // `pixel` is in particle pixels, `framePixel` the frame pixel at its centre (for the lights).
@@ -255,15 +201,42 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
     }
     barrier();
     uint n = min(kThreads, count - start);
-    for (uint j = 0u; j < n && !finished; j += kPairStep) {
-      vec4 first, second;
-      bool firstBehind, secondBehind;
-      bool hitFirst = stagedSample(j, pixelCentre, framePixel, sceneViewDepth, glassViewDepth, first, firstBehind);
-      bool hitSecond = kPairStep == 2u && j + 1u < n &&
-                       stagedSample(j + 1u, pixelCentre, framePixel, sceneViewDepth, glassViewDepth, second,
-                                    secondBehind);
-      if (hitFirst) blendSample(first, firstBehind, front, behind, finished);
-      if (hitSecond && !finished) blendSample(second, secondBehind, front, behind, finished);
+    for (uint j = 0u; j < n && !finished; ++j) {
+      // The shape first: most of a tile's particles miss most of its pixels.
+      ParticleShape shape = stagedShape[j];
+      if (shape.centre.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
+      bool isBehind = kBehindGlass && shape.centre.z >= glassViewDepth;
+      float fadeDepth = isBehind || !kBehindGlass ? sceneViewDepth : glassViewDepth;
+      vec2 offset = (pixelCentre - shape.centre.xy) * shape.axes.xy;
+      float r2 = dot(offset, offset);
+      if (r2 >= 1.0) continue;
+      ParticleLook look = stagedLook[j];
+      // The offset turned back by the particle's rotation: where the puff's pattern is read.
+      vec2 corner = vec2(shape.axes.z * offset.x + shape.axes.w * offset.y,
+                         shape.axes.z * offset.y - shape.axes.w * offset.x);
+      float alpha = look.albedoOpacity.a *
+                    puffDensity(r2, corner * 1.5 + vec2(shape.centre.w, look.baseRadiance.w)) *
+                    softFade(fadeDepth, shape.centre.z);
+      vec3 radiance = look.baseRadiance.rgb;
+      if (kLightSource == 1u) {
+        vec3 world =
+            look.worldRadius.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * look.worldRadius.w;
+        radiance += look.albedoOpacity.rgb * puffLight(world, offset, r2, framePixel, shape.centre.z);
+      } else if (kLightSource == 2u) {
+        radiance += look.albedoOpacity.rgb * atlasLight(look.order, offset);
+      }
+      vec4 layer = isBehind ? behind : front;
+      layer.rgb += layer.a * radiance * alpha;
+      layer.a *= 1.0 - alpha * (1.0 - system.blend.x);
+      if (isBehind)
+        behind = layer;
+      else
+        front = layer;
+      // Opaque in front: nothing behind shows; opaque behind: the front particles all came before.
+      if (layer.a < kParticleOpaqueTransmittance) {
+        finished = true;
+        atomicAdd(finishedPixels, 1u);
+      }
     }
     barrier();
     if (finishedPixels == kThreads) return;  // read between two barriers: the same in every invocation
