@@ -3,8 +3,9 @@
 // particles-bin's count and scatter passes (specialization constant 0: 0 counts, 1 scatters), one
 // thread per visible particle in draw order. The count pass writes what the tiles need of the
 // particle (ParticleScreen) and counts it in every tile its disc may cover (row by row, the tiles of
-// the disc's chord in the row: about an eighth fewer than its bounding box's); after the prefix sum
-// (tile_scan.comp) the scatter pass visits the same tiles and appends its key at their cursors.
+// the disc's chord in the row: a sixth fewer than its bounding box's for settled smoke); after the
+// prefix sum (tile_scan.comp) the scatter pass visits the same tiles and appends its key at their
+// cursors.
 // Constant 1 is 1 when the particle's light was computed at its centre (particles-light).
 #include "particles/tiles.glsl"
 

@@ -68,7 +68,7 @@ bool particleTiles(ParticleScreen s, out uvec4 tiles) {
   return true;
 }
 
-// The tiles of row `y` (first x, last y) that the disc of particle `s` reaches, within `tiles` (from
+// The tiles of row `y` (first x, last x) that the disc of particle `s` reaches, within `tiles` (from
 // particleTiles), or an empty span (x > y). Tile (x, y) spans [x, x + 1) x [y, y + 1) times
 // kParticleTileSize particle pixels; the disc is |(p - centre) * axes.xy| < 1. Its chord across the
 // row is widest where the row comes nearest the centre; widened by a thousandth and a hundredth of a
