@@ -81,7 +81,8 @@ LLL_CHECK_SIZE(ParticleCounters, 64);
 // marked in a bitmap of 32 x kParticleTileBitmapWords keys), and blended kParticleTileSize^2 at a
 // time. On the H200 the bitmap beat the sort from 65 keys on (settled smoke at 1080p, every particle
 // pass: 65,536 at full resolution 3.93 -> 3.70 ms against sorting up to 1,024, at quarter 1.47 ->
-// 1.44, a million at quarter 8.78 -> 8.70).
+// 1.44, a million at quarter 8.78 -> 8.70). Sorted by rank since (three barriers), up to 64 or 256
+// keys made no difference (composite 2.49 / 2.50 ms, bench/README.md 2026-12-03 seventh).
 LLL_CONST(uint, kParticleTileSize, 16u);
 LLL_CONST(uint, kParticleTileSharedSort, 64u);
 LLL_CONST(uint, kParticleTileBitmapWords, 1024u);

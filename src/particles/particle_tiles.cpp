@@ -47,6 +47,8 @@ namespace {
 static_assert(gpu::kMaxParticles / gpu::kParticleMaxSlabs + 1 <= 32 * gpu::kParticleTileBitmapWords);
 static_assert(2 * gpu::kParticlesPerSlab <= 32 * gpu::kParticleTileBitmapWords);
 static_assert(gpu::kParticleTileSharedSort <= gpu::kParticleTileBitmapWords);
+static_assert(gpu::kParticleTileSharedSort <=
+              gpu::kParticleTileSize * gpu::kParticleTileSize);  // one key an invocation
 // Initial entries per tile (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerTile = 64;
 }  // namespace
