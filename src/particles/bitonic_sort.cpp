@@ -17,7 +17,6 @@ namespace {
 // too few workgroups for the sort from scratch). The device's limits may ask for less.
 constexpr uint32_t kPreferredBlock = 2048;
 constexpr uint32_t kPreferredThreads = 512;
-constexpr uint32_t kMaxFusedSteps = 4;  // 16 pairs in registers an invocation
 
 uint32_t chooseBlock(const VkPhysicalDeviceLimits& limits) {
   const uint32_t block =

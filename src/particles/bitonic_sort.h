@@ -32,6 +32,9 @@ class BitonicSort {
   void record(VkCommandBuffer cmd, const Buffer& pairs) const;
 
  private:
+  // Global compare distances one dispatch takes at most (2^4 = 16 pairs in registers an invocation).
+  static constexpr uint32_t kMaxFusedSteps = 4;
+
   Context& context_;
   uint32_t block_ = 0;    // pairs a shared-memory block holds
   uint32_t threads_ = 0;  // a workgroup's invocations
@@ -39,7 +42,7 @@ class BitonicSort {
   PipelineLayout layout_;
   Pipeline sortBlocks_;
   Pipeline mergeInBlocks_;
-  Pipeline mergeSteps_[4];  // 1 to 4 global steps a dispatch
+  Pipeline mergeSteps_[kMaxFusedSteps];  // 1 to kMaxFusedSteps global steps a dispatch
 };
 
 }  // namespace lll
