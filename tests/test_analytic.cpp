@@ -80,14 +80,18 @@ glm::vec3 shadingNormal(const PlaneMaterial& pm) {
 // glTF 2.0 Appendix B: mix(dielectric_brdf, metal_brdf, metallic), where the dielectric is
 // fresnel_mix(ior 1.5: f0 = 0.04, diffuse, specular) and the metal conductor_fresnel(base,
 // specular); specular = D * V (GGX, height-correlated Smith), Fresnel by Schlick. Times n.l.
-glm::vec3 brdfCosine(const PlaneMaterial& pm, glm::vec3 n, glm::vec3 v, glm::vec3 l) {
+// `distributionAlpha` > 0 replaces the surface's alpha in the distribution D alone (a virtual point
+// light's lobe, widened by the patch it stands for).
+glm::vec3 brdfCosine(const PlaneMaterial& pm, glm::vec3 n, glm::vec3 v, glm::vec3 l,
+                     float distributionAlpha = 0.0f) {
   const float nl = glm::dot(n, l);
   if (nl <= 0.0f) return glm::vec3(0.0f);
   const float nv = glm::max(glm::dot(n, v), 1e-4f);
   const glm::vec3 h = glm::normalize(l + v);
   const float nh = glm::max(glm::dot(n, h), 0.0f), vh = glm::clamp(glm::dot(v, h), 0.0f, 1.0f);
   const float a = glm::max(pm.roughness * pm.roughness, 1e-3f), a2 = a * a;
-  const float d = a2 / (kPi * std::pow(nh * nh * (a2 - 1.0f) + 1.0f, 2.0f));
+  const float ad = distributionAlpha > 0.0f ? distributionAlpha : a, ad2 = ad * ad;
+  const float d = ad2 / (kPi * std::pow(nh * nh * (ad2 - 1.0f) + 1.0f, 2.0f));
   const float vis =
       0.5f / (nl * std::sqrt(nv * nv * (1 - a2) + a2) + nv * std::sqrt(nl * nl * (1 - a2) + a2));
   const float specular = d * vis;
@@ -136,7 +140,13 @@ glm::vec3 expectedRadiance(const Scene& scene, const PlaneMaterial& pm, const Li
                            const glm::vec3& p) {
   const glm::vec3 v = glm::normalize(scene.cameras[0].eye - p);
   const glm::vec3 l = glm::normalize(light.position - p);
-  return light.color * light.intensity * attenuation(light, p) * brdfCosine(pm, shadingNormal(pm), v, l);
+  float distributionAlpha = 0.0f;
+  if (light.type == LightType::Vpl)  // the surface's alpha plus half the angle of the VPL's patch
+    distributionAlpha = std::min(std::max(pm.roughness * pm.roughness, 1e-3f) +
+                                     0.5f * light.nearDistance / glm::length(light.position - p),
+                                 1.0f);
+  return light.color * light.intensity * attenuation(light, p) *
+         brdfCosine(pm, shadingNormal(pm), v, l, distributionAlpha);
 }
 
 // The world point seen at pixel (x, y) of the top camera: intersect the pixel's ray with y = 0.
@@ -296,6 +306,23 @@ TEST_P(Analytic, VirtualPointLightHemisphereAndNearClamp) {
   const Counts c = checkAgainstFormula(scene, {}, light, GetParam());
   EXPECT_GT(c.lit, 1200);
   EXPECT_GT(c.dark, 2500);  // behind its hemisphere (x < ~-0.29) and beyond its range
+}
+
+// A VPL over a glossy plane (roughness 0.3, alpha 0.09) stands for a patch of its near distance, 0.4
+// m: its highlight is the lobe of alpha + 0.2 m / d (0.49 right under it, 1 m up), not a point
+// light's glint, whose peak is 25 times higher. Straight down, 1.2 m off the camera's axis so the
+// highlight sits off the plane's centre.
+TEST_P(Analytic, VirtualPointLightHighlightIsItsPatchs) {
+  PlaneMaterial pm;
+  pm.roughness = 0.3f;
+  Scene scene = planeScene(pm);
+  Light light = pointLight({1.2f, 1.0f, 0.0f}, 8.0f, 6.0f);
+  light.type = LightType::Vpl;
+  light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+  light.nearDistance = 0.4f;
+  scene.lights = {light};
+  const Counts c = checkAgainstFormula(scene, pm, light, GetParam());
+  EXPECT_GT(c.lit, 2000);
 }
 
 // The sun (a directional light, in the frame's uniforms, never in a list): E lux from 50 degrees

@@ -62,7 +62,8 @@ struct BrdfTerms {
   vec3 diffuse;  // the dielectric's Lambert lobe before its Fresnel weight: (1 - metallic) baseColor / pi
   vec3 f0;       // mix(0.04, baseColor, metallic)
   float nDotV;
-  float a2;      // alpha^2 (alpha = roughness^2, at least 1e-3)
+  float alpha;   // roughness^2, at least 1e-3
+  float a2;      // alpha^2
   float smithV;  // the view's square root in the height-correlated Smith term
 };
 
@@ -71,8 +72,8 @@ BrdfTerms brdfTerms(Surface s) {
   t.diffuse = (1.0 - s.metallic) * s.baseColor / kPi;
   t.f0 = mix(vec3(kDielectricF0), s.baseColor, s.metallic);
   t.nDotV = max(dot(s.normal, s.view), 1e-4);
-  float alphaRoughness = max(s.roughness * s.roughness, 1e-3);
-  t.a2 = alphaRoughness * alphaRoughness;
+  t.alpha = max(s.roughness * s.roughness, 1e-3);
+  t.a2 = t.alpha * t.alpha;
   t.smithV = sqrt(t.nDotV * t.nDotV * (1.0 - t.a2) + t.a2);
   return t;
 }
@@ -85,26 +86,31 @@ BrdfTerms brdfTerms(Surface s) {
 // darkens partly metallic surfaces (0.86x the specification at metallic 0.5).
 // The GGX distribution a2 / (pi dd^2), the Smith visibility 0.5 / sum and the 1 / q share one
 // reciprocal, and Schlick's (1 - vDotH)^5 is multiplied out: this runs once per light per pixel.
-// brdfLobesOver gives the diffuse and specular lobes apart, before the factor nDotL.
-void brdfLobesOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q, out vec3 diffuseLobe,
+// brdfLobesOver gives the diffuse and specular lobes apart, before the factor nDotL; `a2d` is the
+// distribution's alpha^2: t.a2, or a virtual point light's wider lobe (vplDistributionA2).
+void brdfLobesOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q, float a2d, out vec3 diffuseLobe,
                    out vec3 specularLobe) {
   vec3 h = halfVector(l, s.view);
   float nDotH = max(dot(s.normal, h), 0.0);
   float vDotH = clamp(dot(s.view, h), 0.0, 1.0);  // rounding can exceed 1 when l == v
   float m = 1.0 - vDotH, m2 = m * m, schlick = m2 * m2 * m;
-  float dd = nDotH * nDotH * (t.a2 - 1.0) + 1.0;
+  float dd = nDotH * nDotH * (a2d - 1.0) + 1.0;
   float sum = nDotL * t.smithV + t.nDotV * sqrt(nDotL * nDotL * (1.0 - t.a2) + t.a2);
-  float r = 1.0 / (q * dd * dd * sum);  // every factor > 0: nDotL, nDotV > 0, dd >= a2, q >= 1e-4
+  float r = 1.0 / (q * dd * dd * sum);  // every factor > 0: nDotL, nDotV > 0, dd >= a2d, q >= 1e-4
   vec3 diffuse = t.diffuse * ((1.0 - kDielectricF0) * (1.0 - schlick));  // 1 - the dielectric's F
   vec3 fresnel = t.f0 + (1.0 - t.f0) * schlick;
   diffuseLobe = diffuse * (dd * dd * sum * r);
-  specularLobe = fresnel * (t.a2 * (0.5 / kPi) * r);
+  specularLobe = fresnel * (a2d * (0.5 / kPi) * r);
+}
+
+vec3 brdfCosineOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q, float a2d) {
+  vec3 diffuseLobe, specularLobe;
+  brdfLobesOver(s, t, l, nDotL, q, a2d, diffuseLobe, specularLobe);
+  return (diffuseLobe + specularLobe) * nDotL;
 }
 
 vec3 brdfCosineOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q) {
-  vec3 diffuseLobe, specularLobe;
-  brdfLobesOver(s, t, l, nDotL, q, diffuseLobe, specularLobe);
-  return (diffuseLobe + specularLobe) * nDotL;
+  return brdfCosineOver(s, t, l, nDotL, q, t.a2);
 }
 
 // BRDF * cos(theta_l) for light arriving from unit direction l.
@@ -195,6 +201,22 @@ float lightWindow(GpuLight light, vec3 toLight, vec3 l, float distance, float di
   return rangeWindowSquared(distanceSquared / (range * range)) * spotAttenuation(light, l);
 }
 
+// The GGX distribution's alpha (and alpha^2) for a light `inverseDistance` away: a virtual point light stands
+// for the patch of surface it was merged from, a disc of about its near distance in radius (half
+// its cell: gi/vpl_hierarchy.h), so its specular lobe is the surface's widened by half the angle
+// that patch subtends (the half vector turns half as far as the light), alpha + near / (2 d),
+// at most 1: the lobe of an area light, not a point's glint. Every other light keeps t.a2.
+float lightDistributionAlpha(GpuLight light, float alpha, float inverseDistance) {
+  if (!kSceneHasVpls || !lightIs(light, kLightVpl)) return alpha;
+  return min(alpha + 0.5 * light.spotParams.x * inverseDistance, 1.0);
+}
+
+float lightDistributionA2(GpuLight light, BrdfTerms t, float inverseDistance) {
+  if (!kSceneHasVpls || !lightIs(light, kLightVpl)) return t.a2;
+  float alpha = lightDistributionAlpha(light, t.alpha, inverseDistance);
+  return alpha * alpha;
+}
+
 // How much of a light's intensity reaches a point `toLight` away from it (`distance` its length,
 // `l` its direction): inverse square times the light's window (range sphere, spot cone or box).
 float lightAttenuation(GpuLight light, vec3 toLight, vec3 l, float distance) {
@@ -229,8 +251,8 @@ vec3 evaluateLight(GpuLight light, Surface s, BrdfTerms t) {
   float window = lightWindow(light, toLight, l, distance, distanceSquared, q);
   if (window <= 0.0) return vec3(0.0);
   if (kLocalShadows) window *= localShadow(light, s.position, s.normal, l, distance);
-  return brdfCosineOver(s, t, l, nDotL, max(q, 1e-4)) * light.colorIntensity.rgb *
-         (light.colorIntensity.w * window);
+  return brdfCosineOver(s, t, l, nDotL, max(q, 1e-4), lightDistributionA2(light, t, inverseDistance)) *
+         light.colorIntensity.rgb * (light.colorIntensity.w * window);
 }
 
 // The same radiance in its two lobes, added to `diffuse` and `specular` (the VPL filter scales only
@@ -251,7 +273,8 @@ void evaluateLightLobes(GpuLight light, Surface s, BrdfTerms t, inout vec3 diffu
   if (window <= 0.0) return;
   if (kLocalShadows) window *= localShadow(light, s.position, s.normal, l, distance);
   vec3 diffuseLobe, specularLobe;
-  brdfLobesOver(s, t, l, nDotL, max(q, 1e-4), diffuseLobe, specularLobe);
+  brdfLobesOver(s, t, l, nDotL, max(q, 1e-4), lightDistributionA2(light, t, inverseDistance), diffuseLobe,
+                specularLobe);
   vec3 scale = light.colorIntensity.rgb * (light.colorIntensity.w * window * nDotL);
   diffuse += diffuseLobe * scale;
   specular += specularLobe * scale;

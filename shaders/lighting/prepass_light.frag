@@ -51,7 +51,9 @@ LightTerms lightTerms(LightVolume volume, ivec2 pixel) {
   float nDotH = max(dot(n, h), 0.0);
   float fresnelWeight = pow(1.0 - clamp(dot(v, h), 0.0, 1.0), 5.0);
   float alphaRoughness = max(stored.roughness * stored.roughness, 1e-3);
-  vec3 lobe = irradiance * distributionGgx(nDotH, alphaRoughness) *
+  // A virtual point light's lobe is wider than the surface's (common/brdf.glsl).
+  float distributionAlpha = lightDistributionAlpha(light, alphaRoughness, 1.0 / max(distance, 1e-6));
+  vec3 lobe = irradiance * distributionGgx(nDotH, distributionAlpha) *
               visibilitySmithGgxCorrelated(nDotL, nDotV, alphaRoughness);
   float c = storedF0(stored.metallic);
   terms.diffuse = vec4(irradiance * (1.0 - fresnelWeight), 0.0);
