@@ -14,8 +14,9 @@
 #define EVERY_CLASS_PLACE
 #include "gi/every_class.glsl"
 
-layout(set = 0, binding = 39, rgba32ui) uniform writeonly uimage2D vplSample;
-layout(set = 0, binding = 48, rgba32ui) uniform writeonly uimage2D vplAlbedoKey;
+layout(set = 0, binding = 38, rgba16f) uniform writeonly image2D vplIndirect;
+layout(set = 0, binding = 39, rgba32ui) uniform writeonly uimage2D vplSurfaceKey;
+layout(set = 0, binding = 48, rg32ui) uniform writeonly uimage2D vplAlbedoKey;
 
 // The light sums of one pixel: everything but the VPLs, and the VPLs of the pixel's class (their
 // diffuse and specular lobes apart).
@@ -71,34 +72,31 @@ uint interleavedRole(uint index, uint firstVpl, uint pixelClass) {
 }
 
 // What gi/vpl_filter.comp needs of this pixel; `lit` false where it must add nothing (no surface,
-// or a debug view replaced the colour). vplSample, all the gather reads of a neighbour in one
-// 16-byte texel: x the view-space normal (octahedral, two snorm16), y and z.x the class's diffuse
-// light over the albedo key (halves), z.y the view depth as a half (-1: no surface, or not a
-// class's sample), w the specular light over f0 (packRgb9e5; a pixel that is no sample keeps it as
-// halves in x and w, its own light exact as before). Two texels a sample, as before,
-// read 24 bytes and made vpl-filter 0.60 ms of the atrium's 1.93 at K = 4. vplAlbedoKey, read for
-// the pixel itself: the albedo key and metallic (halves) and the mark: 0 a sample, 1 a pixel that
-// evaluated every class, 2 + its slot one whose classes vpl-classes lit; the filter takes such a
-// pixel's own light and leaves it out of its neighbours' gathers.
+// or a debug view replaced the colour): per pixel the diffuse light and view depth (vplIndirect),
+// the normal, specular light and mark the gather reads of every neighbour (vplSurfaceKey: two
+// reads a sample, as before the lobes were apart) and the keys only the pixel's own filtering reads
+// (vplAlbedoKey). A pixel that evaluated every class is marked (key w 1), one
+// whose classes vpl-classes lit by its slot (w 2 + slot): the filter takes its own light and
+// leaves it out of its neighbours' gathers.
 void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, InterleavedSums sums, mat4 view) {
   if (!lit) {
-    imageStore(vplSample, ivec2(pixel), uvec4(0u, 0u, packHalf2x16(vec2(0.0, -1.0)), 0u));
+    imageStore(vplIndirect, ivec2(pixel), vec4(0.0, 0.0, 0.0, -1.0));
+    imageStore(vplSurfaceKey, ivec2(pixel), uvec4(0u));
     imageStore(vplAlbedoKey, ivec2(pixel), uvec4(0u));
     return;
   }
   vec3 key = albedoKey(s.baseColor);
   vec3 normal = normalize(mat3(view) * s.normal);
-  vec3 diffuse = sums.indirect / key;
+  imageStore(vplIndirect, ivec2(pixel), vec4(sums.indirect / key, viewDepth));
   vec3 specular = sums.indirectSpecular / specularKey(key, s.metallic);
-  uint mark = sums.pixelClass == kEveryClass ? 1u : (sums.pixelClass == kClassesElsewhere ? 2u + sums.slot : 0u);
-  // A pixel that is no sample needs no normal: its specular light goes as halves in x and w.
-  imageStore(vplSample, ivec2(pixel),
-             mark == 0u ? uvec4(packSnorm2x16(octahedralEncode(normal)), packHalf2x16(diffuse.rg),
-                                packHalf2x16(vec2(diffuse.b, viewDepth)), packRgb9e5(specular))
-                        : uvec4(packHalf2x16(specular.rg), packHalf2x16(diffuse.rg),
-                                packHalf2x16(vec2(diffuse.b, -1.0)), packHalf2x16(vec2(specular.b, 0.0))));
+  imageStore(
+      vplSurfaceKey, ivec2(pixel),
+      uvec4(packSnorm2x16(octahedralEncode(normal)), packHalf2x16(specular.rg),
+            packHalf2x16(vec2(specular.b, 0.0)),
+            sums.pixelClass == kEveryClass ? 1u
+                                           : (sums.pixelClass == kClassesElsewhere ? 2u + sums.slot : 0u)));
   imageStore(vplAlbedoKey, ivec2(pixel),
-             uvec4(packHalf2x16(key.rg), packHalf2x16(vec2(key.b, s.metallic)), mark, 0u));
+             uvec4(packHalf2x16(key.rg), packHalf2x16(vec2(key.b, s.metallic)), 0u, 0u));
 }
 
 #endif

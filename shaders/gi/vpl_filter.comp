@@ -25,8 +25,9 @@ layout(std430, set = 0, binding = 0) readonly buffer FrameBlock {  // see common
   FrameUniforms frame;
 };
 layout(set = 0, binding = 13, rgba16f) uniform image2D hdr;
-layout(set = 0, binding = 39, rgba32ui) uniform readonly uimage2D vplSample;      // see storeInterleaved
-layout(set = 0, binding = 48, rgba32ui) uniform readonly uimage2D vplAlbedoKey;
+layout(set = 0, binding = 38, rgba16f) uniform readonly image2D vplIndirect;
+layout(set = 0, binding = 39, rgba32ui) uniform readonly uimage2D vplSurfaceKey;
+layout(set = 0, binding = 48, rg32ui) uniform readonly uimage2D vplAlbedoKey;
 
 // The point of the view-space surface seen through pixel centre `p` at view depth `z`.
 vec3 viewPosition(ivec2 p, float z) {
@@ -47,15 +48,16 @@ void gatherClass(ivec2 p, ivec2 size, ivec2 start, int k, int near, int far, vec
       if (abs(dx) <= near && abs(dy) <= near) continue;
       ivec2 q = p + ivec2(dx, dy);
       if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-      uvec4 sample_ = imageLoad(vplSample, q);
-      vec2 blueDepth = unpackHalf2x16(sample_.z);
-      if (!(blueDepth.y > 0.0)) continue;  // no surface, or it holds every class: no class's sample
-      vec3 n = octahedralDecode(unpackSnorm2x16(sample_.x));
+      vec4 sample_ = imageLoad(vplIndirect, q);
+      if (sample_.w < 0.0) continue;
+      uvec4 qKey = imageLoad(vplSurfaceKey, q);
+      if (qKey.w != 0u) continue;  // holds every class: no class's sample
+      vec3 n = octahedralDecode(unpackSnorm2x16(qKey.x));
       if (dot(n, normal) < kNormalCos) continue;
-      if (abs(dot(viewPosition(q, blueDepth.y) - position, normal)) > planeTolerance) continue;
+      if (abs(dot(viewPosition(q, sample_.w) - position, normal)) > planeTolerance) continue;
       float w = float((far + 1 - abs(dx)) * (far + 1 - abs(dy)));
-      classSum += w * vec3(unpackHalf2x16(sample_.y), blueDepth.x);
-      classSpecular += w * unpackRgb9e5(sample_.w);
+      classSum += w * sample_.rgb;
+      classSpecular += w * vec3(unpackHalf2x16(qKey.y), unpackHalf2x16(qKey.z).x);
       classWeight += w;
     }
   }
@@ -65,21 +67,23 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = ivec2(frame.viewport.xy);
   if (p.x >= size.x || p.y >= size.y) return;
-  uvec4 centre = imageLoad(vplSample, p);
-  uvec4 albedoKeys = imageLoad(vplAlbedoKey, p);
-  vec2 blueDepth = unpackHalf2x16(centre.z);
-  uint mark = albedoKeys.z;
-  if (mark == 0u && !(blueDepth.y > 0.0)) return;  // no surface, or a debug view
+  vec4 centre = imageLoad(vplIndirect, p);
+  if (centre.w < 0.0) return;  // no surface, or a debug view
+  uvec4 centreKey = imageLoad(vplSurfaceKey, p);
+  vec3 normal = octahedralDecode(unpackSnorm2x16(centreKey.x));
+  uvec2 albedoKeys = imageLoad(vplAlbedoKey, p).xy;
   vec2 keyB = unpackHalf2x16(albedoKeys.y);  // the key's blue, and metallic
   vec3 key = vec3(unpackHalf2x16(albedoKeys.x), keyB.x), specular = specularKey(key, keyB.y);
-  if (mark == 1u) {  // it evaluated every class itself (a glossy metal)
-    vec3 own = vec3(unpackHalf2x16(centre.y), blueDepth.x) * key +
-               vec3(unpackHalf2x16(centre.x), unpackHalf2x16(centre.w).x) * specular;
-    imageStore(hdr, p, imageLoad(hdr, p) + vec4(own, 0.0));
+  if (centreKey.w == 1u) {  // it evaluated every class itself (a glossy metal)
+    imageStore(hdr, p,
+               imageLoad(hdr, p) +
+                   vec4(centre.rgb * key +
+                            vec3(unpackHalf2x16(centreKey.y), unpackHalf2x16(centreKey.z).x) * specular,
+                        0.0));
     return;
   }
-  if (mark >= 2u) {  // vpl-classes lit its classes in slot mark - 2, in class order
-    uint first = (mark - 2u) * kVplClasses;
+  if (centreKey.w >= 2u) {  // vpl-classes lit its classes in slot w - 2, in class order
+    uint first = (centreKey.w - 2u) * kVplClasses;
     vec3 classes = vec3(0.0);
     for (uint c = 0u; c < kVplClasses; ++c) {
       uvec2 light = everyClassLight[first + c];
@@ -88,9 +92,8 @@ void main() {
     imageStore(hdr, p, imageLoad(hdr, p) + vec4(classes, 0.0));
     return;
   }
-  vec3 normal = octahedralDecode(unpackSnorm2x16(centre.x));
-  vec3 position = viewPosition(p, blueDepth.y);
-  float planeTolerance = kPlaneTolerance * blueDepth.y;
+  vec3 position = viewPosition(p, centre.w);
+  float planeTolerance = kPlaneTolerance * centre.w;
 
   // One class at a time (no per-class arrays: at k = 4 they spilled, 9.5 ms at 1080p on the H200):
   // along each axis a class sits at one or two offsets within k-1 pixels.

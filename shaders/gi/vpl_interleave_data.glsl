@@ -1,5 +1,5 @@
 // What the interleaved VPL shading and its filter agree on (gi/interleaved_vpls.glsl,
-// gi/vpl_filter.comp): the pattern, the albedo key, the normal's and the specular light's encodings.
+// gi/vpl_filter.comp): the pattern, the albedo key and the normal's encoding.
 #ifndef LLL_VPL_INTERLEAVE_DATA_GLSL
 #define LLL_VPL_INTERLEAVE_DATA_GLSL
 
@@ -42,27 +42,6 @@ vec3 octahedralDecode(vec2 e) {
   vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
   if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
   return normalize(n);
-}
-
-// RGB as a shared-exponent 9:9:9:5 number (the layout of VK_FORMAT_E5B9G9R9_UFLOAT_PACK32, from
-// EXT_texture_shared_exponent), for light >= 0: each channel a 9-bit fraction of the largest one's
-// power of two, so a channel is exact to 1/512 of the brightest. The filter's samples carry their
-// specular light so, to fit one 16-byte texel with the diffuse light as halves.
-uint packRgb9e5(vec3 rgb) {
-  vec3 c = clamp(rgb, vec3(0.0), vec3(65408.0));  // 511/512 * 2^16, the largest
-  float largest = max(max(c.r, c.g), max(c.b, 1e-30));
-  int exponent = max(-16, int(floor(log2(largest)))) + 16;  // biased by 15, plus one
-  float scale = exp2(float(exponent - 24));                 // 2^(exponent - 15 - 9)
-  if (floor(largest / scale + 0.5) >= 512.0) {              // rounds up to the next power
-    scale *= 2.0;
-    ++exponent;
-  }
-  uvec3 q = uvec3(min(floor(c / scale + 0.5), vec3(511.0)));
-  return q.r | (q.g << 9) | (q.b << 18) | (uint(exponent) << 27);
-}
-
-vec3 unpackRgb9e5(uint v) {
-  return vec3(v & 511u, (v >> 9) & 511u, (v >> 18) & 511u) * exp2(float(int(v >> 27) - 24));
 }
 
 #endif

@@ -48,17 +48,20 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
   light_ = Buffer(context, uint64_t(slots_) * classes * 8, kSlots, MemoryUse::Device,
                   "glossy metal slots' light per class");
   constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT;
-  sample_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
-                  "interleaved VPL sample");
-  albedoKey_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
+  indirect_ = Image(context, targets.width, targets.height, VK_FORMAT_R16G16B16A16_SFLOAT, kStorage,
+                    "interleaved VPL light");
+  key_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
+               "interleaved VPL surface key");
+  albedoKey_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32_UINT, kStorage,
                      "interleaved VPL albedo key");
   layout_ = PipelineLayout(context, {"gi/vpl_filter.comp"}, {}, constants());
   filter_ = Pipeline(context, layout_, "gi/vpl_filter.comp", constants());
 }
 
 std::vector<ResourceUse> InterleavedVpls::shadingWrites() const {
-  return {uses(sample_, Use::StorageWrite, kCompute), uses(albedoKey_, Use::StorageWrite, kCompute),
-          uses(header_, Use::StorageReadWrite, kCompute), uses(surfaces_, Use::StorageWrite, kCompute)};
+  return {uses(indirect_, Use::StorageWrite, kCompute), uses(key_, Use::StorageWrite, kCompute),
+          uses(albedoKey_, Use::StorageWrite, kCompute), uses(header_, Use::StorageReadWrite, kCompute),
+          uses(surfaces_, Use::StorageWrite, kCompute)};
 }
 
 void InterleavedVpls::resetSlots(FrameContext& frame) {
@@ -82,7 +85,8 @@ void InterleavedVpls::dispatchClasses(VkCommandBuffer cmd) const {
 }
 
 DescriptorWriter& InterleavedVpls::bindImages(DescriptorWriter& writer) const {
-  return writer.image(39, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, sample_.view(), VK_IMAGE_LAYOUT_GENERAL)
+  return writer.image(38, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, indirect_.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(39, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, key_.view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(48, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, albedoKey_.view(), VK_IMAGE_LAYOUT_GENERAL);
 }
 
@@ -97,8 +101,9 @@ void InterleavedVpls::filter(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
   frame.graph.pass(
       "vpl-filter",
-      {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(sample_, Use::StorageRead, kCompute),
-       uses(albedoKey_, Use::StorageRead, kCompute), uses(light_, Use::StorageRead, kCompute)},
+      {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::StorageRead, kCompute),
+       uses(key_, Use::StorageRead, kCompute), uses(albedoKey_, Use::StorageRead, kCompute),
+       uses(light_, Use::StorageRead, kCompute)},
       [&](VkCommandBuffer cmd) {
         filter_.bind(cmd);
         DescriptorWriter writer;
@@ -110,10 +115,10 @@ void InterleavedVpls::filter(FrameContext& frame) {
 }
 
 std::vector<std::pair<std::string, double>> InterleavedVpls::stats() const {
-  const double pixels = double(sample_.width()) * sample_.height();
+  const double pixels = double(indirect_.width()) * indirect_.height();
   return {{"vpl-interleave", double(side_)},
           {"vpl_interleave_bytes",
-           pixels * (16.0 + 16.0) + double(header_.size() + surfaces_.size() + light_.size())}};
+           pixels * (8.0 + 16.0 + 8.0) + double(header_.size() + surfaces_.size() + light_.size())}};
 }
 
 }  // namespace lll

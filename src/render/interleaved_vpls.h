@@ -45,7 +45,7 @@ class InterleavedVpls {
   // The pattern's side and whether vpl-classes runs, for the shading passes and the filter
   // (constant_id 33, 62).
   SpecializationConstants constants() const { return {{33, side_}, {62, classesElsewhere_ ? 1u : 0u}}; }
-  // The opaque pass's writes to the per-pixel images and the slots (bindings 39, 48, 44, 45).
+  // The opaque pass's writes to the per-pixel images and the slots (bindings 38, 39, 48, 44, 45).
   std::vector<ResourceUse> shadingWrites() const;
   // Empties the slots (before the opaque pass), with classesElsewhere().
   void resetSlots(FrameContext& frame);
@@ -66,11 +66,11 @@ class InterleavedVpls {
  private:
   Context& context_;
   uint32_t side_;
-  Image sample_;     // RGBA32UI: what the gather reads of a neighbour (gi/interleaved_vpls.glsl's
-                     // storeInterleaved): normal, the class's diffuse light over the albedo key, view
-                     // depth (-1: no surface or no class's sample), specular light over f0
-  Image albedoKey_;  // RGBA32UI: the albedo key and metallic as halves, the pixel's mark (0 a sample,
-                     // 1 every class in place, 2 + its slot for vpl-classes'), read for the pixel itself
+  Image indirect_;   // RGBA16F: the class's VPL diffuse light over the albedo key, w view depth (-1: none)
+  Image key_;        // RGBA32UI: x the view-space normal (octahedral, snorm16 x 2), y z the class's VPL
+                     // specular light over f0 (halves), w 0, 1 for a pixel that evaluated every
+                     // class, 2 + its slot for vpl-classes' (what the gather reads of a neighbour)
+  Image albedoKey_;  // RG32UI: the albedo key and metallic as halves (read for the pixel itself)
   bool classesElsewhere_ = false;
   // Glossy-metal pixels vpl-classes can take; the rest evaluate in place. One without
   // classesElsewhere(): the shading and filter shaders declare the slots' buffers either way.
