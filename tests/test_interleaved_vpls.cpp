@@ -125,6 +125,32 @@ TEST(InterleavedVpls, TheGatherCarriesLightNotTexture) {
   EXPECT_GT(d.psnr, 33.0);
 }
 
+// Where a pixel's surface is narrower than the pattern (a column's edge, a rim, a silhouette), no
+// neighbour on it brings some classes: with lll's class lists the filter gives the pixel an edge slot
+// and vpl-edges lights those classes on its own surface; tiled, whose grid does not keep the classes
+// apart, stands the classes found for the missing ones. The same VPLs, and without interleaving the
+// same image (Gi.EveryTechniqueMatchesForwardWithTheSameVpls): lll's interleaved image is nearer.
+TEST(InterleavedVpls, EdgePixelsLightTheClassesTheyLack) {
+  SceneRequest request{"atrium"};
+  request.gi.mode = "vpl-only";
+  const Scene scene = loadScene(request);
+  RenderSettings settings;
+  settings.width = 320;
+  settings.height = 180;
+  settings.technique = "lll";
+  settings.vplInterleave = 1;
+  const test::Rendered whole = test::render(scene, settings);
+  settings.vplInterleave = 4;
+  const test::Rendered lll = test::render(scene, settings);
+  settings.technique = "tiled";
+  const test::Rendered tiled = test::render(scene, settings);
+  const ImageDifference withEdges = compareImages(lll.ldr, whole.ldr);
+  const ImageDifference without = compareImages(tiled.ldr, whole.ldr);
+  std::printf("[ gi ] atrium, --vpl-interleave 4 against 1: lll (edge slots) %.2f dB, tiled %.2f dB\n",
+              withEdges.psnr, without.psnr);
+  EXPECT_GT(withEdges.psnr, without.psnr + 1.0);
+}
+
 // A glossy metal's VPL light is a spray of sharp glints: its pixels have every class and the gather
 // leaves them as they are. The Cornell room made of polished metal: the same image as without
 // interleaving (the light summed in another order: 1/255 at most); the room made rougher, and the

@@ -16,7 +16,7 @@
 
 layout(set = 0, binding = 38, rgba16f) uniform writeonly image2D vplIndirect;
 layout(set = 0, binding = 39, rgba32ui) uniform writeonly uimage2D vplSurfaceKey;
-layout(set = 0, binding = 48, rg32ui) uniform writeonly uimage2D vplAlbedoKey;
+layout(set = 0, binding = 48, rgba32ui) uniform writeonly uimage2D vplAlbedoKey;
 
 // The light sums of one pixel: everything but the VPLs, and the VPLs of the pixel's class (their
 // diffuse and specular lobes apart).
@@ -56,7 +56,7 @@ void placeEveryClassPixel(inout InterleavedSums sums, uvec2 pixel, Surface s, fl
   if (slot % 64u == 0u) atomicAdd(everyClass.groups, 1u);
   everyClassSurfaces[slot] =
       EveryClassSurface(vec4(s.position, viewDepth), vec4(s.normal, s.metallic),
-                        vec4(s.baseColor, s.roughness), uvec4(pixel.x | (pixel.y << 16), 0u, 0u, 0u));
+                        vec4(s.baseColor, s.roughness), uvec4(pixel.x | (pixel.y << 16), 0xFFFFFFFFu, 0u, 0u));
   sums.pixelClass = kClassesElsewhere;
   sums.slot = slot;
 }
@@ -75,7 +75,8 @@ uint interleavedRole(uint index, uint firstVpl, uint pixelClass) {
 // or a debug view replaced the colour): per pixel the diffuse light and view depth (vplIndirect),
 // the normal, specular light and mark the gather reads of every neighbour (vplSurfaceKey: two
 // reads a sample, as before the lobes were apart) and the keys only the pixel's own filtering reads
-// (vplAlbedoKey). A pixel that evaluated every class is marked (key w 1), one
+// (vplAlbedoKey: base colour, whose albedo key the filter takes, metallic, and the roughness an
+// edge slot's surface needs). A pixel that evaluated every class is marked (key w 1), one
 // whose classes vpl-classes lit by its slot (w 2 + slot): the filter takes its own light and
 // leaves it out of its neighbours' gathers.
 void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, InterleavedSums sums, mat4 view) {
@@ -95,8 +96,8 @@ void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, Interle
             packHalf2x16(vec2(specular.b, 0.0)),
             sums.pixelClass == kEveryClass ? 1u
                                            : (sums.pixelClass == kClassesElsewhere ? 2u + sums.slot : 0u)));
-  imageStore(vplAlbedoKey, ivec2(pixel),
-             uvec4(packHalf2x16(key.rg), packHalf2x16(vec2(key.b, s.metallic)), 0u, 0u));
+  imageStore(vplAlbedoKey, ivec2(pixel), uvec4(packHalf2x16(s.baseColor.rg), packHalf2x16(vec2(s.baseColor.b, s.metallic)),
+                                               floatBitsToUint(s.roughness), 0u));
 }
 
 #endif

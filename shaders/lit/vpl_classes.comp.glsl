@@ -1,6 +1,7 @@
 // vpl-classes (--vpl-interleave where the lighting interface keeps the VPL classes apart, lll's
 // class lists): workgroup (x, y) lights class y of the VPLs on the 64 glossy-metal pixels of slots
-// 64x.. that shade-opaque placed (gi/every_class.glsl), so that such a pixel's K*K walks run side by
+// 64x.. that shade-opaque placed (gi/every_class.glsl); as vpl-edges, the classes vpl-filter found
+// no neighbour for on the pixels of its edge slots, so that such a pixel's K*K walks run side by
 // side instead of one after another in a workgroup whose other pixels walk one class (H200, 5,144
 // VPLs at K = 4: shade-opaque 1.84 ms with them walking every class, 1.01 with no pixel doing so).
 #include "common/lighting.glsl"
@@ -26,6 +27,7 @@ void main() {
   s.emissive = vec3(0.0);
   uvec2 pixel = uvec2(e.pixel.x & 0xFFFFu, e.pixel.x >> 16);
   uint vplClass = gl_WorkGroupID.y;
+  if ((e.pixel.y & (1u << vplClass)) == 0u) return;  // an edge slot that has this class
   vec3 light = lightSurfacePart(s, pixel, e.positionDepth.w, 1u + vplClass);
   everyClassLight[slot * kVplClasses + vplClass] =
       uvec2(packHalf2x16(light.rg), packHalf2x16(vec2(light.b, 0.0)));

@@ -2,33 +2,36 @@
 // lists, LightingInterface::listParts > 1), shared by C++ and GLSL: shade-opaque lights a glossy
 // metal pixel, which must have every class (gi/vpl_interleave_data.glsl), by the lights before the
 // VPLs only, and places its surface in a slot; "vpl-classes" lights each slot's classes on
-// workgroups of their own (one class each); vpl-filter adds them up. Written once here; see
-// shared.h for the rules.
+// workgroups of their own (one class each); vpl-filter adds them up. The edge slots, a second set:
+// vpl-filter places a pixel none of whose neighbours on its surface brings some class (an edge, a
+// sliver narrower than the pattern) with the classes it lacks; "vpl-edges" (the same shader) lights
+// them and "vpl-edges-add" adds them to the pixel. Written once here; see shared.h for the rules.
 #ifndef LLL_EVERY_CLASS_TYPES_H
 #define LLL_EVERY_CLASS_TYPES_H
 #include "shared/shared.h"
 
 LLL_NAMESPACE_BEGIN
 
-// vpl-classes' indirect dispatch (x groups of 64 slots, y the classes, z 1), then the slots.
+// vpl-classes' indirect dispatch (x groups of 64 slots, y the classes, z 1), then the slots, then
+// vpl-edges-add's dispatch (x the same groups, y z 1).
 struct EveryClassHeader {
-  uint groups;    // workgroups of 64 slots: one more each time a slot that is a multiple of 64 is taken
-  uint classes;   // K*K
-  uint one;       // 1
-  uint pixels;    // slots asked for, also past `capacity` (those pixels evaluate every class in place)
-  uint capacity;  // slots the buffers hold
-  uint pad0;
-  uint pad1;
-  uint pad2;
+  uint groups;     // workgroups of 64 slots: one more each time a slot that is a multiple of 64 is taken
+  uint classes;    // K*K
+  uint one;        // 1
+  uint pixels;     // slots asked for, also past `capacity` (those pixels evaluate every class in place)
+  uint capacity;   // slots the buffers hold
+  uint addGroups;  // = groups, for the edge slots' vpl-edges-add
+  uint addOneY;    // 1
+  uint addOneZ;    // 1
 };
 LLL_CHECK_SIZE(EveryClassHeader, 32);
 
-// A slot: the surface as the lights need it.
+// A slot: the surface as the lights need it, and the classes to light.
 struct EveryClassSurface {
   vec4 positionDepth;       // world position, view depth
   vec4 normalMetallic;      // shading normal, metallic
   vec4 baseColorRoughness;  // base colour, roughness
-  uvec4 pixel;              // x: the pixel, x | y << 16
+  uvec4 pixel;              // x: the pixel, x | y << 16; y: the classes to light, a bit each
 };
 LLL_CHECK_SIZE(EveryClassSurface, 64);
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstddef>
 
 #include "gpu/context.h"
 #include "render/gpu_scene.h"
@@ -47,15 +48,31 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
                      "glossy metal slots' surfaces");
   light_ = Buffer(context, uint64_t(slots_) * classes * 8, kSlots, MemoryUse::Device,
                   "glossy metal slots' light per class");
+  // Edge slots for an eighth of the pixels (the atrium's VPLs at K = 4: 0.6% lack a class at 1080p,
+  // more at lower resolutions, where more of the surfaces are narrower than the pattern).
+  if (classesElsewhere_) edgeSlots_ = std::max(1u, targets.width * targets.height / 8);
+  requireStorageBufferFits(context, uint64_t(edgeSlots_) * classes, 8, "the VPL edge slots' light per class",
+                           "slots x classes", "use a lower resolution or a smaller --vpl-interleave");
+  edgeHeader_ = Buffer(context, sizeof(gpu::EveryClassHeader),
+                       kSlots | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                       MemoryUse::Device, "VPL edge slots' header");
+  edgeSurfaces_ = Buffer(context, uint64_t(edgeSlots_) * sizeof(gpu::EveryClassSurface), kSlots,
+                         MemoryUse::Device, "VPL edge slots' surfaces");
+  edgeLight_ = Buffer(context, uint64_t(edgeSlots_) * classes * 8, kSlots, MemoryUse::Device,
+                      "VPL edge slots' light per class");
   constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT;
   indirect_ = Image(context, targets.width, targets.height, VK_FORMAT_R16G16B16A16_SFLOAT, kStorage,
                     "interleaved VPL light");
   key_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
                "interleaved VPL surface key");
-  albedoKey_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32_UINT, kStorage,
+  albedoKey_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
                      "interleaved VPL albedo key");
   layout_ = PipelineLayout(context, {"gi/vpl_filter.comp"}, {}, constants());
   filter_ = Pipeline(context, layout_, "gi/vpl_filter.comp", constants());
+  if (classesElsewhere_) {
+    addLayout_ = PipelineLayout(context, {"gi/vpl_edges_add.comp"}, {}, constants());
+    add_ = Pipeline(context, addLayout_, "gi/vpl_edges_add.comp", constants());
+  }
 }
 
 std::vector<ResourceUse> InterleavedVpls::shadingWrites() const {
@@ -66,8 +83,12 @@ std::vector<ResourceUse> InterleavedVpls::shadingWrites() const {
 
 void InterleavedVpls::resetSlots(FrameContext& frame) {
   frame.graph.step({uses(header_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
-    const gpu::EveryClassHeader start{0, side_ * side_, 1, 0, slots_, 0, 0, 0};
+    const gpu::EveryClassHeader start{0, side_ * side_, 1, 0, slots_, 0, 1, 1};
     vkCmdUpdateBuffer(cmd, header_.handle(), 0, sizeof(start), &start);
+  });
+  frame.graph.step({uses(edgeHeader_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
+    const gpu::EveryClassHeader start{0, side_ * side_, 1, 0, edgeSlots_, 0, 1, 1};
+    vkCmdUpdateBuffer(cmd, edgeHeader_.handle(), 0, sizeof(start), &start);
   });
 }
 
@@ -82,6 +103,37 @@ DescriptorWriter& InterleavedVpls::bindSlots(DescriptorWriter& writer) const {
 
 void InterleavedVpls::dispatchClasses(VkCommandBuffer cmd) const {
   vkCmdDispatchIndirect(cmd, header_.handle(), 0);
+}
+
+std::vector<ResourceUse> InterleavedVpls::edgesUses() const {
+  return {uses(edgeHeader_, Use::IndirectRead), uses(edgeHeader_, Use::StorageRead, kCompute),
+          uses(edgeSurfaces_, Use::StorageRead, kCompute), uses(edgeLight_, Use::StorageWrite, kCompute)};
+}
+
+DescriptorWriter& InterleavedVpls::bindEdgeSlots(DescriptorWriter& writer) const {
+  return writer.storage(44, edgeHeader_.handle())
+      .storage(45, edgeSurfaces_.handle())
+      .storage(46, edgeLight_.handle());
+}
+
+void InterleavedVpls::dispatchEdges(VkCommandBuffer cmd) const {
+  vkCmdDispatchIndirect(cmd, edgeHeader_.handle(), 0);
+}
+
+void InterleavedVpls::addEdges(FrameContext& frame) {
+  const FrameTargets& t = frame.targets;
+  frame.graph.pass(
+      "vpl-edges-add",
+      {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(edgeHeader_, Use::IndirectRead),
+       uses(edgeHeader_, Use::StorageRead, kCompute), uses(edgeSurfaces_, Use::StorageRead, kCompute),
+       uses(edgeLight_, Use::StorageRead, kCompute)},
+      [&](VkCommandBuffer cmd) {
+        add_.bind(cmd);
+        DescriptorWriter writer;
+        writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
+        bindEdgeSlots(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, addLayout_);
+        vkCmdDispatchIndirect(cmd, edgeHeader_.handle(), offsetof(gpu::EveryClassHeader, addGroups));
+      });
 }
 
 DescriptorWriter& InterleavedVpls::bindImages(DescriptorWriter& writer) const {
@@ -103,13 +155,17 @@ void InterleavedVpls::filter(FrameContext& frame) {
       "vpl-filter",
       {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::StorageRead, kCompute),
        uses(key_, Use::StorageRead, kCompute), uses(albedoKey_, Use::StorageRead, kCompute),
-       uses(light_, Use::StorageRead, kCompute)},
+       uses(light_, Use::StorageRead, kCompute), uses(edgeHeader_, Use::StorageReadWrite, kCompute),
+       uses(edgeSurfaces_, Use::StorageWrite, kCompute)},
       [&](VkCommandBuffer cmd) {
         filter_.bind(cmd);
         DescriptorWriter writer;
         writer.storage(0, frame.uniformBuffer.handle())
             .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
-        bindSlots(bindImages(writer)).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+        bindSlots(bindImages(writer))
+            .storage(50, edgeHeader_.handle())
+            .storage(51, edgeSurfaces_.handle())
+            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
         dispatchPerPixel(cmd, t);
       });
 }
@@ -118,7 +174,8 @@ std::vector<std::pair<std::string, double>> InterleavedVpls::stats() const {
   const double pixels = double(indirect_.width()) * indirect_.height();
   return {{"vpl-interleave", double(side_)},
           {"vpl_interleave_bytes",
-           pixels * (8.0 + 16.0 + 8.0) + double(header_.size() + surfaces_.size() + light_.size())}};
+           pixels * (8.0 + 16.0 + 16.0) + double(header_.size() + surfaces_.size() + light_.size()) +
+               double(edgeHeader_.size() + edgeSurfaces_.size() + edgeLight_.size())}};
 }
 
 }  // namespace lll

@@ -313,6 +313,18 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
                            interleaved_->dispatchClasses(cmd);
                          });
       if (interleaved_) interleaved_->filter(frame);
+      if (interleaved_ && interleaved_->classesElsewhere()) {
+        // The classes vpl-filter found no neighbour for, lit on the edge pixels' own surfaces.
+        frame.graph.pass("vpl-edges", interleaved_->edgesUses() + lighting_.reads(kCompute),
+                         [&](VkCommandBuffer cmd) {
+                           vplClasses_.bind(cmd);
+                           DescriptorWriter writer = litDescriptors(frame);
+                           interleaved_->bindEdgeSlots(writer).push(
+                               context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, vplClassesLayout_);
+                           interleaved_->dispatchEdges(cmd);
+                         });
+        interleaved_->addEdges(frame);
+      }
       return;
   }
 }
