@@ -1,5 +1,6 @@
-// The glossy metals' VPL classes lit elsewhere (shared/every_class_types.h): shade-opaque takes the
-// slots (EVERY_CLASS_PLACE), vpl-classes lights them (EVERY_CLASS_LIGHT), vpl-filter reads the light.
+// VPL classes lit elsewhere (shared/every_class_types.h): shade-opaque (the glossy metals) and
+// vpl-filter (the edge pixels) take the slots (EVERY_CLASS_PLACE), vpl-classes lights them
+// (EVERY_CLASS_LIGHT), vpl-slots-add reads the light.
 #ifndef LLL_EVERY_CLASS_GLSL
 #define LLL_EVERY_CLASS_GLSL
 #include "shared/every_class_types.h"

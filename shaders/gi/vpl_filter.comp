@@ -8,23 +8,16 @@
 // are summed, since the classes split the VPLs between them. A class no neighbour within k-1 brings
 // (p is at an edge) is looked for in the next ring out, to 2k-1 pixels (atrium, K = 4, 640x360 on
 // lavapipe: 36.4 -> 37.2 dB; the wide ring for every class blurs more than it helps, 36.5); one
-// not found there either: where vpl-classes runs (lll's class lists) the pixel takes an edge slot
-// and vpl-edges lights the classes it lacks on its own surface (the atrium at K = 4, 1080p: 0.6% of
+// not found there either: where vpl-classes runs (lll's class lists) the pixel takes a slot after
+// the glossy metals' and vpl-classes lights the classes it lacks on its own surface (the atrium at K = 4, 1080p: 0.6% of
 // the pixels, a third of the squared error against K = 1); else, or with every slot taken, it is
 // stood for by the mean of the classes found (the sum scaled by k*k over their number). The diffuse sum is multiplied back by p's albedo key, the specular one by p's f0
 // (gi/vpl_interleave_data.glsl). A pixel that evaluated every class (a glossy metal) keeps its own
 // sum and is no sample.
+#define EVERY_CLASS_PLACE  // the edge pixels' slots
 #include "gi/every_class.glsl"
 #include "gi/vpl_interleave_data.glsl"
 #include "shared/gpu_types.h"
-
-// The edge slots (shared/every_class_types.h), with kVplClassesPass.
-layout(std430, set = 0, binding = 50) buffer EdgeHeaderBlock {
-  EveryClassHeader edges;
-};
-layout(std430, set = 0, binding = 51) writeonly buffer EdgeSurfaceBlock {
-  EveryClassSurface edgeSurfaces[];
-};
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -93,16 +86,7 @@ void main() {
                         0.0));
     return;
   }
-  if (centreKey.w >= 2u) {  // vpl-classes lit its classes in slot w - 2, in class order
-    uint first = (centreKey.w - 2u) * kVplClasses;
-    vec3 classes = vec3(0.0);
-    for (uint c = 0u; c < kVplClasses; ++c) {
-      uvec2 light = everyClassLight[first + c];
-      classes += vec3(unpackHalf2x16(light.x), unpackHalf2x16(light.y).x);
-    }
-    imageStore(hdr, p, imageLoad(hdr, p) + vec4(classes, 0.0));
-    return;
-  }
+  if (centreKey.w >= 2u) return;  // vpl-classes lights its classes in slot w - 2, vpl-slots-add adds them
   vec3 position = viewPosition(p, centre.w);
   float planeTolerance = kPlaneTolerance * centre.w;
 
@@ -135,21 +119,21 @@ void main() {
     }
   }
   vec3 indirect = sum * key + specularSum * specular;
-  // Classes missing where vpl-classes runs: the pixel takes an edge slot, whose missing classes
-  // vpl-edges lights and vpl-edges-add adds (with every slot taken, the found classes stand for the
+  // Classes missing where vpl-classes runs: the pixel takes a slot, whose missing classes
+  // vpl-classes lights and vpl-slots-add adds (with every slot taken, the found classes stand for the
   // rest as below).
   bool slotted = false;
   if (kVplClassesPass && missing != 0u) {
-    uint slot = atomicAdd(edges.pixels, 1u);
-    slotted = slot < edges.capacity;
+    uint slot = atomicAdd(everyClass.pixels, 1u);
+    slotted = slot < everyClass.capacity;
     if (slotted) {
       if (slot % 64u == 0u) {
-        atomicAdd(edges.groups, 1u);
-        atomicAdd(edges.addGroups, 1u);
+        atomicAdd(everyClass.groups, 1u);
+        atomicAdd(everyClass.addGroups, 1u);
       }
       // The world position and normal from the view-space ones (the view's rotation is orthonormal).
       mat3 toWorld = transpose(mat3(frame.view));
-      edgeSurfaces[slot] = EveryClassSurface(
+      everyClassSurfaces[slot] = EveryClassSurface(
           vec4(frame.cameraPosition.xyz + toWorld * position, centre.w), vec4(toWorld * normal, blueMetallic.y),
           vec4(baseColor, uintBitsToFloat(albedoKeys.z)), uvec4(uint(p.x) | (uint(p.y) << 16), missing, 0u, 0u));
     }

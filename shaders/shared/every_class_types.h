@@ -1,11 +1,11 @@
 // --vpl-interleave where the lighting interface keeps each class of VPLs apart (lll's class
-// lists, LightingInterface::listParts > 1), shared by C++ and GLSL: shade-opaque lights a glossy
-// metal pixel, which must have every class (gi/vpl_interleave_data.glsl), by the lights before the
-// VPLs only, and places its surface in a slot; "vpl-classes" lights each slot's classes on
-// workgroups of their own (one class each); vpl-filter adds them up. The edge slots, a second set:
-// vpl-filter places a pixel none of whose neighbours on its surface brings some class (an edge, a
-// sliver narrower than the pattern) with the classes it lacks; "vpl-edges" (the same shader) lights
-// them and "vpl-edges-add" adds them to the pixel. Written once here; see shared.h for the rules.
+// lists, LightingInterface::listParts > 1), shared by C++ and GLSL: pixels that need classes lit on
+// their own surface take slots. shade-opaque places a glossy metal's pixel, which must have every
+// class (gi/vpl_interleave_data.glsl), and lights it by the lights before the VPLs only; vpl-filter
+// places, after them, a pixel none of whose neighbours on its surface brings some classes (an edge,
+// a sliver narrower than the pattern), with those classes, after adding the ones it found.
+// "vpl-classes" then lights each slot's classes on workgroups of their own (one class each) and
+// "vpl-slots-add" adds them to the pixels. Written once here; see shared.h for the rules.
 #ifndef LLL_EVERY_CLASS_TYPES_H
 #define LLL_EVERY_CLASS_TYPES_H
 #include "shared/shared.h"
@@ -13,14 +13,14 @@
 LLL_NAMESPACE_BEGIN
 
 // vpl-classes' indirect dispatch (x groups of 64 slots, y the classes, z 1), then the slots, then
-// vpl-edges-add's dispatch (x the same groups, y z 1).
+// vpl-slots-add's dispatch (x the same groups, y z 1).
 struct EveryClassHeader {
   uint groups;     // workgroups of 64 slots: one more each time a slot that is a multiple of 64 is taken
   uint classes;    // K*K
   uint one;        // 1
   uint pixels;     // slots asked for, also past `capacity` (those pixels evaluate every class in place)
   uint capacity;   // slots the buffers hold
-  uint addGroups;  // = groups, for the edge slots' vpl-edges-add
+  uint addGroups;  // = groups, for vpl-slots-add
   uint addOneY;    // 1
   uint addOneZ;    // 1
 };

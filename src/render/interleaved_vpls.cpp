@@ -34,8 +34,10 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
                                  bool classesElsewhere)
     : context_(context), side_(side), classesElsewhere_(classesElsewhere) {
   checkVplInterleave(side);
-  // Slots for an eighth of the pixels: in a frame with more glossy metal the rest walk every class
-  // themselves (the same light, slower).
+  // Slots for an eighth of the pixels, the glossy metals' and the edge pixels' (the atrium's VPLs at
+  // K = 4, 1080p: 0.6% of the pixels lack a class; more at lower resolutions, where more surfaces are
+  // narrower than the pattern): in a frame with more, the metals beyond walk every class themselves
+  // (the same light, slower) and the edge pixels beyond stand the classes found for the others.
   if (classesElsewhere_) slots_ = std::max(1u, targets.width * targets.height / 8);
   const uint32_t classes = side_ * side_;
   requireStorageBufferFits(context, uint64_t(slots_) * classes, 8, "the glossy metals' VPL light per class",
@@ -48,18 +50,6 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
                      "glossy metal slots' surfaces");
   light_ = Buffer(context, uint64_t(slots_) * classes * 8, kSlots, MemoryUse::Device,
                   "glossy metal slots' light per class");
-  // Edge slots for an eighth of the pixels (the atrium's VPLs at K = 4: 0.6% lack a class at 1080p,
-  // more at lower resolutions, where more of the surfaces are narrower than the pattern).
-  if (classesElsewhere_) edgeSlots_ = std::max(1u, targets.width * targets.height / 8);
-  requireStorageBufferFits(context, uint64_t(edgeSlots_) * classes, 8, "the VPL edge slots' light per class",
-                           "slots x classes", "use a lower resolution or a smaller --vpl-interleave");
-  edgeHeader_ = Buffer(context, sizeof(gpu::EveryClassHeader),
-                       kSlots | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
-                       MemoryUse::Device, "VPL edge slots' header");
-  edgeSurfaces_ = Buffer(context, uint64_t(edgeSlots_) * sizeof(gpu::EveryClassSurface), kSlots,
-                         MemoryUse::Device, "VPL edge slots' surfaces");
-  edgeLight_ = Buffer(context, uint64_t(edgeSlots_) * classes * 8, kSlots, MemoryUse::Device,
-                      "VPL edge slots' light per class");
   constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT;
   indirect_ = Image(context, targets.width, targets.height, VK_FORMAT_R16G16B16A16_SFLOAT, kStorage,
                     "interleaved VPL light");
@@ -70,8 +60,8 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
   layout_ = PipelineLayout(context, {"gi/vpl_filter.comp"}, {}, constants());
   filter_ = Pipeline(context, layout_, "gi/vpl_filter.comp", constants());
   if (classesElsewhere_) {
-    addLayout_ = PipelineLayout(context, {"gi/vpl_edges_add.comp"}, {}, constants());
-    add_ = Pipeline(context, addLayout_, "gi/vpl_edges_add.comp", constants());
+    addLayout_ = PipelineLayout(context, {"gi/vpl_slots_add.comp"}, {}, constants());
+    add_ = Pipeline(context, addLayout_, "gi/vpl_slots_add.comp", constants());
   }
 }
 
@@ -85,10 +75,6 @@ void InterleavedVpls::resetSlots(FrameContext& frame) {
   frame.graph.step({uses(header_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
     const gpu::EveryClassHeader start{0, side_ * side_, 1, 0, slots_, 0, 1, 1};
     vkCmdUpdateBuffer(cmd, header_.handle(), 0, sizeof(start), &start);
-  });
-  frame.graph.step({uses(edgeHeader_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
-    const gpu::EveryClassHeader start{0, side_ * side_, 1, 0, edgeSlots_, 0, 1, 1};
-    vkCmdUpdateBuffer(cmd, edgeHeader_.handle(), 0, sizeof(start), &start);
   });
 }
 
@@ -105,35 +91,20 @@ void InterleavedVpls::dispatchClasses(VkCommandBuffer cmd) const {
   vkCmdDispatchIndirect(cmd, header_.handle(), 0);
 }
 
-std::vector<ResourceUse> InterleavedVpls::edgesUses() const {
-  return {uses(edgeHeader_, Use::IndirectRead), uses(edgeHeader_, Use::StorageRead, kCompute),
-          uses(edgeSurfaces_, Use::StorageRead, kCompute), uses(edgeLight_, Use::StorageWrite, kCompute)};
-}
-
-DescriptorWriter& InterleavedVpls::bindEdgeSlots(DescriptorWriter& writer) const {
-  return writer.storage(44, edgeHeader_.handle())
-      .storage(45, edgeSurfaces_.handle())
-      .storage(46, edgeLight_.handle());
-}
-
-void InterleavedVpls::dispatchEdges(VkCommandBuffer cmd) const {
-  vkCmdDispatchIndirect(cmd, edgeHeader_.handle(), 0);
-}
-
-void InterleavedVpls::addEdges(FrameContext& frame) {
+void InterleavedVpls::addSlots(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
-  frame.graph.pass(
-      "vpl-edges-add",
-      {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(edgeHeader_, Use::IndirectRead),
-       uses(edgeHeader_, Use::StorageRead, kCompute), uses(edgeSurfaces_, Use::StorageRead, kCompute),
-       uses(edgeLight_, Use::StorageRead, kCompute)},
-      [&](VkCommandBuffer cmd) {
-        add_.bind(cmd);
-        DescriptorWriter writer;
-        writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
-        bindEdgeSlots(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, addLayout_);
-        vkCmdDispatchIndirect(cmd, edgeHeader_.handle(), offsetof(gpu::EveryClassHeader, addGroups));
-      });
+  frame.graph.pass("vpl-slots-add",
+                   {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(header_, Use::IndirectRead),
+                    uses(header_, Use::StorageRead, kCompute), uses(surfaces_, Use::StorageRead, kCompute),
+                    uses(light_, Use::StorageRead, kCompute)},
+                   [&](VkCommandBuffer cmd) {
+                     add_.bind(cmd);
+                     DescriptorWriter writer;
+                     writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(),
+                                  VK_IMAGE_LAYOUT_GENERAL);
+                     bindSlots(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, addLayout_);
+                     vkCmdDispatchIndirect(cmd, header_.handle(), offsetof(gpu::EveryClassHeader, addGroups));
+                   });
 }
 
 DescriptorWriter& InterleavedVpls::bindImages(DescriptorWriter& writer) const {
@@ -155,16 +126,15 @@ void InterleavedVpls::filter(FrameContext& frame) {
       "vpl-filter",
       {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::StorageRead, kCompute),
        uses(key_, Use::StorageRead, kCompute), uses(albedoKey_, Use::StorageRead, kCompute),
-       uses(light_, Use::StorageRead, kCompute), uses(edgeHeader_, Use::StorageReadWrite, kCompute),
-       uses(edgeSurfaces_, Use::StorageWrite, kCompute)},
+       uses(header_, Use::StorageReadWrite, kCompute), uses(surfaces_, Use::StorageWrite, kCompute)},
       [&](VkCommandBuffer cmd) {
         filter_.bind(cmd);
         DescriptorWriter writer;
         writer.storage(0, frame.uniformBuffer.handle())
             .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
-        bindSlots(bindImages(writer))
-            .storage(50, edgeHeader_.handle())
-            .storage(51, edgeSurfaces_.handle())
+        bindImages(writer)
+            .storage(44, header_.handle())
+            .storage(45, surfaces_.handle())
             .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
         dispatchPerPixel(cmd, t);
       });
@@ -174,8 +144,7 @@ std::vector<std::pair<std::string, double>> InterleavedVpls::stats() const {
   const double pixels = double(indirect_.width()) * indirect_.height();
   return {{"vpl-interleave", double(side_)},
           {"vpl_interleave_bytes",
-           pixels * (8.0 + 16.0 + 16.0) + double(header_.size() + surfaces_.size() + light_.size()) +
-               double(edgeHeader_.size() + edgeSurfaces_.size() + edgeLight_.size())}};
+           pixels * (8.0 + 16.0 + 16.0) + double(header_.size() + surfaces_.size() + light_.size())}};
 }
 
 }  // namespace lll

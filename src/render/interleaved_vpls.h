@@ -58,15 +58,11 @@ class InterleavedVpls {
   // The shading pass's grid: each 8x8 workgroup shades pixels of one class
   // (gi/interleaved_vpls.glsl's interleavedPixel).
   void dispatch(VkCommandBuffer cmd, const FrameTargets& targets) const;
-  // The "vpl-filter" pass: the VPL light, gathered, added to hdr; with classesElsewhere() it places
-  // the pixels that lack a class in the edge slots.
+  // The "vpl-filter" pass: the VPL light, gathered, added to hdr; with classesElsewhere() it gives
+  // the pixels that lack a class slots after the glossy metals', for vpl-classes to light them.
   void filter(FrameContext& frame);
-  // The edge slots as vpl-classes' shader reads and writes them as "vpl-edges" (bindings 44 to 46),
-  // and its indirect dispatch; then "vpl-edges-add", their light added to hdr. With classesElsewhere().
-  std::vector<ResourceUse> edgesUses() const;
-  DescriptorWriter& bindEdgeSlots(DescriptorWriter& writer) const;
-  void dispatchEdges(VkCommandBuffer cmd) const;
-  void addEdges(FrameContext& frame);
+  // "vpl-slots-add", after vpl-classes: the slots' light added to their pixels (classesElsewhere()).
+  void addSlots(FrameContext& frame);
 
   std::vector<std::pair<std::string, double>> stats() const;
 
@@ -79,18 +75,14 @@ class InterleavedVpls {
                      // class, 2 + its slot for vpl-classes' (what the gather reads of a neighbour)
   Image albedoKey_;  // RGBA32UI: base colour and metallic as halves, roughness (read for the pixel itself)
   bool classesElsewhere_ = false;
-  // Glossy-metal pixels vpl-classes can take; the rest evaluate in place. One without
+  // Pixels vpl-classes can take, the glossy metals' and then the edge pixels' (vpl-filter); the
+  // metals beyond evaluate every class in place, the edge pixels beyond stand the classes they found
+  // for the others. One without
   // classesElsewhere(): the shading and filter shaders declare the slots' buffers either way.
   uint32_t slots_ = 1;
   Buffer header_;    // gpu::EveryClassHeader: vpl-classes' dispatch, the slots taken
   Buffer surfaces_;  // gpu::EveryClassSurface per slot
   Buffer light_;     // per slot and class, rgb as halves
-  // Pixels vpl-filter finds lacking a class (gi/vpl_filter.comp) that vpl-edges can take; the rest
-  // stand the classes found for the others. One without classesElsewhere(), as slots_.
-  uint32_t edgeSlots_ = 1;
-  Buffer edgeHeader_;
-  Buffer edgeSurfaces_;
-  Buffer edgeLight_;
   PipelineLayout layout_;
   Pipeline filter_;
   PipelineLayout addLayout_;

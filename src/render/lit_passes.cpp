@@ -303,7 +303,10 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
                                                  1, 1, &textures, 0, nullptr);
                          dispatch(frame, cmd, writer);
                        });
-      if (interleaved_ && interleaved_->classesElsewhere())
+      if (interleaved_) interleaved_->filter(frame);
+      // The slots' classes (the glossy metals' every class, the edge pixels' missing ones), lit on
+      // their own surfaces and added to their pixels.
+      if (interleaved_ && interleaved_->classesElsewhere()) {
         frame.graph.pass("vpl-classes", interleaved_->classesUses() + lighting_.reads(kCompute),
                          [&](VkCommandBuffer cmd) {
                            vplClasses_.bind(cmd);
@@ -312,18 +315,7 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
                                                                 vplClassesLayout_);
                            interleaved_->dispatchClasses(cmd);
                          });
-      if (interleaved_) interleaved_->filter(frame);
-      if (interleaved_ && interleaved_->classesElsewhere()) {
-        // The classes vpl-filter found no neighbour for, lit on the edge pixels' own surfaces.
-        frame.graph.pass("vpl-edges", interleaved_->edgesUses() + lighting_.reads(kCompute),
-                         [&](VkCommandBuffer cmd) {
-                           vplClasses_.bind(cmd);
-                           DescriptorWriter writer = litDescriptors(frame);
-                           interleaved_->bindEdgeSlots(writer).push(
-                               context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, vplClassesLayout_);
-                           interleaved_->dispatchEdges(cmd);
-                         });
-        interleaved_->addEdges(frame);
+        interleaved_->addSlots(frame);
       }
       return;
   }
