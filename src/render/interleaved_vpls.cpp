@@ -50,19 +50,25 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
                      "glossy metal slots' surfaces");
   light_ = Buffer(context, uint64_t(slots_) * classes * 8, kSlots, MemoryUse::Device,
                   "glossy metal slots' light per class");
-  constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT;
+  // Written by the shading pass, read by vpl-filter's texel fetches.
+  constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
   indirect_ = Image(context, targets.width, targets.height, VK_FORMAT_R16G16B16A16_SFLOAT, kStorage,
                     "interleaved VPL light");
   key_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
                "interleaved VPL surface key");
   albedoKey_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
                      "interleaved VPL albedo key");
+  nearest_ = createNearestClampSampler(context);
   layout_ = PipelineLayout(context, {"gi/vpl_filter.comp"}, {}, constants());
   filter_ = Pipeline(context, layout_, "gi/vpl_filter.comp", constants());
   if (classesElsewhere_) {
     addLayout_ = PipelineLayout(context, {"gi/vpl_slots_add.comp"}, {}, constants());
     add_ = Pipeline(context, addLayout_, "gi/vpl_slots_add.comp", constants());
   }
+}
+
+InterleavedVpls::~InterleavedVpls() {
+  vkDestroySampler(context_.device(), nearest_, nullptr);
 }
 
 std::vector<ResourceUse> InterleavedVpls::shadingWrites() const {
@@ -124,15 +130,18 @@ void InterleavedVpls::filter(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
   frame.graph.pass(
       "vpl-filter",
-      {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::StorageRead, kCompute),
-       uses(key_, Use::StorageRead, kCompute), uses(albedoKey_, Use::StorageRead, kCompute),
+      {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::Sampled, kCompute),
+       uses(key_, Use::Sampled, kCompute), uses(albedoKey_, Use::Sampled, kCompute),
        uses(header_, Use::StorageReadWrite, kCompute), uses(surfaces_, Use::StorageWrite, kCompute)},
       [&](VkCommandBuffer cmd) {
         filter_.bind(cmd);
         DescriptorWriter writer;
         writer.storage(0, frame.uniformBuffer.handle())
             .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
-        bindImages(writer)
+        constexpr VkDescriptorType kFetched = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        writer.image(38, kFetched, indirect_.view(), sampledLayout(indirect_), nearest_)
+            .image(39, kFetched, key_.view(), sampledLayout(key_), nearest_)
+            .image(48, kFetched, albedoKey_.view(), sampledLayout(albedoKey_), nearest_)
             .storage(44, header_.handle())
             .storage(45, surfaces_.handle())
             .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);

@@ -39,6 +39,9 @@ uint32_t vplInterleaveIn(const GpuScene& scene, OpaqueShading opaque, uint32_t r
 class InterleavedVpls {
  public:
   InterleavedVpls(Context& context, const FrameTargets& targets, uint32_t side, bool classesElsewhere);
+  ~InterleavedVpls();
+  InterleavedVpls(const InterleavedVpls&) = delete;
+  InterleavedVpls& operator=(const InterleavedVpls&) = delete;
 
   uint32_t side() const { return side_; }
   bool classesElsewhere() const { return classesElsewhere_; }
@@ -80,9 +83,10 @@ class InterleavedVpls {
   // for the others. One without
   // classesElsewhere(): the shading and filter shaders declare the slots' buffers either way.
   uint32_t slots_ = 1;
-  Buffer header_;    // gpu::EveryClassHeader: vpl-classes' dispatch, the slots taken
-  Buffer surfaces_;  // gpu::EveryClassSurface per slot
-  Buffer light_;     // per slot and class, rgb as halves
+  Buffer header_;                       // gpu::EveryClassHeader: vpl-classes' dispatch, the slots taken
+  Buffer surfaces_;                     // gpu::EveryClassSurface per slot
+  Buffer light_;                        // per slot and class, rgb as halves
+  VkSampler nearest_ = VK_NULL_HANDLE;  // vpl-filter's texel fetches
   PipelineLayout layout_;
   Pipeline filter_;
   PipelineLayout addLayout_;
