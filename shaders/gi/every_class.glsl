@@ -1,6 +1,6 @@
 // VPL classes lit elsewhere (shared/every_class_types.h): shade-opaque (the glossy metals) and
-// vpl-filter (the edge pixels) take the slots (EVERY_CLASS_PLACE), vpl-classes lights them
-// (EVERY_CLASS_LIGHT), vpl-slots-add reads the light.
+// vpl-filter (the edge pixels) take the slots (EVERY_CLASS_PLACE), vpl-classes lights them and adds
+// them to their pixels (EVERY_CLASS_LIGHT).
 #ifndef LLL_EVERY_CLASS_GLSL
 #define LLL_EVERY_CLASS_GLSL
 #include "shared/every_class_types.h"
@@ -11,12 +11,15 @@ layout(constant_id = 62) const bool kVplClassesPass = false;
 #if defined(EVERY_CLASS_PLACE)
 #define EVERY_CLASS_HEADER_ACCESS
 #define EVERY_CLASS_SURFACE_ACCESS writeonly
+#elif defined(EVERY_CLASS_LIGHT)
+#define EVERY_CLASS_HEADER_ACCESS readonly
+#define EVERY_CLASS_SURFACE_ACCESS  // each slot's count of classes lit (pixel.z)
 #else
 #define EVERY_CLASS_HEADER_ACCESS readonly
 #define EVERY_CLASS_SURFACE_ACCESS readonly
 #endif
 #if defined(EVERY_CLASS_LIGHT)
-#define EVERY_CLASS_LIGHT_ACCESS writeonly
+#define EVERY_CLASS_LIGHT_ACCESS coherent  // the slot's last class reads the others'
 #else
 #define EVERY_CLASS_LIGHT_ACCESS readonly
 #endif

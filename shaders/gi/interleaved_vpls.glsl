@@ -53,10 +53,7 @@ void placeEveryClassPixel(inout InterleavedSums sums, uvec2 pixel, Surface s, fl
   if (!kVplClassesPass) return;
   uint slot = atomicAdd(everyClass.pixels, 1u);
   if (slot >= everyClass.capacity) return;
-  if (slot % 64u == 0u) {
-    atomicAdd(everyClass.groups, 1u);
-    atomicAdd(everyClass.addGroups, 1u);
-  }
+  if (slot % 64u == 0u) atomicAdd(everyClass.groups, 1u);
   everyClassSurfaces[slot] =
       EveryClassSurface(vec4(s.position, viewDepth), vec4(s.normal, s.metallic),
                         vec4(s.baseColor, s.roughness), uvec4(pixel.x | (pixel.y << 16), 0xFFFFFFFFu, 0u, 0u));

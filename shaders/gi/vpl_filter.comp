@@ -88,7 +88,7 @@ void main() {
                         0.0));
     return;
   }
-  if (centreKey.w >= 2u) return;  // vpl-classes lights its classes in slot w - 2, vpl-slots-add adds them
+  if (centreKey.w >= 2u) return;  // vpl-classes lights its classes in slot w - 2 and adds them
   vec3 position = viewPosition(p, centre.w);
   float planeTolerance = kPlaneTolerance * centre.w;
 
@@ -122,17 +122,14 @@ void main() {
   }
   vec3 indirect = sum * key + specularSum * specular;
   // Classes missing where vpl-classes runs: the pixel takes a slot, whose missing classes
-  // vpl-classes lights and vpl-slots-add adds (with every slot taken, the found classes stand for the
+  // vpl-classes lights and adds (with every slot taken, the found classes stand for the
   // rest as below).
   bool slotted = false;
   if (kVplClassesPass && missing != 0u) {
     uint slot = atomicAdd(everyClass.pixels, 1u);
     slotted = slot < everyClass.capacity;
     if (slotted) {
-      if (slot % 64u == 0u) {
-        atomicAdd(everyClass.groups, 1u);
-        atomicAdd(everyClass.addGroups, 1u);
-      }
+      if (slot % 64u == 0u) atomicAdd(everyClass.groups, 1u);
       // The world position and normal from the view-space ones (the view's rotation is orthonormal).
       mat3 toWorld = transpose(mat3(frame.view));
       everyClassSurfaces[slot] = EveryClassSurface(

@@ -5,24 +5,23 @@
 // places, after them, a pixel none of whose neighbours on its surface brings some classes (an edge,
 // a sliver narrower than the pattern), with those classes, after adding the ones it found.
 // "vpl-classes" then lights each slot's classes on workgroups of their own (one class each) and
-// "vpl-slots-add" adds them to the pixels. Written once here; see shared.h for the rules.
+// adds them to the pixels. Written once here; see shared.h for the rules.
 #ifndef LLL_EVERY_CLASS_TYPES_H
 #define LLL_EVERY_CLASS_TYPES_H
 #include "shared/shared.h"
 
 LLL_NAMESPACE_BEGIN
 
-// vpl-classes' indirect dispatch (x groups of 64 slots, y the classes, z 1), then the slots, then
-// vpl-slots-add's dispatch (x the same groups, y z 1).
+// vpl-classes' indirect dispatch (x groups of 64 slots, y the classes, z 1), then the slots.
 struct EveryClassHeader {
   uint groups;     // workgroups of 64 slots: one more each time a slot that is a multiple of 64 is taken
   uint classes;    // K*K
   uint one;        // 1
   uint pixels;     // slots asked for, also past `capacity` (those pixels evaluate every class in place)
   uint capacity;   // slots the buffers hold
-  uint addGroups;  // = groups, for vpl-slots-add
-  uint addOneY;    // 1
-  uint addOneZ;    // 1
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 LLL_CHECK_SIZE(EveryClassHeader, 32);
 
@@ -31,7 +30,8 @@ struct EveryClassSurface {
   vec4 positionDepth;       // world position, view depth
   vec4 normalMetallic;      // shading normal, metallic
   vec4 baseColorRoughness;  // base colour, roughness
-  uvec4 pixel;              // x: the pixel, x | y << 16; y: the classes to light, a bit each
+  uvec4 pixel;              // x: the pixel, x | y << 16; y: the classes to light, a bit each;
+                            // z: those lit so far (vpl-classes), 0 when placed
 };
 LLL_CHECK_SIZE(EveryClassSurface, 64);
 

@@ -61,10 +61,6 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
   nearest_ = createNearestClampSampler(context);
   layout_ = PipelineLayout(context, {"gi/vpl_filter.comp"}, {}, constants());
   filter_ = Pipeline(context, layout_, "gi/vpl_filter.comp", constants());
-  if (classesElsewhere_) {
-    addLayout_ = PipelineLayout(context, {"gi/vpl_slots_add.comp"}, {}, constants());
-    add_ = Pipeline(context, addLayout_, "gi/vpl_slots_add.comp", constants());
-  }
 }
 
 InterleavedVpls::~InterleavedVpls() {
@@ -79,14 +75,14 @@ std::vector<ResourceUse> InterleavedVpls::shadingWrites() const {
 
 void InterleavedVpls::resetSlots(FrameContext& frame) {
   frame.graph.step({uses(header_, Use::TransferWrite)}, [&](VkCommandBuffer cmd) {
-    const gpu::EveryClassHeader start{0, side_ * side_, 1, 0, slots_, 0, 1, 1};
+    const gpu::EveryClassHeader start{0, side_ * side_, 1, 0, slots_, 0, 0, 0};
     vkCmdUpdateBuffer(cmd, header_.handle(), 0, sizeof(start), &start);
   });
 }
 
 std::vector<ResourceUse> InterleavedVpls::classesUses() const {
   return {uses(header_, Use::IndirectRead), uses(header_, Use::StorageRead, kCompute),
-          uses(surfaces_, Use::StorageRead, kCompute), uses(light_, Use::StorageWrite, kCompute)};
+          uses(surfaces_, Use::StorageReadWrite, kCompute), uses(light_, Use::StorageReadWrite, kCompute)};
 }
 
 DescriptorWriter& InterleavedVpls::bindSlots(DescriptorWriter& writer) const {
@@ -95,22 +91,6 @@ DescriptorWriter& InterleavedVpls::bindSlots(DescriptorWriter& writer) const {
 
 void InterleavedVpls::dispatchClasses(VkCommandBuffer cmd) const {
   vkCmdDispatchIndirect(cmd, header_.handle(), 0);
-}
-
-void InterleavedVpls::addSlots(FrameContext& frame) {
-  const FrameTargets& t = frame.targets;
-  frame.graph.pass("vpl-slots-add",
-                   {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(header_, Use::IndirectRead),
-                    uses(header_, Use::StorageRead, kCompute), uses(surfaces_, Use::StorageRead, kCompute),
-                    uses(light_, Use::StorageRead, kCompute)},
-                   [&](VkCommandBuffer cmd) {
-                     add_.bind(cmd);
-                     DescriptorWriter writer;
-                     writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(),
-                                  VK_IMAGE_LAYOUT_GENERAL);
-                     bindSlots(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, addLayout_);
-                     vkCmdDispatchIndirect(cmd, header_.handle(), offsetof(gpu::EveryClassHeader, addGroups));
-                   });
 }
 
 DescriptorWriter& InterleavedVpls::bindImages(DescriptorWriter& writer) const {

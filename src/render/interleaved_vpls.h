@@ -64,8 +64,6 @@ class InterleavedVpls {
   // The "vpl-filter" pass: the VPL light, gathered, added to hdr; with classesElsewhere() it gives
   // the pixels that lack a class slots after the glossy metals', for vpl-classes to light them.
   void filter(FrameContext& frame);
-  // "vpl-slots-add", after vpl-classes: the slots' light added to their pixels (classesElsewhere()).
-  void addSlots(FrameContext& frame);
 
   std::vector<std::pair<std::string, double>> stats() const;
 
@@ -89,8 +87,6 @@ class InterleavedVpls {
   VkSampler nearest_ = VK_NULL_HANDLE;  // vpl-filter's texel fetches
   PipelineLayout layout_;
   Pipeline filter_;
-  PipelineLayout addLayout_;
-  Pipeline add_;
 };
 
 }  // namespace lll

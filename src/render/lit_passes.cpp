@@ -305,17 +305,20 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
                        });
       if (interleaved_) interleaved_->filter(frame);
       // The slots' classes (the glossy metals' every class, the edge pixels' missing ones), lit on
-      // their own surfaces and added to their pixels.
+      // their own surfaces and added to their pixels by the last of each slot's classes.
       if (interleaved_ && interleaved_->classesElsewhere()) {
-        frame.graph.pass("vpl-classes", interleaved_->classesUses() + lighting_.reads(kCompute),
+        frame.graph.pass("vpl-classes",
+                         std::vector<ResourceUse>{uses(t.hdr, Use::StorageReadWrite, kCompute)} +
+                             interleaved_->classesUses() + lighting_.reads(kCompute),
                          [&](VkCommandBuffer cmd) {
                            vplClasses_.bind(cmd);
                            DescriptorWriter writer = litDescriptors(frame);
+                           writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(),
+                                        VK_IMAGE_LAYOUT_GENERAL);
                            interleaved_->bindSlots(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
                                                                 vplClassesLayout_);
                            interleaved_->dispatchClasses(cmd);
                          });
-        interleaved_->addSlots(frame);
       }
       return;
   }
