@@ -1,0 +1,27 @@
+# run4: edge pixels in the metals' slots, one vpl-classes after vpl-filter (11cf0c5, new) against
+# 73138b9 (old, no edge slots): the atrium's VPLs at K = 3, 4, + the atrium's lights, 65,536 VPLs;
+# images at K = 3, 4 (K = 1 from run3); registers per pipeline (LLL_SHADER_STATS); the tests.
+set -u
+source .gpu/setup.sh
+mkdir -p build/tests && cp .gpu/bin/lll build/lll
+N=.gpu/bin/lll; O=.gpu/extra/lll_old; E=.gpu/extra
+mkdir -p $OUT/r $OUT/img
+r() { local n=$1 bin=$2; shift 2
+  timeout 90 $bin render "$@" --stats $OUT/r/$n.json >/dev/null 2>$OUT/r/$n.err || { echo fail $n; tail -2 $OUT/r/$n.err; }; }
+W="--width 1920 --height 1080"
+for v in new old; do B=$N; [ $v = old ] && B=$O
+  LLL_SHADER_STATS=1 timeout 60 $B render atrium --gi vpl-only --vpl-interleave 4 --technique lll $W --frames 1 --out /tmp/a.png > $OUT/r/$v-shader-stats.txt 2>&1; done
+for rep in 1 2 3; do
+for v in new old; do
+  B=$N; [ $v = old ] && B=$O
+  for k in 3 4; do
+    img=/tmp/a.png; [ $rep = 1 ] && img=$OUT/img/$v-vpl$k.png
+    r $v-vpl$k-$rep $B atrium --gi vpl-only --vpl-interleave $k --technique lll $W --frames 15 --out $img
+  done
+  r $v-vpl65k4-$rep $B atrium --gi vpl-only --vpl-count 65536 --photons 196608 --vpl-interleave 4 --technique lll $W --frames 10 --out /tmp/a.png
+  r $v-vplg4-$rep $B atrium --gi vpl --vpl-interleave 4 --technique lll $W --frames 15 --out /tmp/a.png
+done; done
+echo renders done $SECONDS
+LLL_TEST_DEVICE=gpu LLL_TEST_VALIDATION=1 timeout 200 $E/lll_tests --gtest_filter='InterleavedVpls.*:Gi.*:ComputeGlass.*:ShadingPaths/Analytic.*:GlassAndParticles.*' > $OUT/tests.log 2>&1; echo tests rc=$? $SECONDS
+grep -E "^\[  FAILED|PASSED|\[ gi \] (atrium)" $OUT/tests.log | head -10
+cd $OUT && tar cJf r.tar.xz r tests.log && tar cf img1.tar img/new-* && tar cf img2.tar img/old-* && rm -rf r img tests.log; ls -la; true
