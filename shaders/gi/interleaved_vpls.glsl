@@ -54,9 +54,9 @@ void placeEveryClassPixel(inout InterleavedSums sums, uvec2 pixel, Surface s, fl
   uint slot = atomicAdd(everyClass.pixels, 1u);
   if (slot >= everyClass.capacity) return;
   if (slot % 64u == 0u) atomicAdd(everyClass.groups, 1u);
-  everyClassSurfaces[slot] =
-      EveryClassSurface(vec4(s.position, viewDepth), vec4(s.normal, s.metallic),
-                        vec4(s.baseColor, s.roughness), uvec4(pixel.x | (pixel.y << 16), 0xFFFFFFFFu, 0u, 0u));
+  everyClassSurfaces[slot] = EveryClassSurface(vec4(s.position, viewDepth), vec4(s.normal, s.metallic),
+                                               vec4(s.baseColor, s.roughness),
+                                               uvec4(pixel.x | (pixel.y << 16), 0xFFFFFFFFu, 0u, 0u));
   sums.pixelClass = kClassesElsewhere;
   sums.slot = slot;
 }
@@ -96,8 +96,9 @@ void storeInterleaved(uvec2 pixel, bool lit, Surface s, float viewDepth, Interle
             packHalf2x16(vec2(specular.b, 0.0)),
             sums.pixelClass == kEveryClass ? 1u
                                            : (sums.pixelClass == kClassesElsewhere ? 2u + sums.slot : 0u)));
-  imageStore(vplAlbedoKey, ivec2(pixel), uvec4(packHalf2x16(s.baseColor.rg), packHalf2x16(vec2(s.baseColor.b, s.metallic)),
-                                               floatBitsToUint(s.roughness), 0u));
+  imageStore(vplAlbedoKey, ivec2(pixel),
+             uvec4(packHalf2x16(s.baseColor.rg), packHalf2x16(vec2(s.baseColor.b, s.metallic)),
+                   floatBitsToUint(s.roughness), 0u));
 }
 
 #endif

@@ -9,11 +9,12 @@
 // (p is at an edge) is looked for in the next ring out, to 2k-1 pixels (atrium, K = 4, 640x360 on
 // lavapipe: 36.4 -> 37.2 dB; the wide ring for every class blurs more than it helps, 36.5); one
 // not found there either: where vpl-classes runs (lll's class lists) the pixel takes a slot after
-// the glossy metals' and vpl-classes lights the classes it lacks on its own surface (the atrium at K = 4, 1080p: 0.6% of
-// the pixels, a third of the squared error against K = 1); else, or with every slot taken, it is
-// stood for by the mean of the classes found (the sum scaled by k*k over their number). The diffuse sum is multiplied back by p's albedo key, the specular one by p's f0
-// (gi/vpl_interleave_data.glsl). A pixel that evaluated every class (a glossy metal) keeps its own
-// sum and is no sample.
+// the glossy metals' and vpl-classes lights the classes it lacks on its own surface (the atrium at
+// K = 4, 1080p: 0.6% of the pixels, a third of the squared error against K = 1); else, or with
+// every slot taken, it is stood for by the mean of the classes found (the sum scaled by k*k over
+// their number). The diffuse sum is multiplied back by p's albedo key, the specular one by p's f0
+// (gi/vpl_interleave_data.glsl). A glossy metal's pixel is no sample: one that evaluated every
+// class keeps its own sum, one in a slot gets its classes from vpl-classes.
 #define EVERY_CLASS_PLACE  // the edge pixels' slots
 #include "gi/every_class.glsl"
 #include "gi/vpl_interleave_data.glsl"
@@ -29,7 +30,7 @@ layout(std430, set = 0, binding = 0) readonly buffer FrameBlock {  // see common
 };
 layout(set = 0, binding = 13, rgba16f) uniform image2D hdr;
 // Read by texel fetches, not image loads: on the H200 the gather, 49 samples a pixel at K = 4, took
-// 0.585 ms through imageLoad and XXX through texelFetch (bench/results/h200-2026-12-04/run5).
+// 0.585 ms through imageLoad and 0.574 through texelFetch (bench/results/h200-2026-12-04/run5).
 layout(set = 0, binding = 38) uniform sampler2D vplIndirect;
 layout(set = 0, binding = 39) uniform usampler2D vplSurfaceKey;
 layout(set = 0, binding = 48) uniform usampler2D vplAlbedoKey;
@@ -132,9 +133,11 @@ void main() {
       if (slot % 64u == 0u) atomicAdd(everyClass.groups, 1u);
       // The world position and normal from the view-space ones (the view's rotation is orthonormal).
       mat3 toWorld = transpose(mat3(frame.view));
-      everyClassSurfaces[slot] = EveryClassSurface(
-          vec4(frame.cameraPosition.xyz + toWorld * position, centre.w), vec4(toWorld * normal, blueMetallic.y),
-          vec4(baseColor, uintBitsToFloat(albedoKeys.z)), uvec4(uint(p.x) | (uint(p.y) << 16), missing, 0u, 0u));
+      everyClassSurfaces[slot] =
+          EveryClassSurface(vec4(frame.cameraPosition.xyz + toWorld * position, centre.w),
+                            vec4(toWorld * normal, blueMetallic.y),
+                            vec4(baseColor, uintBitsToFloat(albedoKeys.z)),
+                            uvec4(uint(p.x) | (uint(p.y) << 16), missing, 0u, 0u));
     }
   }
   // found >= 1: the centre counts itself.
