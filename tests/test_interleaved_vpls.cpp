@@ -37,6 +37,22 @@ RenderSettings vplSettings(const char* technique, uint32_t interleave) {
   return settings;
 }
 
+// The atrium's VPLs alone (Infinity's 5,144 asked for) at 320x180, default exposure and ambient.
+Scene atriumVpls() {
+  SceneRequest request{"atrium"};
+  request.gi.mode = "vpl-only";
+  return loadScene(request);
+}
+
+RenderSettings atriumSettings(const char* technique, uint32_t interleave) {
+  RenderSettings settings;
+  settings.width = 320;
+  settings.height = 180;
+  settings.technique = technique;
+  settings.vplInterleave = interleave;
+  return settings;
+}
+
 // The gather smooths the light over at most 2K-1 pixels of one surface: where it changes within a
 // pixel or two (the room's corners at this size) the smoothing shows. A lost, doubled or unskipped
 // class moves the whole image by a quarter or more.
@@ -108,17 +124,9 @@ TEST(InterleavedVpls, StaysCloseToEveryPixelEvaluatingEveryVpl) {
 // tiles' edges do not show through the neighbours' light. Dividing the specular by the albedo too
 // (as before) left 31.8 dB here at K = 4 on lavapipe; now 33.6, and 37.2 at 640x360 (34.7 before).
 TEST(InterleavedVpls, TheGatherCarriesLightNotTexture) {
-  SceneRequest request{"atrium"};
-  request.gi.mode = "vpl-only";
-  const Scene scene = loadScene(request);
-  RenderSettings settings;
-  settings.width = 320;
-  settings.height = 180;
-  settings.technique = "lll";
-  settings.vplInterleave = 1;
-  const test::Rendered whole = test::render(scene, settings);
-  settings.vplInterleave = 4;
-  const test::Rendered interleaved = test::render(scene, settings);
+  const Scene scene = atriumVpls();
+  const test::Rendered whole = test::render(scene, atriumSettings("lll", 1));
+  const test::Rendered interleaved = test::render(scene, atriumSettings("lll", 4));
   const ImageDifference d = compareImages(interleaved.ldr, whole.ldr);
   std::printf("[ gi ] atrium, %u lights, --vpl-interleave 4: %.2f dB against 1, worst %d, 99.9th %d\n",
               uint32_t(scene.lights.size()), d.psnr, d.worst, d.p999);
@@ -131,19 +139,10 @@ TEST(InterleavedVpls, TheGatherCarriesLightNotTexture) {
 // apart, stands the classes found for the missing ones. The same VPLs, and without interleaving the
 // same image (Gi.EveryTechniqueMatchesForwardWithTheSameVpls): lll's interleaved image is nearer.
 TEST(InterleavedVpls, EdgePixelsLightTheClassesTheyLack) {
-  SceneRequest request{"atrium"};
-  request.gi.mode = "vpl-only";
-  const Scene scene = loadScene(request);
-  RenderSettings settings;
-  settings.width = 320;
-  settings.height = 180;
-  settings.technique = "lll";
-  settings.vplInterleave = 1;
-  const test::Rendered whole = test::render(scene, settings);
-  settings.vplInterleave = 4;
-  const test::Rendered lll = test::render(scene, settings);
-  settings.technique = "tiled";
-  const test::Rendered tiled = test::render(scene, settings);
+  const Scene scene = atriumVpls();
+  const test::Rendered whole = test::render(scene, atriumSettings("lll", 1));
+  const test::Rendered lll = test::render(scene, atriumSettings("lll", 4));
+  const test::Rendered tiled = test::render(scene, atriumSettings("tiled", 4));
   const ImageDifference withEdges = compareImages(lll.ldr, whole.ldr);
   const ImageDifference without = compareImages(tiled.ldr, whole.ldr);
   std::printf("[ gi ] atrium, --vpl-interleave 4 against 1: lll (edge slots) %.2f dB, tiled %.2f dB\n",

@@ -133,11 +133,10 @@ void main() {
       if (slot % 64u == 0u) atomicAdd(everyClass.groups, 1u);
       // The world position and normal from the view-space ones (the view's rotation is orthonormal).
       mat3 toWorld = transpose(mat3(frame.view));
-      everyClassSurfaces[slot] =
-          EveryClassSurface(vec4(frame.cameraPosition.xyz + toWorld * position, centre.w),
-                            vec4(toWorld * normal, blueMetallic.y),
-                            vec4(baseColor, uintBitsToFloat(albedoKeys.z)),
-                            uvec4(uint(p.x) | (uint(p.y) << 16), missing, 0u, 0u));
+      everyClassSurfaces[slot] = EveryClassSurface(
+          vec4(frame.cameraPosition.xyz + toWorld * position, centre.w),
+          vec4(toWorld * normal, blueMetallic.y), vec4(baseColor, uintBitsToFloat(albedoKeys.z)),
+          uvec4(uint(p.x) | (uint(p.y) << 16), missing, 0u, 0u));
     }
   }
   // found >= 1: the centre counts itself.

@@ -14,11 +14,12 @@ LLL_NAMESPACE_BEGIN
 
 // vpl-classes' indirect dispatch (x groups of 64 slots, y the classes, z 1), then the slots.
 struct EveryClassHeader {
-  uint groups;     // workgroups of 64 slots: one more each time a slot that is a multiple of 64 is taken
-  uint classes;    // K*K
-  uint one;        // 1
-  uint pixels;     // slots asked for, also past `capacity` (those pixels evaluate every class in place)
-  uint capacity;   // slots the buffers hold
+  uint groups;    // workgroups of 64 slots: one more each time a slot that is a multiple of 64 is taken
+  uint classes;   // K*K
+  uint one;       // 1
+  uint pixels;    // slots asked for, also past `capacity` (such metals evaluate every class in place,
+                  // such edge pixels stand the classes found for the rest)
+  uint capacity;  // slots the buffers hold
   uint pad0;
   uint pad1;
   uint pad2;
