@@ -87,7 +87,7 @@ BrdfTerms brdfTerms(Surface s) {
 // The GGX distribution a2 / (pi dd^2), the Smith visibility 0.5 / sum and the 1 / q share one
 // reciprocal, and Schlick's (1 - vDotH)^5 is multiplied out: this runs once per light per pixel.
 // brdfLobesOver gives the diffuse and specular lobes apart, before the factor nDotL; `a2d` is the
-// distribution's alpha^2: t.a2, or a virtual point light's wider lobe (vplDistributionA2).
+// distribution's alpha^2: t.a2, or a virtual point light's wider lobe (lightDistributionA2).
 void brdfLobesOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q, float a2d, out vec3 diffuseLobe,
                    out vec3 specularLobe) {
   vec3 h = halfVector(l, s.view);
@@ -201,11 +201,12 @@ float lightWindow(GpuLight light, vec3 toLight, vec3 l, float distance, float di
   return rangeWindowSquared(distanceSquared / (range * range)) * spotAttenuation(light, l);
 }
 
-// The GGX distribution's alpha (and alpha^2) for a light `inverseDistance` away: a virtual point light stands
-// for the patch of surface it was merged from, a disc of about its near distance in radius (half
-// its cell: gi/vpl_hierarchy.h), so its specular lobe is the surface's widened by half the angle
-// that patch subtends (the half vector turns half as far as the light), alpha + near / (2 d),
-// at most 1: the lobe of an area light, not a point's glint. Every other light keeps t.a2.
+// The GGX distribution's alpha (and alpha^2) for a light `inverseDistance` away: a virtual point
+// light stands for the patch of surface it was merged from, a disc of about its near distance in
+// radius (half its cell: gi/vpl_hierarchy.h), so its specular lobe is the surface's widened by half
+// the angle that patch subtends (the half vector turns half as far as the light), alpha + near /
+// (2 d), at most 1: the lobe of an area light, not a point's glint. Every other light keeps the
+// surface's.
 float lightDistributionAlpha(GpuLight light, float alpha, float inverseDistance) {
   if (!kSceneHasVpls || !lightIs(light, kLightVpl)) return alpha;
   return min(alpha + 0.5 * light.spotParams.x * inverseDistance, 1.0);

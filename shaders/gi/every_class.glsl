@@ -5,7 +5,8 @@
 #define LLL_EVERY_CLASS_GLSL
 #include "shared/every_class_types.h"
 
-// Whether vpl-classes lights the glossy metals' classes (else each such pixel walks them all).
+// Whether vpl-classes lights the slots' classes (else a glossy metal's pixel walks them all and an
+// edge pixel stands the classes found for the rest).
 layout(constant_id = 62) const bool kVplClassesPass = false;
 
 #if defined(EVERY_CLASS_PLACE)

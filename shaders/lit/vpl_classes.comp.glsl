@@ -30,7 +30,7 @@ void main() {
   s.emissive = vec3(0.0);
   uvec2 pixel = uvec2(e.pixel.x & 0xFFFFu, e.pixel.x >> 16);
   uint vplClass = gl_WorkGroupID.y;
-  if ((e.pixel.y & (1u << vplClass)) == 0u) return;  // an edge slot that has this class
+  if ((e.pixel.y & (1u << vplClass)) == 0u) return;  // an edge pixel that found this class
   vec3 light = lightSurfacePart(s, pixel, e.positionDepth.w, 1u + vplClass);
   everyClassLight[slot * kVplClasses + vplClass] =
       uvec2(packHalf2x16(light.rg), packHalf2x16(vec2(light.b, 0.0)));

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstddef>
 
 #include "gpu/context.h"
 #include "render/gpu_scene.h"
@@ -40,16 +39,16 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
   // (the same light, slower) and the edge pixels beyond stand the classes found for the others.
   if (classesElsewhere_) slots_ = std::max(1u, targets.width * targets.height / 8);
   const uint32_t classes = side_ * side_;
-  requireStorageBufferFits(context, uint64_t(slots_) * classes, 8, "the glossy metals' VPL light per class",
+  requireStorageBufferFits(context, uint64_t(slots_) * classes, 8, "the VPL slots' light per class",
                            "slots x classes", "use a lower resolution or a smaller --vpl-interleave");
   constexpr VkBufferUsageFlags kSlots = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   header_ = Buffer(context, sizeof(gpu::EveryClassHeader),
                    kSlots | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
-                   MemoryUse::Device, "glossy metal slots' header");
+                   MemoryUse::Device, "VPL slots' header");
   surfaces_ = Buffer(context, uint64_t(slots_) * sizeof(gpu::EveryClassSurface), kSlots, MemoryUse::Device,
-                     "glossy metal slots' surfaces");
+                     "VPL slots' surfaces");
   light_ = Buffer(context, uint64_t(slots_) * classes * 8, kSlots, MemoryUse::Device,
-                  "glossy metal slots' light per class");
+                  "VPL slots' light per class");
   // Written by the shading pass, read by vpl-filter's texel fetches.
   constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
   indirect_ = Image(context, targets.width, targets.height, VK_FORMAT_R16G16B16A16_SFLOAT, kStorage,
