@@ -20,7 +20,7 @@
 #include "gi/vpl_interleave_data.glsl"
 #include "shared/gpu_types.h"
 
-layout(local_size_x = kVplFilterGroupSize, local_size_y = kVplFilterGroupSize) in;
+layout(local_size_x = 8, local_size_y = 8) in;
 
 const float kNormalCos = 0.8;
 const float kPlaneTolerance = 0.05;
@@ -42,68 +42,10 @@ vec3 viewPosition(ivec2 p, float z) {
   return vec3(ndc.x * frame.depthParams.z, -ndc.y * frame.depthParams.w, -1.0) * z;
 }
 
-// The group's pixels and the k-1 around them (at most kMaxVplInterleave - 1), read once into shared
-// memory with what each sample's tests need: every pixel of the group gathers its 2k-1 x 2k-1
-// neighbours from there. A sample that is no class's (no surface, a pixel that evaluated every
-// class, off the image) has a zero normal, which no normal test passes.
-const int kGroup = int(kVplFilterGroupSize);
-const int kApronMax = int(kMaxVplInterleave) - 1;
-const int kTileMax = kGroup + 2 * kApronMax;
-shared vec4 tileNormalX[kTileMax * kTileMax];  // the normal, view-space x
-shared vec4
-    tilePositionLight[kTileMax * kTileMax];     // view-space y and z, light r g and b, specular r (halves)
-shared uint tileSpecular[kTileMax * kTileMax];  // specular g and b (halves)
-
-void loadTile(ivec2 origin, ivec2 size, int apron) {
-  int side = kGroup + 2 * apron;
-  for (int i = int(gl_LocalInvocationIndex); i < side * side; i += kGroup * kGroup) {
-    ivec2 q = origin - apron + ivec2(i % side, i / side);
-    vec4 normalX = vec4(0.0), positionLight = vec4(0.0);
-    uint specular = 0u;
-    if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size))) {
-      vec4 sample_ = texelFetch(vplIndirect, q, 0);
-      uvec4 qKey = texelFetch(vplSurfaceKey, q, 0);
-      if (sample_.w >= 0.0 && qKey.w == 0u) {
-        vec3 position = viewPosition(q, sample_.w);
-        normalX = vec4(octahedralDecode(unpackSnorm2x16(qKey.x)), position.x);
-        positionLight = vec4(position.yz, uintBitsToFloat(packHalf2x16(sample_.rg)),
-                             uintBitsToFloat(packHalf2x16(vec2(sample_.b, unpackHalf2x16(qKey.y).x))));
-        specular = (qKey.y >> 16) | (qKey.z << 16);
-      }
-    }
-    tileNormalX[i] = normalX;
-    tilePositionLight[i] = positionLight;
-    tileSpecular[i] = specular;
-  }
-}
-
-// One class's samples within k-1 pixels of p from the tile (`start` the smallest offset along each
-// axis, offsets k apart; `local` p's place in the group), with tent weights (k - |d|) per axis, where
-// they lie on p's surface (normal within kNormalCos, within planeTolerance of p's tangent plane).
-void gatherClassInTile(ivec2 local, ivec2 start, int k, vec3 normal, vec3 position, float planeTolerance,
-                       inout vec3 classSum, inout vec3 classSpecular, inout float classWeight) {
-  int reach = k - 1, side = kGroup + 2 * reach;
-  for (int dy = start.y; dy <= reach; dy += k) {
-    for (int dx = start.x; dx <= reach; dx += k) {
-      int i = (local.y + reach + dy) * side + local.x + reach + dx;
-      vec4 normalX = tileNormalX[i], positionLight = tilePositionLight[i];
-      vec3 q = vec3(normalX.w, positionLight.xy);
-      bool onSurface =
-          dot(normalX.xyz, normal) >= kNormalCos && abs(dot(q - position, normal)) <= planeTolerance;
-      float w = onSurface ? float((k - abs(dx)) * (k - abs(dy))) : 0.0;
-      vec2 rg = unpackHalf2x16(floatBitsToUint(positionLight.z));
-      vec2 bs = unpackHalf2x16(floatBitsToUint(positionLight.w));
-      classSum += w * vec3(rg, bs.x);
-      classSpecular += w * vec3(bs.y, unpackHalf2x16(tileSpecular[i]));
-      classWeight += w;
-    }
-  }
-}
-
-// One class's samples around p read from the images (the ring beyond the tile: an edge pixel's):
-// the offsets along each axis within `far` pixels whose pixel is in the class (`start` the
-// smallest, offsets k apart), leaving out those within `near` pixels along both axes (gathered
-// before), with tent weights (far + 1 - |d|) per axis, where they lie on p's surface.
+// One class's samples around p: the offsets along each axis within `far` pixels whose pixel is in
+// the class (`start` the smallest, offsets k apart), leaving out those within `near` pixels along
+// both axes (gathered before; near < 0: none), with tent weights (far + 1 - |d|) per axis, where they
+// lie on p's surface (normal within kNormalCos, within planeTolerance of p's tangent plane).
 void gatherClass(ivec2 p, ivec2 size, ivec2 start, int k, int near, int far, vec3 normal, vec3 position,
                  float planeTolerance, inout vec3 classSum, inout vec3 classSpecular,
                  inout float classWeight) {
@@ -130,9 +72,6 @@ void gatherClass(ivec2 p, ivec2 size, ivec2 start, int k, int near, int far, vec
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = ivec2(frame.viewport.xy);
-  int k = int(kVplInterleave), reach = k - 1;
-  loadTile(ivec2(gl_WorkGroupID.xy) * kGroup, size, reach);
-  barrier();
   if (p.x >= size.x || p.y >= size.y) return;
   vec4 centre = texelFetch(vplIndirect, p, 0);
   if (centre.w < 0.0) return;  // no surface, or a debug view
@@ -156,6 +95,7 @@ void main() {
 
   // One class at a time (no per-class arrays: at k = 4 they spilled, 9.5 ms at 1080p on the H200):
   // along each axis a class sits at one or two offsets within k-1 pixels.
+  int k = int(kVplInterleave), reach = k - 1;
   ivec2 inBlock = p % k;
   vec3 sum = vec3(0.0), specularSum = vec3(0.0);
   uint found = 0u, missing = 0u;  // missing: a bit per class with no sample
@@ -166,8 +106,8 @@ void main() {
       ivec2 cell = ivec2(cx, cy) - inBlock;
       vec3 classSum = vec3(0.0), classSpecular = vec3(0.0);
       float classWeight = 0.0;
-      gatherClassInTile(ivec2(gl_LocalInvocationID.xy), (cell + reach + k) % k - reach, k, normal, position,
-                        planeTolerance, classSum, classSpecular, classWeight);
+      gatherClass(p, size, (cell + reach + k) % k - reach, k, -1, reach, normal, position, planeTolerance,
+                  classSum, classSpecular, classWeight);
       // None on p's surface within reach (an edge): the class's next ring out, to 2k-1 pixels.
       if (classWeight == 0.0)
         gatherClass(p, size, (cell + 2 * k - 1 + k) % k - (2 * k - 1), k, reach, 2 * k - 1, normal, position,

@@ -22,9 +22,6 @@ LLL_CONST(uint, kMaxVplInterleave, 4u);
 // 2D compute passes (linear depth, tonemap, tile reduction) use 8x8 groups: 64 invocations is a
 // multiple of every subgroup size we meet (8 on lavapipe, 32 on NVIDIA).
 LLL_CONST(uint, kTileGroupSize, 8u);
-// vpl-filter's groups (gi/vpl_filter.comp): each reads its pixels and the k-1 around them into shared
-// memory once.
-LLL_CONST(uint, kVplFilterGroupSize, 8u);
 // Largest supported tile: the tile-depth reduction walks a tile with one 8x8 group.
 LLL_CONST(uint, kMaxTileSize, 16u);
 // Largest render target side; keeps every per-pixel buffer under the storage buffer cap.

@@ -124,8 +124,7 @@ void InterleavedVpls::filter(FrameContext& frame) {
             .storage(44, header_.handle())
             .storage(45, surfaces_.handle())
             .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-        vkCmdDispatch(cmd, divideRoundingUp(t.width, gpu::kVplFilterGroupSize),
-                      divideRoundingUp(t.height, gpu::kVplFilterGroupSize), 1);
+        dispatchPerPixel(cmd, t);
       });
 }
 
