@@ -1,9 +1,7 @@
 #version 460
 // Adds the interleaved VPL light (gi/interleaved_vpls.glsl) to the lit frame. For each pixel p with
-// a surface, the neighbours q within k-1 pixels count where they lie on p's surface: normals within
-// about 37 degrees (kNormalCos), q within 5% of p's depth of p's tangent plane (kPlaneTolerance; 25
-// degrees and 2% gave 40.66 against 40.76 dB, K = 2 against 1, the atrium's VPLs at 640x360 on
-// lavapipe). Each class is averaged over its counting neighbours with tent weights
+// a surface, the neighbours q within k-1 pixels count where they lie on p's surface
+// (gi/vpl_filter_common.glsl). Each class is averaged over its counting neighbours with tent weights
 // (k-|dx|)(k-|dy|), which give every class the same total weight where all count; the class means
 // are summed, since the classes split the VPLs between them. A class no neighbour within k-1 brings
 // (p is at an edge) is looked for in the next ring out, to 2k-1 pixels (atrium, K = 4, 640x360 on
@@ -15,32 +13,19 @@
 // their number). The diffuse sum is multiplied back by p's albedo key, the specular one by p's f0
 // (gi/vpl_interleave_data.glsl). A glossy metal's pixel is no sample: one that evaluated every
 // class keeps its own sum, one in a slot gets its classes from vpl-classes.
+// Where the whole (2k-1)^2 pattern about p lies on p's surface every class counts at every offset
+// and the sum is the tent-weighted sum over k*k: p then adds up vpl-filter-rows' sums down its
+// column (gi/vpl_filter_rows.comp) instead of gathering, where every row centre lies on its surface
+// and every row's pixels on the centre's (the chained tests).
 #define EVERY_CLASS_PLACE  // the edge pixels' slots
 #include "gi/every_class.glsl"
-#include "gi/vpl_interleave_data.glsl"
-#include "shared/gpu_types.h"
+#include "gi/vpl_filter_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-const float kNormalCos = 0.8;
-const float kPlaneTolerance = 0.05;
-
-layout(std430, set = 0, binding = 0) readonly buffer FrameBlock {  // see common/frame.glsl
-  FrameUniforms frame;
-};
 layout(set = 0, binding = 13, rgba16f) uniform image2D hdr;
-// Read by texel fetches, not image loads: on the H200 the gather, 49 samples a pixel at K = 4, took
-// 0.585 ms through imageLoad and 0.574 through texelFetch (bench/results/h200-2026-12-04/run5).
-layout(set = 0, binding = 38) uniform sampler2D vplIndirect;
-layout(set = 0, binding = 39) uniform usampler2D vplSurfaceKey;
 layout(set = 0, binding = 48) uniform usampler2D vplAlbedoKey;
-
-// The point of the view-space surface seen through pixel centre `p` at view depth `z`.
-vec3 viewPosition(ivec2 p, float z) {
-  vec2 ndc = (vec2(p) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
-  // Framebuffer y points down (the projection flips it), view-space y up.
-  return vec3(ndc.x * frame.depthParams.z, -ndc.y * frame.depthParams.w, -1.0) * z;
-}
+layout(set = 0, binding = 50) uniform usampler2D vplRowSums;  // gi/vpl_filter_rows.comp
 
 // One class's samples around p: the offsets along each axis within `far` pixels whose pixel is in
 // the class (`start` the smallest, offsets k apart), leaving out those within `near` pixels along
@@ -55,15 +40,11 @@ void gatherClass(ivec2 p, ivec2 size, ivec2 start, int k, int near, int far, vec
       ivec2 q = p + ivec2(dx, dy);
       if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
       vec4 sample_ = texelFetch(vplIndirect, q, 0);
-      if (sample_.w < 0.0) continue;
       uvec4 qKey = texelFetch(vplSurfaceKey, q, 0);
-      if (qKey.w != 0u) continue;  // holds every class: no class's sample
-      vec3 n = octahedralDecode(unpackSnorm2x16(qKey.x));
-      if (dot(n, normal) < kNormalCos) continue;
-      if (abs(dot(viewPosition(q, sample_.w) - position, normal)) > planeTolerance) continue;
+      if (!sampleOnSurface(q, sample_, qKey, normal, position, kNormalCos, planeTolerance)) continue;
       float w = float((far + 1 - abs(dx)) * (far + 1 - abs(dy)));
       classSum += w * sample_.rgb;
-      classSpecular += w * vec3(unpackHalf2x16(qKey.y), unpackHalf2x16(qKey.z).x);
+      classSpecular += w * specularOfKey(qKey);
       classWeight += w;
     }
   }
@@ -82,20 +63,40 @@ void main() {
   vec3 baseColor = vec3(unpackHalf2x16(albedoKeys.x), blueMetallic.x);
   vec3 key = albedoKey(baseColor), specular = specularKey(key, blueMetallic.y);
   if (centreKey.w == 1u) {  // it evaluated every class itself (a glossy metal)
-    imageStore(hdr, p,
-               imageLoad(hdr, p) +
-                   vec4(centre.rgb * key +
-                            vec3(unpackHalf2x16(centreKey.y), unpackHalf2x16(centreKey.z).x) * specular,
-                        0.0));
+    imageStore(hdr, p, imageLoad(hdr, p) + vec4(centre.rgb * key + specularOfKey(centreKey) * specular, 0.0));
     return;
   }
   if (centreKey.w >= 2u) return;  // vpl-classes lights its classes in slot w - 2 and adds them
   vec3 position = viewPosition(p, centre.w);
   float planeTolerance = kPlaneTolerance * centre.w;
+  int k = int(kVplInterleave), reach = k - 1;
+
+  // The pattern on p's surface: its rows' sums down the column.
+  if (p.y >= reach && p.y + reach < size.y) {
+    vec3 sum = vec3(0.0), specularSum = vec3(0.0);
+    bool whole = true;
+    for (int dy = -reach; dy <= reach; ++dy) {
+      ivec2 q = p + ivec2(0, dy);
+      uvec4 row = texelFetch(vplRowSums, q, 0);
+      if (row.w == 0u ||
+          (dy != 0 && !sampleOnSurface(q, texelFetch(vplIndirect, q, 0), texelFetch(vplSurfaceKey, q, 0),
+                                       normal, position, kChainNormalCos, kChainPlaneTolerance * centre.w))) {
+        whole = false;
+        break;
+      }
+      float w = float(k - abs(dy));
+      vec2 blueSpecularRed = unpackHalf2x16(row.y);
+      sum += w * vec3(unpackHalf2x16(row.x), blueSpecularRed.x);
+      specularSum += w * vec3(blueSpecularRed.y, unpackHalf2x16(row.z));
+    }
+    if (whole) {
+      imageStore(hdr, p, imageLoad(hdr, p) + vec4((sum * key + specularSum * specular) / float(k * k), 0.0));
+      return;
+    }
+  }
 
   // One class at a time (no per-class arrays: at k = 4 they spilled, 9.5 ms at 1080p on the H200):
   // along each axis a class sits at one or two offsets within k-1 pixels.
-  int k = int(kVplInterleave), reach = k - 1;
   ivec2 inBlock = p % k;
   vec3 sum = vec3(0.0), specularSum = vec3(0.0);
   uint found = 0u, missing = 0u;  // missing: a bit per class with no sample

@@ -57,7 +57,11 @@ InterleavedVpls::InterleavedVpls(Context& context, const FrameTargets& targets, 
                "interleaved VPL surface key");
   albedoKey_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
                      "interleaved VPL albedo key");
+  rowSums_ = Image(context, targets.width, targets.height, VK_FORMAT_R32G32B32A32_UINT, kStorage,
+                   "interleaved VPL row sums");
   nearest_ = createNearestClampSampler(context);
+  rowsLayout_ = PipelineLayout(context, {"gi/vpl_filter_rows.comp"}, {}, constants());
+  rows_ = Pipeline(context, rowsLayout_, "gi/vpl_filter_rows.comp", constants());
   layout_ = PipelineLayout(context, {"gi/vpl_filter.comp"}, {}, constants());
   filter_ = Pipeline(context, layout_, "gi/vpl_filter.comp", constants());
 }
@@ -107,32 +111,47 @@ void InterleavedVpls::dispatch(VkCommandBuffer cmd, const FrameTargets& targets)
 
 void InterleavedVpls::filter(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
-  frame.graph.pass(
-      "vpl-filter",
-      {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::Sampled, kCompute),
-       uses(key_, Use::Sampled, kCompute), uses(albedoKey_, Use::Sampled, kCompute),
-       uses(header_, Use::StorageReadWrite, kCompute), uses(surfaces_, Use::StorageWrite, kCompute)},
-      [&](VkCommandBuffer cmd) {
-        filter_.bind(cmd);
-        DescriptorWriter writer;
-        writer.storage(0, frame.uniformBuffer.handle())
-            .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
-        constexpr VkDescriptorType kFetched = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-        writer.image(38, kFetched, indirect_.view(), sampledLayout(indirect_), nearest_)
-            .image(39, kFetched, key_.view(), sampledLayout(key_), nearest_)
-            .image(48, kFetched, albedoKey_.view(), sampledLayout(albedoKey_), nearest_)
-            .storage(44, header_.handle())
-            .storage(45, surfaces_.handle())
-            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-        dispatchPerPixel(cmd, t);
-      });
+  constexpr VkDescriptorType kFetched = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  frame.graph.pass("vpl-filter-rows",
+                   {uses(indirect_, Use::Sampled, kCompute), uses(key_, Use::Sampled, kCompute),
+                    uses(rowSums_, Use::StorageWrite, kCompute)},
+                   [&](VkCommandBuffer cmd) {
+                     rows_.bind(cmd);
+                     DescriptorWriter writer;
+                     writer.storage(0, frame.uniformBuffer.handle())
+                         .image(38, kFetched, indirect_.view(), sampledLayout(indirect_), nearest_)
+                         .image(39, kFetched, key_.view(), sampledLayout(key_), nearest_)
+                         .image(50, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, rowSums_.view(),
+                                VK_IMAGE_LAYOUT_GENERAL)
+                         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rowsLayout_);
+                     dispatchPerPixel(cmd, t);
+                   });
+  frame.graph.pass("vpl-filter",
+                   {uses(t.hdr, Use::StorageReadWrite, kCompute), uses(indirect_, Use::Sampled, kCompute),
+                    uses(key_, Use::Sampled, kCompute), uses(albedoKey_, Use::Sampled, kCompute),
+                    uses(rowSums_, Use::Sampled, kCompute), uses(header_, Use::StorageReadWrite, kCompute),
+                    uses(surfaces_, Use::StorageWrite, kCompute)},
+                   [&](VkCommandBuffer cmd) {
+                     filter_.bind(cmd);
+                     DescriptorWriter writer;
+                     writer.storage(0, frame.uniformBuffer.handle())
+                         .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
+                     writer.image(38, kFetched, indirect_.view(), sampledLayout(indirect_), nearest_)
+                         .image(39, kFetched, key_.view(), sampledLayout(key_), nearest_)
+                         .image(48, kFetched, albedoKey_.view(), sampledLayout(albedoKey_), nearest_)
+                         .image(50, kFetched, rowSums_.view(), sampledLayout(rowSums_), nearest_)
+                         .storage(44, header_.handle())
+                         .storage(45, surfaces_.handle())
+                         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+                     dispatchPerPixel(cmd, t);
+                   });
 }
 
 std::vector<std::pair<std::string, double>> InterleavedVpls::stats() const {
   const double pixels = double(indirect_.width()) * indirect_.height();
   return {{"vpl-interleave", double(side_)},
           {"vpl_interleave_bytes",
-           pixels * (8.0 + 16.0 + 16.0) + double(header_.size() + surfaces_.size() + light_.size())}};
+           pixels * (8.0 + 16.0 + 16.0 + 16.0) + double(header_.size() + surfaces_.size() + light_.size())}};
 }
 
 }  // namespace lll

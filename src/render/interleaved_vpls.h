@@ -8,7 +8,8 @@
 // the specular lobe as it is (it scales with f0, not the albedo); the "vpl-filter" pass
 // (gi/vpl_filter.comp) then sums, for each pixel, every class's mean over the neighbours within
 // K-1 pixels that lie on the same surface and adds the diffuse sum times the pixel's albedo key and
-// the specular sum.
+// the specular sum ("vpl-filter-rows" first sums each pixel's row of 2K-1 where it lies on one
+// surface, which the filter adds up down a column instead of gathering where the column does too).
 // Each pixel evaluates a K*K-th of the VPLs; the light is smoothed over at most 2K-1 pixels and
 // does not cross depth or normal edges. Only the opaque shading from the visibility buffer takes
 // part: glass and particles still evaluate every VPL. Glossy metals evaluate every class
@@ -61,7 +62,8 @@ class InterleavedVpls {
   // The shading pass's grid: each 8x8 workgroup shades pixels of one class
   // (gi/interleaved_vpls.glsl's interleavedPixel).
   void dispatch(VkCommandBuffer cmd, const FrameTargets& targets) const;
-  // The "vpl-filter" pass: the VPL light, gathered, added to hdr; with classesElsewhere() it gives
+  // The "vpl-filter-rows" and "vpl-filter" passes: the VPL light, gathered (by rows and columns
+  // where the pattern lies on one surface), added to hdr; with classesElsewhere() vpl-filter gives
   // the pixels that lack a class slots after the glossy metals', for vpl-classes to light them.
   void filter(FrameContext& frame);
 
@@ -75,6 +77,7 @@ class InterleavedVpls {
                      // specular light over f0 (halves), w 0, 1 for a pixel that evaluated every
                      // class, 2 + its slot for vpl-classes' (what the gather reads of a neighbour)
   Image albedoKey_;  // RGBA32UI: base colour and metallic as halves, roughness (read for the pixel itself)
+  Image rowSums_;    // RGBA32UI: vpl-filter-rows' sums (gi/vpl_filter_rows.comp)
   bool classesElsewhere_ = false;
   // Pixels vpl-classes can take, the glossy metals' and then the edge pixels' (vpl-filter); the
   // metals beyond evaluate every class in place, the edge pixels beyond stand the classes they found
@@ -85,6 +88,8 @@ class InterleavedVpls {
   Buffer surfaces_;                     // gpu::EveryClassSurface per slot
   Buffer light_;                        // per slot and class, rgb as halves
   VkSampler nearest_ = VK_NULL_HANDLE;  // vpl-filter's texel fetches
+  PipelineLayout rowsLayout_;
+  Pipeline rows_;
   PipelineLayout layout_;
   Pipeline filter_;
 };

@@ -13,8 +13,9 @@
 //                  with --glass raster a geometry pass lights each fragment and blends it
 //   vpl-filter     with --vpl-interleave K > 1, a scene with VPLs and opaque surfaces from the
 //                  visibility buffer: shade-opaque evaluates a K*K-th of the VPLs per pixel and this
-//                  gathers the rest (render/interleaved_vpls.h); before it, where the interface
-//                  keeps the classes apart (lll), "vpl-classes" lights the glossy metals' classes
+//                  (after "vpl-filter-rows") gathers the rest (render/interleaved_vpls.h); after it,
+//                  where the interface keeps the classes apart (lll), "vpl-classes" lights the
+//                  glossy metals' and the edge pixels' classes
 // (particles are drawn by the particle system with the same interface: particles/particle_system.h).
 // Where shade-opaque and the compute glass write the frame's last colours (writesDisplay()), they
 // also write its display image (post/display.glsl), and the renderer records no tonemap pass.
