@@ -15,6 +15,7 @@
 #include "scene/builtin_gi_scenes.h"
 #include "scene/camera.h"
 #include "scene/errors.h"
+#include "scene/scene_source.h"
 #include "test_support.h"
 
 namespace lll {
@@ -240,6 +241,69 @@ TEST(GiReference, SunMatchesTheRenderer) {
   expectDirectLightMatchesForward(scene, 1.0f, test::kSameImage, "reference sun plane");
 }
 
+Scene cornellVplsOnly() {
+  SceneRequest request{"cornell"};
+  request.gi.mode = "vpl-only";
+  return loadScene(request);
+}
+
+gi::ReferenceOptions vplGather(gi::VplGather gather) {
+  gi::ReferenceOptions options;
+  options.vpls = gather;
+  options.spp = 1;  // no glass: every sample sees the same point
+  return options;
+}
+
+// `lll reference --vpls unshadowed` is the renderer's VPL light computed on the CPU (formula for
+// formula: the band, the clamp, the cosine, the widened lobe): forward's image of the Cornell room's
+// VPLs, through the tonemap's CPU twin, within the bound the direct light meets; and its mean within
+// 1%. This is what lets the shadowed sum say how much of the renderer's VPL light passes through
+// walls.
+TEST(GiReference, UnshadowedVplsAreTheRenderersVplLight) {
+  const Scene scene = cornellVplsOnly();
+  RenderSettings settings = test::reference({});
+  settings.width = 64;
+  settings.height = 48;
+  settings.ambient = 0.0f;
+  settings.exposure = 16.0f;
+  const test::Rendered rendered = test::render(scene, settings);
+  const gi::RadianceImage image =
+      renderBuiltin(scene, "", vplGather(gi::VplGather::Unshadowed), settings.width, settings.height);
+  test::expectWithinBound(tonemapFilmic(toHdr(image), settings.exposure), rendered.ldr, test::kRasterBound,
+                          "reference unshadowed VPLs cornell");
+  double cpu = 0.0, gpu = 0.0;
+  for (size_t i = 0; i < image.rgb.size(); ++i) {
+    cpu += glm::dot(image.rgb[i], glm::vec3(1.0f));
+    gpu += double(rendered.hdr.rgba[i * 4]) + rendered.hdr.rgba[i * 4 + 1] + rendered.hdr.rgba[i * 4 + 2];
+  }
+  std::printf("[ gi ] cornell VPL light, mean over the image: renderer %.6f, CPU sum %.6f\n",
+              gpu / image.rgb.size(), cpu / image.rgb.size());
+  EXPECT_GT(cpu, 0.0);
+  EXPECT_NEAR(gpu / cpu, 1.0, 0.01);
+}
+
+// The Cornell room's sealed half receives no photon, but the VPLs beside its walls light it through
+// them; with a shadow ray each, nothing.
+TEST(GiReference, ShadowedVplsLeaveTheSealedRoomBlack) {
+  const Scene scene = cornellVplsOnly();
+  const gi::RadianceImage through = renderBuiltin(scene, "sealed", vplGather(gi::VplGather::Unshadowed));
+  glm::vec3 sum(0.0f);
+  for (const glm::vec3& c : through.rgb) sum += c;
+  EXPECT_GT(sum.r + sum.g + sum.b, 0.0f) << "no VPL light leaks into the sealed room: the test shows nothing";
+  const gi::RadianceImage shadowed = renderBuiltin(scene, "sealed", vplGather(gi::VplGather::Shadowed));
+  for (const glm::vec3& c : shadowed.rgb) ASSERT_EQ(c, glm::vec3(0.0f));
+  // In the open room nothing stands between a wall and another: the shadow rays take nothing away.
+  const gi::RadianceImage open = renderBuiltin(scene, "room", vplGather(gi::VplGather::Unshadowed));
+  const gi::RadianceImage openShadowed = renderBuiltin(scene, "room", vplGather(gi::VplGather::Shadowed));
+  double a = 0.0, b = 0.0;
+  for (size_t i = 0; i < open.rgb.size(); ++i) {
+    a += glm::dot(open.rgb[i], glm::vec3(1.0f));
+    b += glm::dot(openShadowed.rgb[i], glm::vec3(1.0f));
+  }
+  EXPECT_GT(b, 0.99 * a);
+  EXPECT_LE(b, a);
+}
+
 class GiReferenceCli : public test::CliTest {};
 
 TEST_F(GiReferenceCli, BadInputToTheCommandFunctionNamesTheInputAndWritesNothing) {
@@ -285,6 +349,15 @@ TEST_F(GiReferenceCli, BadInputToTheCommandFunctionNamesTheInputAndWritesNothing
   bad = job;
   bad.out.reset();
   expectRefused(bad, "--out");
+  bad = job;
+  bad.vpls = "sideways";
+  expectRefused(bad, "--vpls sideways");
+  bad.vpls = "shadowed";
+  bad.options.indirectOnly = true;
+  expectRefused(bad, "--indirect");
+  bad.options.indirectOnly = false;
+  bad.options.bounces = 0;
+  expectRefused(bad, "--bounces 0");
 }
 
 TEST_F(GiReferenceCli, WritesRadianceOrTonemappedImagesAndTheTime) {
@@ -311,6 +384,20 @@ TEST_F(GiReferenceCli, BadInputExitsWithTwoAndNoFile) {
   expectBadInput(test::runLll({"reference", "no-such-scene", "--out", out}), {"no-such-scene"});
   expectBadInput(test::runLll({"reference", "cornell"}), {"--out"});
   expectBadInput(run({"--bounces", "17"}), {"--bounces"});
+  expectBadInput(run({"--vpls", "sideways"}), {"--vpls"});
+  expectBadInput(run({"--vpls", "shadowed", "--indirect"}), {"--vpls", "--indirect"});
+  expectBadInput(run({"--photons", "1000"}), {"--photons", "--vpls"});
+}
+
+TEST_F(GiReferenceCli, VplsReportTheirCount) {
+  const std::string out = (dir_ / "vpls.pfm").string();
+  const test::CliResult r = test::runLll({"reference", "cornell", "--vpls", "shadowed", "--photons", "4000",
+                                          "--width", "16", "--height", "12", "--spp", "1", "--out", out});
+  EXPECT_EQ(r.exitCode, 0) << r;
+  EXPECT_TRUE(test::fs::exists(out));
+  EXPECT_TRUE(test::contains(r.output, "4000 photons")) << r;
+  EXPECT_TRUE(test::contains(r.output, "virtual point lights")) << r;
+  EXPECT_TRUE(test::contains(r.output, "the VPLs shadowed")) << r;
 }
 
 }  // namespace

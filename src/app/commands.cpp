@@ -142,25 +142,37 @@ int runRender(const RenderJob& job) {
 
 int runReference(const ReferenceJob& job) {
   validateResolution(job.width, job.height);
-  gi::validateReferenceOptions(job.options);
   if (!(job.exposure > 0.0f) || !std::isfinite(job.exposure))
     throw InputError(fmt::format("--exposure {}: expected a positive finite number", job.exposure));
   if (!job.out) throw InputError("--out: required, a .exr, .pfm or .png file");
+  gi::ReferenceOptions options = job.options;
+  SceneRequest request = job.scene;
+  if (!job.vpls.empty()) {
+    if (job.vpls != "unshadowed" && job.vpls != "shadowed")
+      throw InputError(fmt::format("--vpls {}: expected unshadowed or shadowed", job.vpls));
+    options.vpls = job.vpls == "shadowed" ? gi::VplGather::Shadowed : gi::VplGather::Unshadowed;
+    request.gi.mode = "vpl-only";
+    request.gi.bounces = options.bounces;
+  }
+  gi::validateReferenceOptions(options);
   PendingOutputs outputs;
   addOutput(outputs, "--out", job.out, {".exr", ".pfm", ".png"});
   std::vector<std::string> warnings;
-  const Scene scene = loadScene(job.scene, &warnings);
+  IndirectLightReport photons;
+  const Scene scene = loadScene(request, &warnings, &photons);
   for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
   const Camera camera = resolveCamera(scene, job.camera);
-  if (scene.directionalLights.empty() &&
-      std::none_of(scene.lights.begin(), scene.lights.end(), gi::emitsLight))
+  if (options.vpls != gi::VplGather::Off)
+    fmt::print(stderr, "lll: {} photons, {} bounces at most: {} virtual point lights\n", request.gi.photons,
+               request.gi.bounces, photons.stats.vpls);
+  else if (scene.directionalLights.empty() &&
+           std::none_of(scene.lights.begin(), scene.lights.end(), gi::emitsLight))
     fmt::print(stderr,
                "lll: warning: scene '{}' has no point, spot, box or directional light: the image is black\n",
                scene.name);
 
   const auto begin = std::chrono::steady_clock::now();
   SlowWorkProgress progress(fmt::format("{}x{}, {} spp", job.width, job.height, job.options.spp));
-  gi::ReferenceOptions options = job.options;
   options.progress = [&](double fraction) { progress.update(fraction); };
   const gi::RadianceImage radiance = gi::renderReference(scene, camera, job.width, job.height, options);
   const HdrImage hdr = HdrImage::fromRgb(radiance.width, radiance.height, radiance.rgb);
@@ -176,7 +188,11 @@ int runReference(const ReferenceJob& job) {
   outputs.commit();
   fmt::print(stderr, "lll: reference {} camera '{}' {}x{}, {} spp, {} bounce(s){}: {:.2f} s\n", scene.name,
              camera.name, job.width, job.height, job.options.spp, job.options.bounces,
-             job.options.indirectOnly ? ", indirect only" : "", seconds);
+             options.vpls == gi::VplGather::Shadowed     ? ", the VPLs shadowed"
+             : options.vpls == gi::VplGather::Unshadowed ? ", the VPLs unshadowed"
+             : job.options.indirectOnly                  ? ", indirect only"
+                                                         : "",
+             seconds);
   return 0;
 }
 

@@ -239,6 +239,26 @@ void addReferenceOptions(CLI::App& cmd, lll::ReferenceJob& job) {
   cmd.add_option("--seed", o.seed, "seed of the random paths (0 to 4294967295)");
   cmd.add_option("--threads", o.threads, "threads (0: one per hardware thread)")
       ->check(CLI::Range(0u, lll::gi::kMaxReferenceThreads));
+  CLI::Option* vpls =
+      cmd.add_option("--vpls", job.vpls,
+                     "instead of path tracing: the virtual point lights of `render --gi vpl-only` (photons "
+                     "traced with --bounces, merged as --vpl-count and --vpl-hierarchy say) summed at the "
+                     "camera's hits as the renderer lights them, unshadowed (as the renderer) or shadowed "
+                     "(a shadow ray to each VPL)")
+          ->check(CLI::IsMember({"unshadowed", "shadowed"}));
+  auto& gi = job.scene.gi;
+  cmd.add_option("--photons", gi.photons, "--vpls: photons traced from the lights")
+      ->check(CLI::Range(1u, lll::gi::kMaxPhotons))
+      ->needs(vpls);
+  cmd.add_option("--vpl-count", gi.vplCount, "--vpls: as `render --vpl-count`")
+      ->check(CLI::Range(0u, lll::gpu::kMaxLights))
+      ->needs(vpls);
+  cmd.add_option("--vpl-hierarchy", gi.hierarchy, "--vpls: as `render --vpl-hierarchy` (grid | none)")
+      ->check(CLI::IsMember({"none", "grid"}))
+      ->needs(vpls);
+  cmd.add_option("--vpl-alpha", gi.vplAlpha, "--vpls: as `render --vpl-alpha`")
+      ->check(finiteIn(lll::gi::kMinHierarchyAlpha, lll::gi::kMaxHierarchyAlpha))
+      ->needs(vpls);
   cmd.add_option("--exposure", job.exposure, "exposure multiplier before tonemapping (.png only)")
       ->check(finiteIn(1e-6, 1e6));
   cmd.add_option("-o,--out", job.out, "radiance image (.exr, .pfm) or tonemapped sRGB .png")->required();

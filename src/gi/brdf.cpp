@@ -35,20 +35,38 @@ glm::vec3 fresnelSchlick(const glm::vec3& f0, float vDotH) {
 
 }  // namespace
 
+namespace {
+
+float surfaceAlpha(const BrdfSurface& s) {
+  return std::max(s.roughness * s.roughness, 1e-3f);
+}
+
+}  // namespace
+
 glm::vec3 brdfCosine(const BrdfSurface& s, const glm::vec3& l) {
+  return brdfCosine(s, l, surfaceAlpha(s));
+}
+
+glm::vec3 brdfCosine(const BrdfSurface& s, const glm::vec3& l, float distributionAlpha) {
   const float nDotL = glm::dot(s.normal, l);
   if (nDotL <= 0.0f) return glm::vec3(0.0f);
   const float nDotV = std::max(glm::dot(s.normal, s.view), 1e-4f);
   const glm::vec3 h = halfVector(l, s.view);
   const float nDotH = std::max(glm::dot(s.normal, h), 0.0f);
   const float vDotH = std::clamp(glm::dot(s.view, h), 0.0f, 1.0f);
-  const float alphaRoughness = std::max(s.roughness * s.roughness, 1e-3f);
+  const float alphaRoughness = surfaceAlpha(s);
   const glm::vec3 f0 = glm::mix(glm::vec3(kDielectricF0), s.baseColor, s.metallic);
   const float dielectricFresnel = fresnelSchlick(glm::vec3(kDielectricF0), vDotH).x;
   const glm::vec3 diffuse = (1.0f - s.metallic) * (1.0f - dielectricFresnel) * s.baseColor / kPi;
-  const glm::vec3 specular = fresnelSchlick(f0, vDotH) * distributionGgx(nDotH, alphaRoughness) *
+  const glm::vec3 specular = fresnelSchlick(f0, vDotH) * distributionGgx(nDotH, distributionAlpha) *
                              visibilitySmithGgxCorrelated(nDotL, nDotV, alphaRoughness);
   return (diffuse + specular) * nDotL;
+}
+
+float lightDistributionAlpha(const Light& light, const BrdfSurface& s, float distance) {
+  const float alpha = surfaceAlpha(s);
+  if (light.type != LightType::Vpl) return alpha;
+  return std::min(alpha + 0.5f * light.nearDistance / std::max(distance, 1e-6f), 1.0f);
 }
 
 float lightAttenuation(const Light& light, const glm::vec3& l, float distance) {

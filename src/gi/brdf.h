@@ -20,6 +20,12 @@ struct BrdfSurface {
 
 // BRDF * cos(theta_l) for light arriving from unit direction l (brdf.glsl's brdfCosine).
 glm::vec3 brdfCosine(const BrdfSurface& s, const glm::vec3& l);
+// The same with the GGX distribution's alpha given (the Smith and Fresnel terms keep the surface's):
+// a light's own lobe, as brdfCosineOver takes lightDistributionA2.
+glm::vec3 brdfCosine(const BrdfSurface& s, const glm::vec3& l, float distributionAlpha);
+// brdf.glsl's lightDistributionAlpha: the distribution's alpha for `light` `distance` away, a VPL's
+// widened by its patch (alpha + near / (2 d), at most 1), any other light's the surface's.
+float lightDistributionAlpha(const Light& light, const BrdfSurface& s, float distance);
 
 // How much of a light's intensity reaches a point `distance` away from it, `l` the unit direction
 // from the point to the light: inverse square times the light's window (range sphere, spot cone or

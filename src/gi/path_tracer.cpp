@@ -43,6 +43,10 @@ void validateReferenceOptions(const ReferenceOptions& options) {
     throw InputError(fmt::format("--bounces {}: expected 0 to {}", options.bounces, kMaxBounces));
   if (options.indirectOnly && options.bounces == 0)
     throw InputError("--indirect with --bounces 0: there is no light left to render");
+  if (options.vpls != VplGather::Off && options.bounces == 0)
+    throw InputError("--vpls with --bounces 0: photons that deposit nothing leave no VPLs");
+  if (options.vpls != VplGather::Off && options.indirectOnly)
+    throw InputError("--vpls with --indirect: the VPLs' light is indirect light only already");
   if (options.threads > kMaxReferenceThreads)
     throw InputError(
         fmt::format("--threads {}: expected 0 (one per core) to {}", options.threads, kMaxReferenceThreads));
@@ -93,7 +97,11 @@ class PathTracer {
         selection_(selectLights(scene.lights)),
         suns_(scene.directionalLights),
         glass_(rays_.hasBlendedMaterials()),
-        offset_(rays_.surfaceOffset()) {}
+        offset_(rays_.surfaceOffset()) {
+    if (options.vpls == VplGather::Off) return;
+    for (const Light& light : scene.lights)
+      if (light.type == LightType::Vpl && light.intensity > 0.0f) vpls_.push_back(&light);
+  }
 
   // One sample of the radiance arriving at the eye along `direction`.
   glm::vec3 sample(const glm::vec3& eye, const glm::vec3& direction, Random& random) const {
@@ -101,6 +109,7 @@ class PathTracer {
     if (!hit) return glm::vec3(0.0f);
     const MaterialSample m = rays_.materialAt(*hit);
     const BrdfSurface s{hit->shadingNormal, -direction, glm::vec3(m.baseColor), m.metallic, m.roughness};
+    if (options_.vpls != VplGather::Off) return vplLight(*hit, s, random);
     glm::vec3 radiance(0.0f);
     if (!options_.indirectOnly) {
       radiance += m.emissive;
@@ -177,6 +186,33 @@ class PathTracer {
     one(*selection_.lights[pick], 1.0f / selection_.probability[pick]);
   }
 
+  // The scene's VPLs summed at the camera's hit `x` (ReferenceOptions::vpls).
+  glm::vec3 vplLight(const RayHit& x, const BrdfSurface& s, Random& random) const {
+    const glm::vec3 origin = x.position + x.normal * offset_;
+    glm::vec3 radiance(0.0f);
+    for (const Light* vpl : vpls_) {
+      const glm::vec3 toLight = vpl->position - x.position;
+      const float distance = glm::length(toLight);
+      if (!(distance > 0.0f) || !(distance < vpl->range)) continue;
+      const glm::vec3 l = toLight / distance;
+      const float attenuation = lightAttenuation(*vpl, l, distance);
+      if (!(attenuation > 0.0f)) continue;
+      const glm::vec3 reflected = brdfCosine(s, l, lightDistributionAlpha(*vpl, s, distance));
+      if (!(glm::dot(reflected, glm::vec3(1.0f)) > 0.0f)) continue;
+      if (options_.vpls == VplGather::Shadowed) {
+        // To the VPL lifted off the surface it was deposited on, so that its own surface does not
+        // hide it.
+        const glm::vec3 toTarget = vpl->position + vpl->direction * offset_ - origin;
+        const float targetDistance = glm::length(toTarget);
+        if (targetDistance > offset_ &&
+            !visible(origin, toTarget / targetDistance, targetDistance - offset_, random))
+          continue;
+      }
+      radiance += reflected * vpl->color * (vpl->intensity * attenuation);
+    }
+    return radiance;
+  }
+
   // Indirect radiance towards the eye at the camera's hit: one path of options_.bounces diffuse
   // bounces, the light each bounce reflects gathered with shadow rays.
   glm::vec3 indirect(const RayHit& x, const BrdfSurface& s, Random& random) const {
@@ -212,6 +248,7 @@ class PathTracer {
   std::vector<DirectionalLight> suns_;
   bool glass_;
   float offset_;
+  std::vector<const Light*> vpls_;  // with options_.vpls
 };
 
 }  // namespace

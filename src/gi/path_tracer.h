@@ -24,6 +24,12 @@
 //   probability: unbiased, cheap for millions of lights, but noisy where many small lights each
 //   light a little: raise spp.
 // - Virtual point lights (LightType::Vpl) in the scene are skipped: they are what is compared.
+//   Except with `vpls` (`lll reference --vpls shadowed|unshadowed`): then a sample is the scene's
+//   VPLs alone summed at the camera's hit, every VPL with its attenuation and lobe as the renderer
+//   lights it (brdf.glsl), without (unshadowed: what the renderer computes) or with a shadow ray
+//   each (to the VPL's position lifted off its surface; glass crossed as above): how much of the
+//   difference between the renderer's VPL light and the path-traced indirect light is the VPLs'
+//   missing visibility. No emission, direct or path-traced light then.
 // Limits: normal maps are not applied (the interpolated vertex normal shades), single-sided
 // surfaces are hit from behind too (the rasterizer culls them), particles are not drawn.
 //
@@ -45,10 +51,13 @@ inline constexpr uint32_t kMaxReferenceSpp = 1u << 16;
 inline constexpr size_t kAllLightsLimit = 64;
 inline constexpr uint32_t kMaxReferenceThreads = 1024;
 
+enum class VplGather { Off, Unshadowed, Shadowed };
+
 struct ReferenceOptions {
   uint32_t spp = kDefaultReferenceSpp;  // samples per pixel, all through the pixel's centre
   uint32_t bounces = kDefaultBounces;   // diffuse bounces of indirect light, 0 to kMaxBounces
   bool indirectOnly = false;            // leave out emission and direct light at the camera's hit
+  VplGather vpls = VplGather::Off;      // the scene's VPLs summed instead (above)
   uint32_t seed = 1;
   uint32_t threads = 0;  // 0: one per hardware thread
   // Called with the fraction of rows done (0..1), from the rendering threads, one call at a time.
@@ -79,7 +88,8 @@ class PixelRays {
   float invWidth_, invHeight_;
 };
 
-// Throws InputError naming the option (--spp, --bounces, --threads) when one is out of range.
+// Throws InputError naming the option (--spp, --bounces, --threads, --vpls) when one is out of range
+// or they do not go together.
 void validateReferenceOptions(const ReferenceOptions& options);
 
 // Throws InputError for bad options (above) and std::runtime_error when Embree fails.
