@@ -100,7 +100,7 @@ LLL_CONST(uint, kParticleMaxGroups, 32u);
 // A particle pixel is opaque once less than this share of the light behind it gets through: the
 // composite stops blending it, particles-resolve stops combining groups there. The error this leaves
 // is far below the fp16 target's own rounding of the raster path's blends; 2^-10 is exact as a half.
-LLL_CONST(float, kParticleOpaqueTransmittance, 1.0f / 256.0f);
+LLL_CONST(float, kParticleOpaqueTransmittance, 1.0f / 1024.0f);
 
 // --particle-lighting atlas: each visible particle's light, per unit albedo, on a grid of
 // kParticleAtlasSide^2 texels over its quad (offsets -1..1 along the camera's right and up),
