@@ -33,10 +33,6 @@ glm::vec3 fresnelSchlick(const glm::vec3& f0, float vDotH) {
   return f0 + (1.0f - f0) * std::pow(1.0f - vDotH, 5.0f);
 }
 
-}  // namespace
-
-namespace {
-
 float surfaceAlpha(const BrdfSurface& s) {
   return std::max(s.roughness * s.roughness, 1e-3f);
 }
