@@ -13,11 +13,10 @@
 // their number). The diffuse sum is multiplied back by p's albedo key, the specular one by p's f0
 // (gi/vpl_interleave_data.glsl). A glossy metal's pixel is no sample: one that evaluated every
 // class keeps its own sum, one in a slot gets its classes from vpl-classes.
-// Where a class row's rows of the (2k-1)^2 pattern about p lie on p's surface, each of its classes
-// counts at every offset and their means add up to the rows' tent-weighted sum over k*k: p then
-// adds up vpl-filter-rows' sums (gi/vpl_filter_rows.comp) for it instead of gathering, where each
-// row centre lies on its surface and each row's pixels on the centre's (the chained tests); the
-// pattern wholly on p's surface takes no gather at all.
+// Where the whole (2k-1)^2 pattern about p lies on p's surface every class counts at every offset
+// and the sum is the tent-weighted sum over k*k: p then adds up vpl-filter-rows' sums down its
+// column (gi/vpl_filter_rows.comp) instead of gathering, where every row centre lies on its surface
+// and every row's pixels on the centre's (the chained tests).
 #define EVERY_CLASS_PLACE  // the edge pixels' slots
 #include "gi/every_class.glsl"
 #include "gi/vpl_filter_common.glsl"
@@ -72,40 +71,39 @@ void main() {
   float planeTolerance = kPlaneTolerance * centre.w;
   int k = int(kVplInterleave), reach = k - 1;
 
-  // A row of the pattern (its pixels at one offset dy) holds one or two rows of k classes' pixels;
-  // the class rows are taken one at a time (no per-class arrays: at k = 4 they spilled, 9.5 ms at
-  // 1080p on the H200). The smallest offset >= -r of a pixel in class row or column c relative to
-  // p's place in its block is (c + r + k) % k - r (the modulo's arguments > 0 for r < 2k).
+  // The pattern on p's surface: its rows' sums down the column.
+  if (p.y >= reach && p.y + reach < size.y) {
+    vec3 sum = vec3(0.0), specularSum = vec3(0.0);
+    bool whole = true;
+    for (int dy = -reach; dy <= reach; ++dy) {
+      ivec2 q = p + ivec2(0, dy);
+      uvec4 row = texelFetch(vplRowSums, q, 0);
+      if (row.w == 0u ||
+          (dy != 0 && !sampleOnSurface(q, texelFetch(vplIndirect, q, 0), texelFetch(vplSurfaceKey, q, 0),
+                                       normal, position, kChainNormalCos, kChainPlaneTolerance * centre.w))) {
+        whole = false;
+        break;
+      }
+      float w = float(k - abs(dy));
+      vec2 blueSpecularRed = unpackHalf2x16(row.y);
+      sum += w * vec3(unpackHalf2x16(row.x), blueSpecularRed.x);
+      specularSum += w * vec3(blueSpecularRed.y, unpackHalf2x16(row.z));
+    }
+    if (whole) {
+      imageStore(hdr, p, imageLoad(hdr, p) + vec4((sum * key + specularSum * specular) / float(k * k), 0.0));
+      return;
+    }
+  }
+
+  // One class at a time (no per-class arrays: at k = 4 they spilled, 9.5 ms at 1080p on the H200):
+  // along each axis a class sits at one or two offsets within k-1 pixels.
   ivec2 inBlock = p % k;
   vec3 sum = vec3(0.0), specularSum = vec3(0.0);
   uint found = 0u, missing = 0u;  // missing: a bit per class with no sample
   for (int cy = 0; cy < k; ++cy) {
-    int startY = (cy - inBlock.y + reach + k) % k - reach;
-    // The class row's rows summed by vpl-filter-rows, where each is whole and its centre on p's
-    // surface: the row's k classes then each count at every offset, and their means add up to the
-    // rows' tent-weighted sums over k*k.
-    vec3 rowsSum = vec3(0.0), rowsSpecular = vec3(0.0);
-    bool rows = true;
-    for (int dy = startY; dy <= reach && rows; dy += k) {
-      ivec2 q = p + ivec2(0, dy);
-      rows = q.y >= 0 && q.y < size.y;
-      uvec4 row = rows ? texelFetch(vplRowSums, q, 0) : uvec4(0u);
-      rows = row.w != 0u &&
-             (dy == 0 || sampleOnSurface(q, texelFetch(vplIndirect, q, 0), texelFetch(vplSurfaceKey, q, 0),
-                                         normal, position, kChainNormalCos, kChainPlaneTolerance * centre.w));
-      float w = float(k - abs(dy));
-      vec2 blueSpecularRed = unpackHalf2x16(row.y);
-      rowsSum += w * vec3(unpackHalf2x16(row.x), blueSpecularRed.x);
-      rowsSpecular += w * vec3(blueSpecularRed.y, unpackHalf2x16(row.z));
-    }
-    if (rows) {
-      sum += rowsSum / float(k * k);
-      specularSum += rowsSpecular / float(k * k);
-      found += uint(k);
-      continue;
-    }
-    // Else class by class.
     for (int cx = 0; cx < k; ++cx) {
+      // Class (cx, cy) relative to p's place in its block: the smallest offset >= -r of a pixel in the
+      // class is (cell + r + k) % k - r (the modulo's arguments > 0 for r < 2k).
       ivec2 cell = ivec2(cx, cy) - inBlock;
       vec3 classSum = vec3(0.0), classSpecular = vec3(0.0);
       float classWeight = 0.0;
