@@ -111,16 +111,20 @@ void InterleavedVpls::dispatch(VkCommandBuffer cmd, const FrameTargets& targets)
 
 void InterleavedVpls::filter(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
+  // What both passes read: the frame's constants and the shading's two images, by texel fetches.
   constexpr VkDescriptorType kFetched = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  auto bindShading = [&](DescriptorWriter& writer) -> DescriptorWriter& {
+    return writer.storage(0, frame.uniformBuffer.handle())
+        .image(38, kFetched, indirect_.view(), sampledLayout(indirect_), nearest_)
+        .image(39, kFetched, key_.view(), sampledLayout(key_), nearest_);
+  };
   frame.graph.pass("vpl-filter-rows",
                    {uses(indirect_, Use::Sampled, kCompute), uses(key_, Use::Sampled, kCompute),
                     uses(rowSums_, Use::StorageWrite, kCompute)},
                    [&](VkCommandBuffer cmd) {
                      rows_.bind(cmd);
                      DescriptorWriter writer;
-                     writer.storage(0, frame.uniformBuffer.handle())
-                         .image(38, kFetched, indirect_.view(), sampledLayout(indirect_), nearest_)
-                         .image(39, kFetched, key_.view(), sampledLayout(key_), nearest_)
+                     bindShading(writer)
                          .image(50, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, rowSums_.view(),
                                 VK_IMAGE_LAYOUT_GENERAL)
                          .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rowsLayout_);
@@ -134,10 +138,8 @@ void InterleavedVpls::filter(FrameContext& frame) {
                    [&](VkCommandBuffer cmd) {
                      filter_.bind(cmd);
                      DescriptorWriter writer;
-                     writer.storage(0, frame.uniformBuffer.handle())
-                         .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
-                     writer.image(38, kFetched, indirect_.view(), sampledLayout(indirect_), nearest_)
-                         .image(39, kFetched, key_.view(), sampledLayout(key_), nearest_)
+                     bindShading(writer)
+                         .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
                          .image(48, kFetched, albedoKey_.view(), sampledLayout(albedoKey_), nearest_)
                          .image(50, kFetched, rowSums_.view(), sampledLayout(rowSums_), nearest_)
                          .storage(44, header_.handle())
