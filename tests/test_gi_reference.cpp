@@ -247,6 +247,13 @@ Scene cornellVplsOnly() {
   return loadScene(request);
 }
 
+// The sum of every pixel's r + g + b.
+double radianceSum(const gi::RadianceImage& image) {
+  double sum = 0.0;
+  for (const glm::vec3& c : image.rgb) sum += double(c.r) + c.g + c.b;
+  return sum;
+}
+
 gi::ReferenceOptions vplGather(gi::VplGather gather) {
   gi::ReferenceOptions options;
   options.vpls = gather;
@@ -271,11 +278,10 @@ TEST(GiReference, UnshadowedVplsAreTheRenderersVplLight) {
       renderBuiltin(scene, "", vplGather(gi::VplGather::Unshadowed), settings.width, settings.height);
   test::expectWithinBound(tonemapFilmic(toHdr(image), settings.exposure), rendered.ldr, test::kRasterBound,
                           "reference unshadowed VPLs cornell");
-  double cpu = 0.0, gpu = 0.0;
-  for (size_t i = 0; i < image.rgb.size(); ++i) {
-    cpu += glm::dot(image.rgb[i], glm::vec3(1.0f));
+  const double cpu = radianceSum(image);
+  double gpu = 0.0;
+  for (size_t i = 0; i < image.rgb.size(); ++i)
     gpu += double(rendered.hdr.rgba[i * 4]) + rendered.hdr.rgba[i * 4 + 1] + rendered.hdr.rgba[i * 4 + 2];
-  }
   std::printf("[ gi ] cornell VPL light, mean over the image: renderer %.6f, CPU sum %.6f\n",
               gpu / image.rgb.size(), cpu / image.rgb.size());
   EXPECT_GT(cpu, 0.0);
@@ -287,19 +293,13 @@ TEST(GiReference, UnshadowedVplsAreTheRenderersVplLight) {
 TEST(GiReference, ShadowedVplsLeaveTheSealedRoomBlack) {
   const Scene scene = cornellVplsOnly();
   const gi::RadianceImage through = renderBuiltin(scene, "sealed", vplGather(gi::VplGather::Unshadowed));
-  glm::vec3 sum(0.0f);
-  for (const glm::vec3& c : through.rgb) sum += c;
-  EXPECT_GT(sum.r + sum.g + sum.b, 0.0f) << "no VPL light leaks into the sealed room: the test shows nothing";
+  EXPECT_GT(radianceSum(through), 0.0) << "no VPL light leaks into the sealed room: the test shows nothing";
   const gi::RadianceImage shadowed = renderBuiltin(scene, "sealed", vplGather(gi::VplGather::Shadowed));
   for (const glm::vec3& c : shadowed.rgb) ASSERT_EQ(c, glm::vec3(0.0f));
   // In the open room nothing stands between a wall and another: the shadow rays take nothing away.
   const gi::RadianceImage open = renderBuiltin(scene, "room", vplGather(gi::VplGather::Unshadowed));
   const gi::RadianceImage openShadowed = renderBuiltin(scene, "room", vplGather(gi::VplGather::Shadowed));
-  double a = 0.0, b = 0.0;
-  for (size_t i = 0; i < open.rgb.size(); ++i) {
-    a += glm::dot(open.rgb[i], glm::vec3(1.0f));
-    b += glm::dot(openShadowed.rgb[i], glm::vec3(1.0f));
-  }
+  const double a = radianceSum(open), b = radianceSum(openShadowed);
   EXPECT_GT(b, 0.99 * a);
   EXPECT_LE(b, a);
 }
