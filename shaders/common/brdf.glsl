@@ -62,16 +62,18 @@ struct BrdfTerms {
   vec3 diffuse;  // the dielectric's Lambert lobe before its Fresnel weight: (1 - metallic) baseColor / pi
   vec3 f0;       // mix(0.04, baseColor, metallic)
   float nDotV;
-  float alpha;   // roughness^2, at least 1e-3
-  float a2;      // alpha^2
-  float smithV;  // the view's square root in the height-correlated Smith term
+  float nDotVSigned;  // dot(normal, view) unclamped: n.h from n.l and n.v (brdfLobeWeights)
+  float alpha;        // roughness^2, at least 1e-3
+  float a2;           // alpha^2
+  float smithV;       // the view's square root in the height-correlated Smith term
 };
 
 BrdfTerms brdfTerms(Surface s) {
   BrdfTerms t;
   t.diffuse = (1.0 - s.metallic) * s.baseColor / kPi;
   t.f0 = mix(vec3(kDielectricF0), s.baseColor, s.metallic);
-  t.nDotV = max(dot(s.normal, s.view), 1e-4);
+  t.nDotVSigned = dot(s.normal, s.view);
+  t.nDotV = max(t.nDotVSigned, 1e-4);
   t.alpha = max(s.roughness * s.roughness, 1e-3);
   t.a2 = t.alpha * t.alpha;
   t.smithV = sqrt(t.nDotV * t.nDotV * (1.0 - t.a2) + t.a2);
@@ -79,34 +81,42 @@ BrdfTerms brdfTerms(Surface s) {
 }
 
 // BRDF * cos(theta_l) / q for light arriving from unit direction l (nDotL = dot(normal, l) > 0),
-// q > 0 the inverse square's denominator (1 for the sun). glTF's material is
-// mix(dielectric_brdf, metal_brdf, metallic): the dielectric's diffuse is weighted by its own
-// Fresnel term (f0 = 0.04), the metal has none, and the two specular lobes blend into one with
-// f0 = mix(0.04, baseColor, metallic). Weighting the diffuse by 1 - F of that blended f0 instead
+// q > 0 the inverse square's denominator (1 for the sun), times `scale`, as three weights w:
+//   diffuse lobe t.diffuse * w.x, specular lobe t.f0 * w.y + w.z, their sum the radiance.
+// glTF's material is mix(dielectric_brdf, metal_brdf, metallic): the dielectric's diffuse is weighted
+// by its own Fresnel term (f0 = 0.04), the metal has none, and the two specular lobes blend into one
+// with f0 = mix(0.04, baseColor, metallic). Weighting the diffuse by 1 - F of that blended f0 instead
 // darkens partly metallic surfaces (0.86x the specification at metallic 0.5).
-// The GGX distribution a2 / (pi dd^2), the Smith visibility 0.5 / sum and the 1 / q share one
-// reciprocal, and Schlick's (1 - vDotH)^5 is multiplied out: this runs once per light per pixel.
-// brdfLobesOver gives the diffuse and specular lobes apart, before the factor nDotL; `a2d` is the
-// distribution's alpha^2: t.a2, or a virtual point light's wider lobe (lightDistributionA2).
-void brdfLobesOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q, float a2d, out vec3 diffuseLobe,
-                   out vec3 specularLobe) {
-  vec3 h = halfVector(l, s.view);
-  float nDotH = max(dot(s.normal, h), 0.0);
-  float vDotH = clamp(dot(s.view, h), 0.0, 1.0);  // rounding can exceed 1 when l == v
+// This runs once per light per pixel, so it is written for the fewest instructions: the half vector
+// h = (l + v) / |l + v| is never formed (|l + v|^2 = 2 + 2 l.v, so n.h = (n.l + n.v) / |l + v| and
+// v.h = (1 + l.v) / |l + v|: one dot product and one inverse square root); the GGX distribution
+// a2 / (pi dd^2), the Smith visibility 0.5 / sum and the 1 / q share one reciprocal; Schlick's
+// F = f0 + (1 - f0) (1 - v.h)^5 is f0 (1 - s) + s, so a colour costs two multiply-adds a lobe pair and
+// the light's colour one more (evaluateLight). `a2d` is the distribution's alpha^2: t.a2, or a
+// virtual point light's wider lobe (lightDistributionA2).
+vec3 brdfLobeWeights(Surface s, BrdfTerms t, vec3 l, float nDotL, float q, float a2d, float scale) {
+  float lDotV = dot(l, s.view);
+  float inverseLength = inversesqrt(max(2.0 + 2.0 * lDotV, 1e-12));  // 1 / |l + v|, defined at l = -v
+  float nDotH = max((nDotL + t.nDotVSigned) * inverseLength, 0.0);
+  float vDotH = clamp((1.0 + lDotV) * inverseLength, 0.0, 1.0);
   float m = 1.0 - vDotH, m2 = m * m, schlick = m2 * m2 * m;
   float dd = nDotH * nDotH * (a2d - 1.0) + 1.0;
   float sum = nDotL * t.smithV + t.nDotV * sqrt(nDotL * nDotL * (1.0 - t.a2) + t.a2);
-  float r = 1.0 / (q * dd * dd * sum);  // every factor > 0: nDotL, nDotV > 0, dd >= a2d, q >= 1e-4
-  vec3 diffuse = t.diffuse * ((1.0 - kDielectricF0) * (1.0 - schlick));  // 1 - the dielectric's F
-  vec3 fresnel = t.f0 + (1.0 - t.f0) * schlick;
-  diffuseLobe = diffuse * (dd * dd * sum * r);
-  specularLobe = fresnel * (a2d * (0.5 / kPi) * r);
+  float p = dd * dd * sum;
+  float r = scale * nDotL / (q * p);  // every factor > 0: nDotL, nDotV > 0, dd >= a2d, q >= 1e-4
+  float specular = a2d * (0.5 / kPi) * r;
+  float specularSchlick = specular * schlick;
+  // The diffuse: (1 - the dielectric's F) / q, p r = scale nDotL / q.
+  return vec3((1.0 - kDielectricF0) * (1.0 - schlick) * (p * r), specular - specularSchlick, specularSchlick);
+}
+
+// The weights' radiance per unit light colour.
+vec3 brdfOfWeights(BrdfTerms t, vec3 w) {
+  return t.diffuse * w.x + (t.f0 * w.y + w.z);
 }
 
 vec3 brdfCosineOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q, float a2d) {
-  vec3 diffuseLobe, specularLobe;
-  brdfLobesOver(s, t, l, nDotL, q, a2d, diffuseLobe, specularLobe);
-  return (diffuseLobe + specularLobe) * nDotL;
+  return brdfOfWeights(t, brdfLobeWeights(s, t, l, nDotL, q, a2d, 1.0));
 }
 
 vec3 brdfCosineOver(Surface s, BrdfTerms t, vec3 l, float nDotL, float q) {
@@ -252,8 +262,9 @@ vec3 evaluateLight(GpuLight light, Surface s, BrdfTerms t) {
   float window = lightWindow(light, toLight, l, distance, distanceSquared, q);
   if (window <= 0.0) return vec3(0.0);
   if (kLocalShadows) window *= localShadow(light, s.position, s.normal, l, distance);
-  return brdfCosineOver(s, t, l, nDotL, max(q, 1e-4), lightDistributionA2(light, t, inverseDistance)) *
-         light.colorIntensity.rgb * (light.colorIntensity.w * window);
+  vec3 w = brdfLobeWeights(s, t, l, nDotL, max(q, 1e-4), lightDistributionA2(light, t, inverseDistance),
+                           light.colorIntensity.w * window);
+  return light.colorIntensity.rgb * brdfOfWeights(t, w);
 }
 
 // The same radiance in its two lobes, added to `diffuse` and `specular` (the VPL filter scales only
@@ -273,12 +284,10 @@ void evaluateLightLobes(GpuLight light, Surface s, BrdfTerms t, inout vec3 diffu
   float window = lightWindow(light, toLight, l, distance, distanceSquared, q);
   if (window <= 0.0) return;
   if (kLocalShadows) window *= localShadow(light, s.position, s.normal, l, distance);
-  vec3 diffuseLobe, specularLobe;
-  brdfLobesOver(s, t, l, nDotL, max(q, 1e-4), lightDistributionA2(light, t, inverseDistance), diffuseLobe,
-                specularLobe);
-  vec3 scale = light.colorIntensity.rgb * (light.colorIntensity.w * window * nDotL);
-  diffuse += diffuseLobe * scale;
-  specular += specularLobe * scale;
+  vec3 w = brdfLobeWeights(s, t, l, nDotL, max(q, 1e-4), lightDistributionA2(light, t, inverseDistance),
+                           light.colorIntensity.w * window);
+  diffuse += light.colorIntensity.rgb * (t.diffuse * w.x);
+  specular += light.colorIntensity.rgb * (t.f0 * w.y + w.z);
 }
 
 vec3 evaluateLight(GpuLight light, Surface s) {
