@@ -6,22 +6,22 @@
 #include "particles/random.glsl"
 #include "particles/scattering.glsl"
 
-// Value noise (smoothstep-interpolated hashed lattice values) over a lattice of kPuffNoisePeriod^2
-// points that repeats, baked on the CPU at kPuffNoiseTexelsPerCell texels per lattice cell
-// (particles/puff_noise.h) and filtered bilinearly by the sampler, which wraps. Hashing the four
-// lattice points per pixel cost the H200 28% of the composite pass (65,536 vertex-lit particles:
-// 3.74 ms with it, 2.68 with constant noise); the texture is two filtered reads.
+// Two octaves of value noise (smoothstep-interpolated hashed lattice values, the second at twice the
+// frequency) over a lattice of kPuffNoisePeriod^2 points that repeats, baked on the CPU at
+// kPuffNoiseTexelsPerCell texels per lattice cell (particles/puff_noise.h: puffNoise) and filtered
+// bilinearly by the sampler, which wraps: one read a covered pixel. Hashing the four lattice points
+// per pixel cost the H200 28% of the composite pass (65,536 vertex-lit particles: 3.74 ms with it,
+// 2.68 with constant noise); an octave a read, two reads.
 layout(set = 0, binding = 31) uniform sampler2D puffNoise;
 
-float valueNoise(vec2 p) {
+float twoOctaveNoise(vec2 p) {
   return textureLod(puffNoise, p * (1.0 / float(kPuffNoisePeriod)), 0.0).r;
 }
 
-// Density of the puff at radius^2 r2: falls smoothly to zero at the rim, broken up by two octaves
-// of noise so overlapping puffs do not read as discs.
+// Density of the puff at radius^2 r2: falls smoothly to zero at the rim, broken up by the noise so
+// overlapping puffs do not read as discs.
 float puffDensity(float r2, vec2 pattern) {
-  float noise = 0.65 * valueNoise(pattern) + 0.35 * valueNoise(pattern * 2.3);
-  return (1.0 - r2) * (1.0 - r2) * (0.45 + 0.55 * noise);
+  return (1.0 - r2) * (1.0 - r2) * (0.45 + 0.55 * twoOctaveNoise(pattern));
 }
 
 // What does not vary across a particle's quad, from its slot and the frame's light at its centre

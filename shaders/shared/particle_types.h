@@ -110,10 +110,11 @@ LLL_CONST(uint, kParticleAtlasSide, 4u);
 // Particles a workgroup of atlas lighting takes, an invocation per texel (kMaxParticles /
 // kParticleAtlasGroup groups: within the 65,535 a dispatch holds everywhere).
 LLL_CONST(uint, kParticleAtlasGroup, 16u);
-// The puffs' noise texture (particles/puff.glsl, src/particles/puff_noise.h): value noise over a
-// lattice of kPuffNoisePeriod^2 points that repeats, kPuffNoiseTexelsPerCell texels per cell.
-LLL_CONST(uint, kPuffNoisePeriod, 64u);
-LLL_CONST(uint, kPuffNoiseTexelsPerCell, 4u);
+// The puffs' noise texture (particles/puff.glsl, src/particles/puff_noise.h): two octaves of value
+// noise over a lattice of kPuffNoisePeriod^2 points that repeats, kPuffNoiseTexelsPerCell texels
+// per cell (the second octave's cells are half as wide: 4 texels).
+LLL_CONST(uint, kPuffNoisePeriod, 32u);
+LLL_CONST(uint, kPuffNoiseTexelsPerCell, 8u);
 
 // The tiled renderer's header. It works in particle pixels: the frame's with
 // --particle-resolution full, 2 x 2 or 4 x 4 of them (`scale`) at half or quarter resolution. Each tile's

@@ -27,6 +27,12 @@ float puffValueNoise(glm::vec2 p) {
   return glm::mix(glm::mix(a, b, u.x), glm::mix(c, d, u.x), u.y);
 }
 
+float puffNoise(glm::vec2 p) {
+  // The second octave's lattice starts at a point of the first's far from the origin, so its
+  // values are not the first octave's at every other lattice point.
+  return 0.65f * puffValueNoise(p) + 0.35f * puffValueNoise(2.0f * p + glm::vec2(37.0f, 17.0f));
+}
+
 uint32_t puffNoiseSide() {
   return gpu::kPuffNoisePeriod * gpu::kPuffNoiseTexelsPerCell;
 }
@@ -37,7 +43,7 @@ std::vector<uint8_t> bakePuffNoise() {
   std::vector<uint8_t> texels(size_t(side) * side);
   for (uint32_t y = 0; y < side; ++y)
     for (uint32_t x = 0; x < side; ++x) {
-      const float v = puffValueNoise((glm::vec2(x, y) + 0.5f) * perTexel);
+      const float v = puffNoise((glm::vec2(x, y) + 0.5f) * perTexel);
       texels[size_t(y) * side + x] = uint8_t(std::lround(v * 255.0f));
     }
   return texels;
