@@ -151,14 +151,10 @@ uint keyOfRank(uint rank, uint base, uint words) {
 }
 
 // Blends cell `cell`'s particles into the pixel, nearest first (barriers: call it uniformly): into
-// `layer` (colour, transmittance), which holds the particles in front of glassViewDepth until the
-// first behind it (with glass), then, `front` keeping the front ones' and `inBehind` set, those
-// behind (one layer blended at a time: a pixel's front particles all come before its behind ones,
-// the keys being their depths). `pixel` is in particle pixels, `framePixel` the frame pixel at its
-// centre (for the lights).
+// `front` (colour, transmittance), or with glass into `behind` those behind glassViewDepth.
+// `pixel` is in particle pixels, `framePixel` the frame pixel at its centre (for the lights).
 void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, float glassViewDepth,
-               uint visible, uint slab, inout vec4 layer, inout vec4 front, inout bool inBehind,
-               inout bool finished) {
+               uint visible, uint slab, inout vec4 front, inout vec4 behind, inout bool finished) {
   uvec2 range = particleTileRange(cell);
   uint count = range.y;
   if (count == 0u) return;
@@ -191,15 +187,11 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
       // The shape first: most of a tile's particles miss most of its pixels.
       ParticleShape shape = stagedShape[j];
       if (shape.centre.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
+      bool isBehind = kBehindGlass && shape.centre.z >= glassViewDepth;
+      float fadeDepth = isBehind || !kBehindGlass ? sceneViewDepth : glassViewDepth;
       vec2 offset = (pixelCentre - shape.centre.xy) * shape.axes.xy;
       float r2 = dot(offset, offset);
       if (r2 >= 1.0) continue;
-      if (kBehindGlass && !inBehind && shape.centre.z >= glassViewDepth) {
-        front = layer;  // the first particle behind the glass: the front layer is complete
-        layer = vec4(0.0, 0.0, 0.0, 1.0);
-        inBehind = true;
-      }
-      float fadeDepth = inBehind || !kBehindGlass ? sceneViewDepth : glassViewDepth;
       ParticleLook look = stagedLook[j];
       // The offset turned back by the particle's rotation: where the puff's pattern is read.
       vec2 corner = vec2(shape.axes.z * offset.x + shape.axes.w * offset.y,
@@ -215,8 +207,13 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
       } else if (kLightSource == 2u) {
         radiance += look.albedoOpacity.rgb * atlasLight(look.order, offset);
       }
+      vec4 layer = isBehind ? behind : front;
       layer.rgb += layer.a * radiance * alpha;
       layer.a *= 1.0 - alpha * (1.0 - system.blend.x);
+      if (isBehind)
+        behind = layer;
+      else
+        front = layer;
       // Opaque in front: nothing behind shows; opaque behind: the front particles all came before.
       if (layer.a < kParticleOpaqueTransmittance) {
         finished = true;
@@ -261,8 +258,7 @@ void main() {
   if (finished) atomicAdd(finishedPixels, 1u);
   barrier();
   uint visible = particleCounters.dispatch.w;
-  vec4 layer = vec4(0.0, 0.0, 0.0, 1.0), front = layer;
-  bool inBehind = false;
+  vec4 front = vec4(0.0, 0.0, 0.0, 1.0), behind = vec4(0.0, 0.0, 0.0, 1.0);
   uint slabs = tileHeader.cellsX;
   uint group = gl_WorkGroupID.z;
   uint firstSlab = group * slabs / tileHeader.groups, endSlab = (group + 1u) * slabs / tileHeader.groups;
@@ -277,19 +273,14 @@ void main() {
       barrier();
       if (opaqueInFront) break;  // the same in every invocation
     }
-    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, slab, layer,
-              front, inBehind, finished);
+    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, slab, front,
+              behind, finished);
     barrier();
   }
   if (gl_LocalInvocationIndex == 0u && finishedPixels == kThreads)
     tileGroupOpaque[tile * tileHeader.groups + group] = 1u;
   // Stopped for a group in front: particles-resolve never reads this group here.
   if (!inside || (group > 0u && opaqueInFront)) return;
-  vec4 behind = vec4(0.0, 0.0, 0.0, 1.0);
-  if (inBehind)
-    behind = layer;
-  else
-    front = layer;
   uint index = particleLayerIndex(group, pixel);
   particleLayers[index] = uvec2(packHalf2x16(front.rg), packHalf2x16(front.ba));
   if (kBehindGlass) particleLayersBehind[index] = uvec2(packHalf2x16(behind.rg), packHalf2x16(behind.ba));
