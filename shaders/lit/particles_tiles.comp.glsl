@@ -53,21 +53,30 @@ const uint kThreads = kParticleTileSize * kParticleTileSize;
 shared uint sortedKeys[kParticleTileBitmapWords];
 // With the bitmap: the set bits before each invocation's run of words.
 shared uint runRanks[kParticleTileSize * kParticleTileSize];
-// A staged particle in two parts, the part every pixel reads and the part covered pixels read.
-struct ParticleShape {
-  vec4 centre;
-  vec4 axes;
-};
-struct ParticleLook {
-  vec4 albedoOpacity;
-  vec4 baseRadiance;
+// A staged particle in as few bytes as its pixels read, since every pixel of the tile reads every
+// staged particle from shared memory (most of the pass's time): the disc that every pixel tests,
+//   xy centre (particle pixels), z view depth, w ParticleScreen's axes.x (the offset on the quad per
+//   pixel along x; along y it is axes.x times the frame's axisRatio()),
+// the look that a covered pixel reads, as half floats,
+//   x rotation (cos, sin), y pattern seed (exact: puffLook), z base radiance (r, g), w (b, opacity),
+// and, for atlas and pixel lighting only, the albedo and draw order (as its bits) and the world
+// centre and radius.
+const float kLargestHalf = 65504.0;
+shared vec4 stagedDisc[kThreads];
+shared uvec4 stagedLook[kThreads];
+struct ParticleLit {
+  vec4 albedoOrder;
   vec4 worldRadius;
-  uint order;
 };
-shared ParticleShape stagedShape[kThreads];
-shared ParticleLook stagedLook[kThreads];
+shared ParticleLit stagedLit[kLightSource == 0u ? 1u : kThreads];
 shared uint finishedPixels;
 shared bool opaqueInFront;  // a group in front of this one made the whole tile opaque
+
+// ParticleScreen's axes.y / axes.x, the same for every particle: the viewport's aspect over the
+// projection's, negative since Vulkan's y points down (particles/bin.comp).
+float axisRatio() {
+  return frame.viewport.w / frame.viewport.z * (frame.proj[0][0] / frame.proj[1][1]);
+}
 
 // Puts the cell's `count` keys from entry `first` (at most kThreads) in sortedKeys ascending, by
 // rank: each invocation counts the keys below its own (a cell holds a particle once, so the keys
@@ -171,41 +180,50 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
     markKeys(range.x, count, base, words);
   }
   vec2 pixelCentre = vec2(pixel) + 0.5;
+  vec2 axes = vec2(1.0, axisRatio());
   for (uint start = 0u; start < count; start += kThreads) {
     uint index = start + gl_LocalInvocationIndex;
     if (index < count) {
       uint key = sortedHere ? sortedKeys[index] : keyOfRank(index, base, words);
       uint order = visible - 1u - key;
       ParticleScreen s = particleScreen[order];
-      stagedShape[gl_LocalInvocationIndex] = ParticleShape(s.centre, s.axes);
+      stagedDisc[gl_LocalInvocationIndex] = vec4(s.centre.xyz, s.axes.x);
       stagedLook[gl_LocalInvocationIndex] =
-          ParticleLook(s.albedoOpacity, s.baseRadiance, s.worldRadius, order);
+          uvec4(packHalf2x16(s.axes.zw), packHalf2x16(vec2(s.centre.w, s.baseRadiance.w)),
+                packHalf2x16(min(s.baseRadiance.rg, vec2(kLargestHalf))),
+                packHalf2x16(vec2(min(s.baseRadiance.b, kLargestHalf), s.albedoOpacity.a)));
+      if (kLightSource != 0u)
+        stagedLit[gl_LocalInvocationIndex] =
+            ParticleLit(vec4(s.albedoOpacity.rgb, uintBitsToFloat(order)), s.worldRadius);
     }
     barrier();
     uint n = min(kThreads, count - start);
     for (uint j = 0u; j < n && !finished; ++j) {
-      // The shape first: most of a tile's particles miss most of its pixels.
-      ParticleShape shape = stagedShape[j];
-      if (shape.centre.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
-      bool isBehind = kBehindGlass && shape.centre.z >= glassViewDepth;
+      // The disc first: most of a tile's particles miss most of its pixels.
+      vec4 disc = stagedDisc[j];
+      if (disc.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
+      bool isBehind = kBehindGlass && disc.z >= glassViewDepth;
       float fadeDepth = isBehind || !kBehindGlass ? sceneViewDepth : glassViewDepth;
-      vec2 offset = (pixelCentre - shape.centre.xy) * shape.axes.xy;
+      vec2 offset = (pixelCentre - disc.xy) * (axes * disc.w);
       float r2 = dot(offset, offset);
       if (r2 >= 1.0) continue;
-      ParticleLook look = stagedLook[j];
+      uvec4 look = stagedLook[j];
+      vec2 rotation = unpackHalf2x16(look.x), radianceRg = unpackHalf2x16(look.z);
+      vec2 radianceBOpacity = unpackHalf2x16(look.w);
       // The offset turned back by the particle's rotation: where the puff's pattern is read.
-      vec2 corner = vec2(shape.axes.z * offset.x + shape.axes.w * offset.y,
-                         shape.axes.z * offset.y - shape.axes.w * offset.x);
-      float alpha = look.albedoOpacity.a *
-                    puffDensity(r2, corner * 1.5 + vec2(shape.centre.w, look.baseRadiance.w)) *
-                    softFade(fadeDepth, shape.centre.z);
-      vec3 radiance = look.baseRadiance.rgb;
+      vec2 corner =
+          vec2(rotation.x * offset.x + rotation.y * offset.y, rotation.x * offset.y - rotation.y * offset.x);
+      float alpha = radianceBOpacity.y * puffDensity(r2, corner * 1.5 + unpackHalf2x16(look.y)) *
+                    softFade(fadeDepth, disc.z);
+      vec3 radiance = vec3(radianceRg, radianceBOpacity.x);
       if (kLightSource == 1u) {
+        ParticleLit lit = stagedLit[j];
         vec3 world =
-            look.worldRadius.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * look.worldRadius.w;
-        radiance += look.albedoOpacity.rgb * puffLight(world, offset, r2, framePixel, shape.centre.z);
+            lit.worldRadius.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * lit.worldRadius.w;
+        radiance += lit.albedoOrder.rgb * puffLight(world, offset, r2, framePixel, disc.z);
       } else if (kLightSource == 2u) {
-        radiance += look.albedoOpacity.rgb * atlasLight(look.order, offset);
+        ParticleLit lit = stagedLit[j];
+        radiance += lit.albedoOrder.rgb * atlasLight(floatBitsToUint(lit.albedoOrder.w), offset);
       }
       vec4 layer = isBehind ? behind : front;
       layer.rgb += layer.a * radiance * alpha;

@@ -40,7 +40,11 @@ PuffLook puffLook(Particle p, uint slot, vec3 centreLight) {
   look.albedoOpacity = vec4(albedo, opacityAt(t));
   look.baseRadiance = albedo * (frame.ambient.rgb + centreLight + emissionAt(t));
   look.radius = sizeAt(t) * p.attributes.x;
-  look.patternSeed = vec2(random01(system.modes.w, slot, 11u), random01(system.modes.w, slot, 12u)) * 64.0;
+  // Anywhere on the noise's period (32 lattice cells), in 64ths of a cell: exact as a half float,
+  // so the compute renderer can stage it as one.
+  look.patternSeed = floor(vec2(random01(system.modes.w, slot, 11u), random01(system.modes.w, slot, 12u)) *
+                           float(kPuffNoisePeriod * 64u)) /
+                     64.0;
   return look;
 }
 
