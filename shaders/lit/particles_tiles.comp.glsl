@@ -54,14 +54,9 @@ shared uint sortedKeys[kParticleTileBitmapWords];
 // With the bitmap: the set bits before each invocation's run of words.
 shared uint runRanks[kParticleTileSize * kParticleTileSize];
 // A staged particle in as few bytes as its pixels read, since every pixel of the tile reads every
-// staged particle from shared memory (most of the pass's time): the disc that every pixel tests,
-//   xy centre (particle pixels), z view depth, w ParticleScreen's axes.x (the offset on the quad per
-//   pixel along x; along y it is axes.x times the frame's axisRatio()),
-// the look that a covered pixel reads, as half floats,
-//   x rotation (cos, sin), y pattern seed (exact: puffLook), z base radiance (r, g), w (b, opacity),
-// and, for atlas and pixel lighting only, the albedo and draw order (as its bits) and the world
-// centre and radius.
-const float kLargestHalf = 65504.0;
+// staged particle from shared memory (most of the pass's time): ParticleScreen's disc, which every
+// pixel tests, and look, which a covered pixel reads, and, for atlas and pixel lighting only, the
+// albedo and draw order (as its bits) and the world centre and radius.
 shared vec4 stagedDisc[kThreads];
 shared uvec4 stagedLook[kThreads];
 struct ParticleLit {
@@ -71,12 +66,6 @@ struct ParticleLit {
 shared ParticleLit stagedLit[kLightSource == 0u ? 1u : kThreads];
 shared uint finishedPixels;
 shared bool opaqueInFront;  // a group in front of this one made the whole tile opaque
-
-// ParticleScreen's axes.y / axes.x, the same for every particle: the viewport's aspect over the
-// projection's, negative since Vulkan's y points down (particles/bin.comp).
-float axisRatio() {
-  return frame.viewport.w / frame.viewport.z * (frame.proj[0][0] / frame.proj[1][1]);
-}
 
 // Puts the cell's `count` keys from entry `first` (at most kThreads) in sortedKeys ascending, by
 // rank: each invocation counts the keys below its own (a cell holds a particle once, so the keys
@@ -134,6 +123,22 @@ void markKeys(uint first, uint count, uint base, uint words) {
   barrier();
 }
 
+// The position of set bit `rank` (0: the lowest) of `word`, which has more set bits than that: halves
+// of the word in turn, five steps whatever the rank (dropping the lowest bits one at a time took up
+// to 31, and a warp waits for its slowest lane).
+uint setBitOfRank(uint word, uint rank) {
+  uint position = 0u;
+  for (uint width = 16u; width > 0u; width >>= 1u) {
+    uint low = uint(bitCount(word & ((1u << width) - 1u)));
+    if (rank >= low) {
+      rank -= low;
+      word >>= width;
+      position += width;
+    }
+  }
+  return position;
+}
+
 // The key of rank `rank` (0: the nearest) in the bitmap markKeys made.
 uint keyOfRank(uint rank, uint base, uint words) {
   // The last run with fewer set bits before it than `rank` + 1 holds it.
@@ -150,10 +155,7 @@ uint keyOfRank(uint rank, uint base, uint words) {
   for (uint w = low * run; w < min(low * run + run, words); ++w) {
     uint word = sortedKeys[w];
     uint bits = uint(bitCount(word));
-    if (left < bits) {
-      for (uint i = 0u; i < left; ++i) word &= word - 1u;  // drop the lowest set bits
-      return base + w * 32u + uint(findLSB(word));
-    }
+    if (left < bits) return base + w * 32u + setBitOfRank(word, left);
     left -= bits;
   }
   return base;  // not reached: the ranks count the bits
@@ -180,21 +182,18 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
     markKeys(range.x, count, base, words);
   }
   vec2 pixelCentre = vec2(pixel) + 0.5;
-  vec2 axes = vec2(1.0, axisRatio());
+  vec2 axes = vec2(1.0, particleAxisRatio());
   for (uint start = 0u; start < count; start += kThreads) {
     uint index = start + gl_LocalInvocationIndex;
     if (index < count) {
       uint key = sortedHere ? sortedKeys[index] : keyOfRank(index, base, words);
       uint order = visible - 1u - key;
-      ParticleScreen s = particleScreen[order];
-      stagedDisc[gl_LocalInvocationIndex] = vec4(s.centre.xyz, s.axes.x);
-      stagedLook[gl_LocalInvocationIndex] =
-          uvec4(packHalf2x16(s.axes.zw), packHalf2x16(vec2(s.centre.w, s.baseRadiance.w)),
-                packHalf2x16(min(s.baseRadiance.rg, vec2(kLargestHalf))),
-                packHalf2x16(vec2(min(s.baseRadiance.b, kLargestHalf), s.albedoOpacity.a)));
+      stagedDisc[gl_LocalInvocationIndex] = particleScreen[order].disc;
+      stagedLook[gl_LocalInvocationIndex] = particleScreen[order].look;
       if (kLightSource != 0u)
         stagedLit[gl_LocalInvocationIndex] =
-            ParticleLit(vec4(s.albedoOpacity.rgb, uintBitsToFloat(order)), s.worldRadius);
+            ParticleLit(vec4(particleScreen[order].albedo.rgb, uintBitsToFloat(order)),
+                        particleScreen[order].worldRadius);
     }
     barrier();
     uint n = min(kThreads, count - start);

@@ -23,14 +23,15 @@ ParticleScreen screenOf(uint order) {
   ParticleScreen s;
   // In particle pixels (tileHeader.scale frame pixels a side).
   float scale = float(tileHeader.scale);
-  s.centre = vec4((clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy / scale, depth, look.patternSeed.x);
-  // A pixel is 2 / size in NDC, and NDC = proj[i][i] * view / depth along each axis: the offset on
-  // the quad (radius 1) per pixel.
-  s.axes =
-      vec4(2.0 * scale * frame.viewport.zw * depth / (vec2(frame.proj[0][0], frame.proj[1][1]) * look.radius),
-           cos(p.attributes.y), sin(p.attributes.y));
-  s.albedoOpacity = look.albedoOpacity;
-  s.baseRadiance = vec4(look.baseRadiance, look.patternSeed.y);
+  // A pixel is 2 / width in NDC, and NDC = proj[0][0] * view / depth along x: the offset on the quad
+  // (radius 1) per pixel (along y: particleAxes).
+  s.disc = vec4((clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy / scale, depth,
+                2.0 * scale * frame.viewport.z * depth / (frame.proj[0][0] * look.radius));
+  const float largestHalf = 65504.0;
+  vec3 radiance = min(look.baseRadiance, vec3(largestHalf));
+  s.look = uvec4(packHalf2x16(vec2(cos(p.attributes.y), sin(p.attributes.y))), packHalf2x16(look.patternSeed),
+                 packHalf2x16(radiance.rg), packHalf2x16(vec2(radiance.b, look.albedoOpacity.a)));
+  s.albedo = vec4(look.albedoOpacity.rgb, 0.0);
   s.worldRadius = vec4(p.positionAge.xyz, look.radius);
   return s;
 }

@@ -53,15 +53,26 @@ uint particleLayerIndex(uint group, ivec2 pixel) {
   return (group * tileHeader.layerHeight + uint(pixel.y)) * tileHeader.layerWidth + uint(pixel.x);
 }
 
+// ParticleScreen's offset per pixel along y over that along x, the same for every particle: the
+// viewport's aspect over the projection's, negative since Vulkan's y points down.
+float particleAxisRatio() {
+  return frame.viewport.w / frame.viewport.z * (frame.proj[0][0] / frame.proj[1][1]);
+}
+
+// The offset on particle `s`'s quad per pixel along x and y.
+vec2 particleAxes(ParticleScreen s) {
+  return vec2(1.0, particleAxisRatio()) * s.disc.w;
+}
+
 // The tiles (first xy, last zw, inclusive) whose pixels' centres may fall inside the particle's
 // disc; false when none does, or when its quad lies outside the depth range (the rasterizer clips
 // the whole quad there: it is parallel to the image plane).
 bool particleTiles(ParticleScreen s, out uvec4 tiles) {
   tiles = uvec4(0u);
-  if (s.centre.z < frame.depthParams.x || s.centre.z > frame.depthParams.y) return false;
-  vec2 extent = 1.0 / abs(s.axes.xy);
-  vec2 first = floor((s.centre.xy - extent) / float(kParticleTileSize));
-  vec2 last = floor((s.centre.xy + extent) / float(kParticleTileSize));
+  if (s.disc.z < frame.depthParams.x || s.disc.z > frame.depthParams.y) return false;
+  vec2 extent = 1.0 / abs(particleAxes(s));
+  vec2 first = floor((s.disc.xy - extent) / float(kParticleTileSize));
+  vec2 last = floor((s.disc.xy + extent) / float(kParticleTileSize));
   vec2 lastTile = vec2(tileHeader.tilesX, tileHeader.tilesY) - 1.0;
   if (any(greaterThan(first, lastTile)) || any(lessThan(last, vec2(0.0)))) return false;
   tiles = uvec4(clamp(first, vec2(0.0), lastTile), clamp(last, vec2(0.0), lastTile));
@@ -70,18 +81,18 @@ bool particleTiles(ParticleScreen s, out uvec4 tiles) {
 
 // The tiles of row `y` (first x, last x) that the disc of particle `s` reaches, within `tiles` (from
 // particleTiles), or an empty span (x > y). Tile (x, y) spans [x, x + 1) x [y, y + 1) times
-// kParticleTileSize particle pixels; the disc is |(p - centre) * axes.xy| < 1. Its chord across the
+// kParticleTileSize particle pixels; the disc is |(p - disc.xy) * particleAxes| < 1. Its chord across the
 // row is widest where the row comes nearest the centre; widened by a thousandth and a hundredth of a
 // pixel so rounding never leaves out a tile the composite's r2 < 1 finds a pixel in.
 uvec2 particleRowTiles(ParticleScreen s, uint y, uvec4 tiles) {
   const float size = float(kParticleTileSize);
-  vec2 scale = abs(s.axes.xy);
+  vec2 scale = abs(particleAxes(s));
   float top = float(y) * size, bottom = top + size;
-  float dy = max(0.0, max(top - s.centre.y, s.centre.y - bottom)) * scale.y;
+  float dy = max(0.0, max(top - s.disc.y, s.disc.y - bottom)) * scale.y;
   if (dy >= 1.0) return uvec2(1u, 0u);
   float chord = sqrt(1.0 - dy * dy) / scale.x * 1.001 + 0.01;
-  float first = max(floor((s.centre.x - chord) / size), float(tiles.x));
-  float last = min(floor((s.centre.x + chord) / size), float(tiles.z));
+  float first = max(floor((s.disc.x - chord) / size), float(tiles.x));
+  float last = min(floor((s.disc.x + chord) / size), float(tiles.z));
   return first > last ? uvec2(1u, 0u) : uvec2(first, last);
 }
 

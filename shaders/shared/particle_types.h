@@ -140,15 +140,18 @@ LLL_CHECK_SIZE(ParticleTileHeader, 48);
 // What the tiled renderer needs of one visible particle, by position in the draw order: written
 // once per frame (particles-bin), read by every pixel of every tile it covers. The quad is a disc
 // of radius 1 in "offset" space, parallel to the image plane: a pixel centre p (in pixels) is at
-// offset (p - centre.xy) * axes.xy, then turned by -rotation for the puff's pattern.
+// offset (p - disc.xy) * axes (particleAxes in particles/tiles.glsl: disc.w along x, times the
+// frame's axis ratio along y), then turned by -rotation for the puff's pattern. The first 32 bytes
+// are all that the composite reads of a particle lit at its centre, which it stages for every
+// pixel of a tile to read (a pixel's reads of shared memory are the pass's limit).
 struct ParticleScreen {
-  vec4 centre;         // xy projected centre (pixels), z view depth (m), w pattern seed x
-  vec4 axes;           // xy offset per pixel along x and y, z cos(rotation), w sin(rotation)
-  vec4 albedoOpacity;  // rgb albedo, a opacity
-  vec4 baseRadiance;   // rgb radiance not from the lights walked per pixel, w pattern seed y
-  vec4 worldRadius;    // xyz world centre, w radius (m)
+  vec4 disc;         // xy projected centre (particle pixels), z view depth (m), w offset per pixel along x
+  uvec4 look;        // half floats: x rotation (cos, sin), y pattern seed (exact: particles/puff.glsl),
+                     // z base radiance (r, g), w (b, opacity); base: not from the lights walked per pixel
+  vec4 albedo;       // rgb albedo (per-pixel and atlas lighting), w unused
+  vec4 worldRadius;  // xyz world centre, w radius (m)
 };
-LLL_CHECK_SIZE(ParticleScreen, 80);
+LLL_CHECK_SIZE(ParticleScreen, 64);
 
 // One compare-exchange step of the bitonic sort (src/particles/bitonic_sort.h).
 struct SortPush {
