@@ -123,22 +123,6 @@ void markKeys(uint first, uint count, uint base, uint words) {
   barrier();
 }
 
-// The position of set bit `rank` (0: the lowest) of `word`, which has more set bits than that: halves
-// of the word in turn, five steps whatever the rank (dropping the lowest bits one at a time took up
-// to 31, and a warp waits for its slowest lane).
-uint setBitOfRank(uint word, uint rank) {
-  uint position = 0u;
-  for (uint width = 16u; width > 0u; width >>= 1u) {
-    uint low = uint(bitCount(word & ((1u << width) - 1u)));
-    if (rank >= low) {
-      rank -= low;
-      word >>= width;
-      position += width;
-    }
-  }
-  return position;
-}
-
 // The key of rank `rank` (0: the nearest) in the bitmap markKeys made.
 uint keyOfRank(uint rank, uint base, uint words) {
   // The last run with fewer set bits before it than `rank` + 1 holds it.
@@ -155,7 +139,10 @@ uint keyOfRank(uint rank, uint base, uint words) {
   for (uint w = low * run; w < min(low * run + run, words); ++w) {
     uint word = sortedKeys[w];
     uint bits = uint(bitCount(word));
-    if (left < bits) return base + w * 32u + setBitOfRank(word, left);
+    if (left < bits) {
+      for (uint i = 0u; i < left; ++i) word &= word - 1u;  // drop the lowest set bits
+      return base + w * 32u + uint(findLSB(word));
+    }
     left -= bits;
   }
   return base;  // not reached: the ranks count the bits
