@@ -59,40 +59,40 @@ float particleAxisRatio() {
   return frame.viewport.w / frame.viewport.z * (frame.proj[0][0] / frame.proj[1][1]);
 }
 
-// The offset on particle `s`'s quad per pixel along x and y.
-vec2 particleAxes(ParticleScreen s) {
-  return vec2(1.0, particleAxisRatio()) * s.disc.w;
+// The offset on the quad per pixel along x and y of the particle whose ParticleScreen disc is `disc`.
+vec2 particleAxes(vec4 disc) {
+  return vec2(1.0, particleAxisRatio()) * disc.w;
 }
 
-// The tiles (first xy, last zw, inclusive) whose pixels' centres may fall inside the particle's
-// disc; false when none does, or when its quad lies outside the depth range (the rasterizer clips
-// the whole quad there: it is parallel to the image plane).
-bool particleTiles(ParticleScreen s, out uvec4 tiles) {
+// The tiles (first xy, last zw, inclusive) whose pixels' centres may fall inside a particle's
+// disc (ParticleScreen's); false when none does, or when its quad lies outside the depth range (the
+// rasterizer clips the whole quad there: it is parallel to the image plane).
+bool particleTiles(vec4 disc, out uvec4 tiles) {
   tiles = uvec4(0u);
-  if (s.disc.z < frame.depthParams.x || s.disc.z > frame.depthParams.y) return false;
-  vec2 extent = 1.0 / abs(particleAxes(s));
-  vec2 first = floor((s.disc.xy - extent) / float(kParticleTileSize));
-  vec2 last = floor((s.disc.xy + extent) / float(kParticleTileSize));
+  if (disc.z < frame.depthParams.x || disc.z > frame.depthParams.y) return false;
+  vec2 extent = 1.0 / abs(particleAxes(disc));
+  vec2 first = floor((disc.xy - extent) / float(kParticleTileSize));
+  vec2 last = floor((disc.xy + extent) / float(kParticleTileSize));
   vec2 lastTile = vec2(tileHeader.tilesX, tileHeader.tilesY) - 1.0;
   if (any(greaterThan(first, lastTile)) || any(lessThan(last, vec2(0.0)))) return false;
   tiles = uvec4(clamp(first, vec2(0.0), lastTile), clamp(last, vec2(0.0), lastTile));
   return true;
 }
 
-// The tiles of row `y` (first x, last x) that the disc of particle `s` reaches, within `tiles` (from
+// The tiles of row `y` (first x, last x) that a particle's disc reaches, within `tiles` (from
 // particleTiles), or an empty span (x > y). Tile (x, y) spans [x, x + 1) x [y, y + 1) times
 // kParticleTileSize particle pixels; the disc is |(p - disc.xy) * particleAxes| < 1. Its chord across the
 // row is widest where the row comes nearest the centre; widened by a thousandth and a hundredth of a
 // pixel so rounding never leaves out a tile the composite's r2 < 1 finds a pixel in.
-uvec2 particleRowTiles(ParticleScreen s, uint y, uvec4 tiles) {
+uvec2 particleRowTiles(vec4 disc, uint y, uvec4 tiles) {
   const float size = float(kParticleTileSize);
-  vec2 scale = abs(particleAxes(s));
+  vec2 scale = abs(particleAxes(disc));
   float top = float(y) * size, bottom = top + size;
-  float dy = max(0.0, max(top - s.disc.y, s.disc.y - bottom)) * scale.y;
+  float dy = max(0.0, max(top - disc.y, disc.y - bottom)) * scale.y;
   if (dy >= 1.0) return uvec2(1u, 0u);
   float chord = sqrt(1.0 - dy * dy) / scale.x * 1.001 + 0.01;
-  float first = max(floor((s.disc.x - chord) / size), float(tiles.x));
-  float last = min(floor((s.disc.x + chord) / size), float(tiles.z));
+  float first = max(floor((disc.x - chord) / size), float(tiles.x));
+  float last = min(floor((disc.x + chord) / size), float(tiles.z));
   return first > last ? uvec2(1u, 0u) : uvec2(first, last);
 }
 

@@ -129,10 +129,14 @@ void ParticleSystem::prepareTiles(const FrameContext& frame) {
     t.binLayout = PipelineLayout(context_, {"particles/bin.comp"});
     const uint32_t centreLit = lighting_ == ParticleLighting::Vertex ? 1 : 0;
     const SpecializationConstants constants = lightTypeConstants(frame.scene);
+    // Invocations a particle (particles/bin.comp): 8 at full resolution, one below it.
+    const uint32_t lanes = resolutionScale_ == 1 ? 8 : 1;
     auto bin = [&](uint32_t scatter) {
       SpecializationConstants c = constants;
       c[0] = scatter;
       c[1] = centreLit;
+      c[2] = lanes;
+      c[3] = gpu::kParticleGroupSize * lanes;
       return Pipeline(context_, t.binLayout, "particles/bin.comp", c);
     };
     t.count = bin(0);
