@@ -169,6 +169,7 @@ void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, f
     markKeys(range.x, count, base, words);
   }
   vec2 pixelCentre = vec2(pixel) + 0.5;
+  // particleAxes(disc) is axes * disc.w: its ratio computed once, outside the loop.
   vec2 axes = vec2(1.0, particleAxisRatio());
   for (uint start = 0u; start < count; start += kThreads) {
     uint index = start + gl_LocalInvocationIndex;
