@@ -1,9 +1,10 @@
 // particles-composite (--particle-render compute): one workgroup per tile of the particles' tile
-// grid, one invocation per pixel. The tile's particles come in slabs of the draw order, nearest
-// first (ParticleTileHeader); each slab's are put in order nearest first (sorted in shared memory,
-// or, when there are more than kParticleTileSharedSort, marked in a bitmap of the slab's keys that
-// is read in order), staged kParticleTileSize^2 at a time in shared memory, and blended front to
-// back:
+// grid, one invocation per pixel. The tile's particles come in cells, one per slab of the draw
+// order, nearest first (ParticleTileHeader); consecutive cells of at most kParticleTileSharedSort
+// particles together are sorted in shared memory as one run (the slabs' keys do not overlap, so
+// one sort orders them all: three barriers for a run, where the edges of a plume hold many small
+// cells), a longer cell's keys are marked in a bitmap of the slab's keys that is read in order;
+// staged kParticleTileSize^2 at a time in shared memory and blended front to back:
 //   colour += transmittance * radiance * alpha;  transmittance *= 1 - alpha * (1 - additive)
 // which is the raster path's premultiplied back-to-front blend reordered, so both make the same
 // image. The tile's slabs are shared out to tileHeader.groups workgroups (the z of the dispatch),
@@ -47,7 +48,7 @@ layout(std430, set = 0, binding = 47) coherent buffer ParticleTileOpaqueBlock {
 
 const uint kThreads = kParticleTileSize * kParticleTileSize;
 
-// A slab's keys in order: sorted (at most kParticleTileSharedSort of them), or as a bitmap of the
+// A run's keys as read (at most kParticleTileSharedSort of them), or a long cell's as a bitmap of the
 // slab's range of keys (bit k of word w: key base + 32 w + k), which holds every slab's range:
 // a slab spans at most ceil(kMaxParticles / kParticleMaxSlabs) keys (checked in particle_tiles.cpp).
 shared uint sortedKeys[kParticleTileBitmapWords];
@@ -64,25 +65,12 @@ struct ParticleLit {
   vec4 worldRadius;
 };
 shared ParticleLit stagedLit[kLightSource == 0u ? 1u : kThreads];
+// This group's cells (its tile's slabs firstSlab.. on, as `local` = slab - firstSlab): each one's
+// first entry and count, read once.
+shared uint cellFirst[kParticleMaxSlabs];
+shared uint cellCount[kParticleMaxSlabs];
 shared uint finishedPixels;
 shared bool opaqueInFront;  // a group in front of this one made the whole tile opaque
-
-// Puts the cell's `count` keys from entry `first` (at most kThreads) in sortedKeys ascending, by
-// rank: each invocation counts the keys below its own (a cell holds a particle once, so the keys
-// differ) and stores its key there. Three barriers, where a bitonic sort of 64 keys took 21 (the
-// same order). Call it uniformly.
-void sortKeys(uint first, uint count) {
-  uint i = gl_LocalInvocationIndex;
-  uint key = i < count ? tileEntries[first + i] : 0u;
-  if (i < count) sortedKeys[i] = key;
-  barrier();
-  uint rank = 0u;
-  if (i < count)
-    for (uint j = 0u; j < count; ++j) rank += sortedKeys[j] < key ? 1u : 0u;
-  barrier();
-  if (i < count) sortedKeys[rank] = key;
-  barrier();
-}
 
 // The first key of slab `slab` (keys k with k * slabs / visible == slab).
 uint slabFirstKey(uint slab, uint slabs, uint visible) {
@@ -148,83 +136,114 @@ uint keyOfRank(uint rank, uint base, uint words) {
   return base;  // not reached: the ranks count the bits
 }
 
-// Blends cell `cell`'s particles into the pixel, nearest first (barriers: call it uniformly): into
-// `front` (colour, transmittance), or with glass into `behind` those behind glassViewDepth.
-// `pixel` is in particle pixels, `framePixel` the frame pixel at its centre (for the lights).
-void blendCell(uint cell, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, float glassViewDepth,
-               uint visible, uint slab, inout vec4 front, inout vec4 behind, inout bool finished) {
-  uvec2 range = particleTileRange(cell);
-  uint count = range.y;
-  if (count == 0u) return;
-  // The longest cell, for the stats: an atomic only where the value read (perhaps stale, never
-  // above the true one) does not already hold it; one address that every cell's atomic went to.
-  if (gl_LocalInvocationIndex == 0u && count > tileHeader.longest) atomicMax(tileHeader.longest, count);
-  bool sortedHere = count <= kParticleTileSharedSort;
-  uint slabs = tileHeader.cellsX;
-  uint base = slabFirstKey(slab, slabs, visible);
-  uint words = (slabFirstKey(slab + 1u, slabs, visible) - base + 31u) / 32u;
-  if (sortedHere) {
-    sortKeys(range.x, count);
-  } else {
-    markKeys(range.x, count, base, words);
-  }
+// Blends the `n` particles staged in shared memory into the pixel, nearest first: into `front`
+// (colour, transmittance), or with glass into `behind` those behind glassViewDepth. `pixel` is in
+// particle pixels, `framePixel` the frame pixel at its centre (for the lights).
+void blendStaged(uint n, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, float glassViewDepth,
+                 inout vec4 front, inout vec4 behind, inout bool finished) {
   vec2 pixelCentre = vec2(pixel) + 0.5;
   // particleAxes(disc) is axes * disc.w: its ratio computed once, outside the loop.
   vec2 axes = vec2(1.0, particleAxisRatio());
+  for (uint j = 0u; j < n && !finished; ++j) {
+    // The disc first: most of a tile's particles miss most of its pixels.
+    vec4 disc = stagedDisc[j];
+    if (disc.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
+    bool isBehind = kBehindGlass && disc.z >= glassViewDepth;
+    float fadeDepth = isBehind || !kBehindGlass ? sceneViewDepth : glassViewDepth;
+    vec2 offset = (pixelCentre - disc.xy) * (axes * disc.w);
+    float r2 = dot(offset, offset);
+    if (r2 >= 1.0) continue;
+    uvec4 look = stagedLook[j];
+    vec2 rotation = unpackHalf2x16(look.x), radianceRg = unpackHalf2x16(look.z);
+    vec2 radianceBOpacity = unpackHalf2x16(look.w);
+    // The offset turned back by the particle's rotation: where the puff's pattern is read.
+    vec2 corner =
+        vec2(rotation.x * offset.x + rotation.y * offset.y, rotation.x * offset.y - rotation.y * offset.x);
+    float alpha = radianceBOpacity.y * puffDensity(r2, corner * 1.5 + unpackHalf2x16(look.y)) *
+                  softFade(fadeDepth, disc.z);
+    vec3 radiance = vec3(radianceRg, radianceBOpacity.x);
+    if (kLightSource == 1u) {
+      ParticleLit lit = stagedLit[j];
+      vec3 world =
+          lit.worldRadius.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * lit.worldRadius.w;
+      radiance += lit.albedoOrder.rgb * puffLight(world, offset, r2, framePixel, disc.z);
+    } else if (kLightSource == 2u) {
+      ParticleLit lit = stagedLit[j];
+      radiance += lit.albedoOrder.rgb * atlasLight(floatBitsToUint(lit.albedoOrder.w), offset);
+    }
+    vec4 layer = isBehind ? behind : front;
+    layer.rgb += layer.a * radiance * alpha;
+    layer.a *= 1.0 - alpha * (1.0 - system.blend.x);
+    if (isBehind)
+      behind = layer;
+    else
+      front = layer;
+    // Opaque in front: nothing behind shows; opaque behind: the front particles all came before.
+    if (layer.a < kParticleOpaqueTransmittance) {
+      finished = true;
+      atomicAdd(finishedPixels, 1u);
+    }
+  }
+}
+
+// Stages the particle of draw order `order` at `slot`.
+void stageParticle(uint slot, uint order) {
+  ParticleScreen s = particleScreen[order];
+  stagedDisc[slot] = s.disc;
+  stagedLook[slot] = s.look;
+  if (kLightSource != 0u)
+    stagedLit[slot] = ParticleLit(vec4(s.albedo.rgb, uintBitsToFloat(order)), s.worldRadius);
+}
+
+// Blends a run of cells (this group's cells from `first` on, `total` particles together, at most
+// kParticleTileSharedSort) in one staging: each invocation reads one key and its particle, counts
+// the run's keys below its own (a cell holds a particle once, and the slabs' keys do not overlap, so
+// they differ) and stages the particle at that rank. Three barriers for the run, however many cells
+// it joins. Call it uniformly.
+void blendSortedRun(uint first, uint total, ivec2 pixel, uvec2 framePixel, float sceneViewDepth,
+                    float glassViewDepth, uint visible, inout vec4 front, inout vec4 behind,
+                    inout bool finished) {
+  uint i = gl_LocalInvocationIndex;
+  uint key = 0u;
+  ParticleScreen s;
+  if (i < total) {
+    uint cell = first, offset = i;
+    while (offset >= cellCount[cell]) offset -= cellCount[cell++];
+    key = tileEntries[cellFirst[cell] + offset];
+    sortedKeys[i] = key;
+    s = particleScreen[visible - 1u - key];
+  }
+  barrier();
+  if (i < total) {
+    uint rank = 0u;
+    for (uint j = 0u; j < total; ++j) rank += sortedKeys[j] < key ? 1u : 0u;
+    stagedDisc[rank] = s.disc;
+    stagedLook[rank] = s.look;
+    if (kLightSource != 0u)
+      stagedLit[rank] = ParticleLit(vec4(s.albedo.rgb, uintBitsToFloat(visible - 1u - key)), s.worldRadius);
+  }
+  barrier();
+  blendStaged(total, pixel, framePixel, sceneViewDepth, glassViewDepth, front, behind, finished);
+  barrier();
+}
+
+// Blends one cell of more than kParticleTileSharedSort particles (slab `slab`, this group's cell
+// `local`) through the bitmap of its slab's keys, kThreads at a time, stopping once every pixel is
+// opaque (barriers: call it uniformly).
+void blendMarkedCell(uint local, uint slab, ivec2 pixel, uvec2 framePixel, float sceneViewDepth,
+                     float glassViewDepth, uint visible, inout vec4 front, inout vec4 behind,
+                     inout bool finished) {
+  uint count = cellCount[local];
+  uint slabs = tileHeader.cellsX;
+  uint base = slabFirstKey(slab, slabs, visible);
+  uint words = (slabFirstKey(slab + 1u, slabs, visible) - base + 31u) / 32u;
+  markKeys(cellFirst[local], count, base, words);
   for (uint start = 0u; start < count; start += kThreads) {
     uint index = start + gl_LocalInvocationIndex;
-    if (index < count) {
-      uint key = sortedHere ? sortedKeys[index] : keyOfRank(index, base, words);
-      uint order = visible - 1u - key;
-      stagedDisc[gl_LocalInvocationIndex] = particleScreen[order].disc;
-      stagedLook[gl_LocalInvocationIndex] = particleScreen[order].look;
-      if (kLightSource != 0u)
-        stagedLit[gl_LocalInvocationIndex] =
-            ParticleLit(vec4(particleScreen[order].albedo.rgb, uintBitsToFloat(order)),
-                        particleScreen[order].worldRadius);
-    }
+    if (index < count) stageParticle(gl_LocalInvocationIndex, visible - 1u - keyOfRank(index, base, words));
     barrier();
-    uint n = min(kThreads, count - start);
-    for (uint j = 0u; j < n && !finished; ++j) {
-      // The disc first: most of a tile's particles miss most of its pixels.
-      vec4 disc = stagedDisc[j];
-      if (disc.z >= sceneViewDepth) continue;  // behind the scene: faded out entirely
-      bool isBehind = kBehindGlass && disc.z >= glassViewDepth;
-      float fadeDepth = isBehind || !kBehindGlass ? sceneViewDepth : glassViewDepth;
-      vec2 offset = (pixelCentre - disc.xy) * (axes * disc.w);
-      float r2 = dot(offset, offset);
-      if (r2 >= 1.0) continue;
-      uvec4 look = stagedLook[j];
-      vec2 rotation = unpackHalf2x16(look.x), radianceRg = unpackHalf2x16(look.z);
-      vec2 radianceBOpacity = unpackHalf2x16(look.w);
-      // The offset turned back by the particle's rotation: where the puff's pattern is read.
-      vec2 corner =
-          vec2(rotation.x * offset.x + rotation.y * offset.y, rotation.x * offset.y - rotation.y * offset.x);
-      float alpha = radianceBOpacity.y * puffDensity(r2, corner * 1.5 + unpackHalf2x16(look.y)) *
-                    softFade(fadeDepth, disc.z);
-      vec3 radiance = vec3(radianceRg, radianceBOpacity.x);
-      if (kLightSource == 1u) {
-        ParticleLit lit = stagedLit[j];
-        vec3 world =
-            lit.worldRadius.xyz + (cameraRight() * offset.x + cameraUp() * offset.y) * lit.worldRadius.w;
-        radiance += lit.albedoOrder.rgb * puffLight(world, offset, r2, framePixel, disc.z);
-      } else if (kLightSource == 2u) {
-        ParticleLit lit = stagedLit[j];
-        radiance += lit.albedoOrder.rgb * atlasLight(floatBitsToUint(lit.albedoOrder.w), offset);
-      }
-      vec4 layer = isBehind ? behind : front;
-      layer.rgb += layer.a * radiance * alpha;
-      layer.a *= 1.0 - alpha * (1.0 - system.blend.x);
-      if (isBehind)
-        behind = layer;
-      else
-        front = layer;
-      // Opaque in front: nothing behind shows; opaque behind: the front particles all came before.
-      if (layer.a < kParticleOpaqueTransmittance) {
-        finished = true;
-        atomicAdd(finishedPixels, 1u);
-      }
-    }
+    blendStaged(min(kThreads, count - start), pixel, framePixel, sceneViewDepth, glassViewDepth, front,
+                behind, finished);
     barrier();
     if (finishedPixels == kThreads) return;  // read between two barriers: the same in every invocation
   }
@@ -267,7 +286,18 @@ void main() {
   uint slabs = tileHeader.cellsX;
   uint group = gl_WorkGroupID.z;
   uint firstSlab = group * slabs / tileHeader.groups, endSlab = (group + 1u) * slabs / tileHeader.groups;
-  for (uint slab = firstSlab; slab < endSlab && finishedPixels < kThreads; ++slab) {
+  uint cells = endSlab - firstSlab;  // at most kParticleMaxSlabs <= kThreads
+  if (gl_LocalInvocationIndex < cells) {
+    uvec2 range = particleTileRange(tile * slabs + firstSlab + gl_LocalInvocationIndex);
+    cellFirst[gl_LocalInvocationIndex] = range.x;
+    cellCount[gl_LocalInvocationIndex] = range.y;
+    // The longest cell, for the stats: an atomic only where the value read (perhaps stale, never
+    // above the true one) does not already hold it.
+    if (range.y > tileHeader.longest) atomicMax(tileHeader.longest, range.y);
+  }
+  barrier();
+  uint local = 0u;
+  while (local < cells && finishedPixels < kThreads) {
     if (group > 0u) {
       if (gl_LocalInvocationIndex == 0u) {
         bool seen = false;
@@ -278,8 +308,19 @@ void main() {
       barrier();
       if (opaqueInFront) break;  // the same in every invocation
     }
-    blendCell(tile * slabs + slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, slab, front,
-              behind, finished);
+    // The cells from `local` on that together hold at most kThreads particles are sorted and
+    // blended as one; a longer cell goes through the bitmap. The same in every invocation.
+    uint total = cellCount[local], last = local + 1u;
+    if (total > kParticleTileSharedSort) {
+      blendMarkedCell(local, firstSlab + local, pixel, framePixel, sceneViewDepth, glassViewDepth, visible,
+                      front, behind, finished);
+    } else {
+      while (last < cells && total + cellCount[last] <= kParticleTileSharedSort) total += cellCount[last++];
+      if (total > 0u)
+        blendSortedRun(local, total, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, front,
+                       behind, finished);
+    }
+    local = last;
     barrier();
   }
   if (gl_LocalInvocationIndex == 0u && finishedPixels == kThreads)

@@ -77,14 +77,16 @@ LLL_CHECK_SIZE(ParticleCounters, 64);
 
 // The tiled compute renderer (--particle-render compute, src/particles/particle_tiles.cpp): the
 // screen in square tiles of kParticleTileSize pixels, one workgroup each; a tile's particles are
-// put in order front to back in shared memory (sorted when at most kParticleTileSharedSort, else
-// marked in a bitmap of 32 x kParticleTileBitmapWords keys), and blended kParticleTileSize^2 at a
-// time. On the H200 the bitmap beat the sort from 65 keys on (settled smoke at 1080p, every particle
-// pass: 65,536 at full resolution 3.93 -> 3.70 ms against sorting up to 1,024, at quarter 1.47 ->
-// 1.44, a million at quarter 8.78 -> 8.70). Sorted by rank since (three barriers), up to 64 or 256
-// keys made no difference (composite 2.49 / 2.50 ms, bench/README.md 2026-12-03 seventh).
+// put in order front to back in shared memory (consecutive cells holding at most
+// kParticleTileSharedSort together are sorted as one run; a longer cell is marked in a bitmap of
+// 32 x kParticleTileBitmapWords keys), and blended kParticleTileSize^2 at a time. On the H200 the
+// bitmap beat a bitonic sort from 65 keys on (settled smoke at 1080p, every particle pass: 65,536 at
+// full resolution 3.93 -> 3.70 ms against sorting up to 1,024); sorted by rank since (three barriers),
+// up to 64 or 256 keys a cell made no difference (composite 2.49 / 2.50 ms, bench/README.md
+// 2026-12-03 seventh), and joining a tile's small cells into runs of up to 256 took a million's
+// composite from 7.82 to 7.68 ms (2026-12-04 fourth).
 LLL_CONST(uint, kParticleTileSize, 16u);
-LLL_CONST(uint, kParticleTileSharedSort, 64u);
+LLL_CONST(uint, kParticleTileSharedSort, 256u);
 LLL_CONST(uint, kParticleTileBitmapWords, 1024u);
 // Slabs a tile's list is cut into: one per kParticlesPerSlab particle slots, a power of two, at
 // most kParticleMaxSlabs (ParticleTileHeader).
