@@ -1,11 +1,12 @@
 // The tiled compute particle renderer (--particle-render compute), after AMD's GPUParticles11 and
 // MiniEngine's ParticleTileRender: no quad reaches the rasterizer.
-//   particles-bin        count: each visible particle (draw order) writes what the tiles need of
-//                        it and counts itself in the tiles its disc may cover; scan: a prefix sum
-//                        of the counts in blocks (particles/tile_scan.comp); scatter: each
-//                        particle appends its key to those tiles.
-//   particles-composite  workgroups per tile (groups) each sort their run of the tile's slabs
-//                        nearest first and blend every pixel front to back into (colour,
+//   particles-bin        each visible particle (draw order) writes what the tiles need of it and
+//                        counts itself in the tiles its disc may cover;
+//   particles-bin-scan   a prefix sum of the counts in blocks (particles/tile_scan.comp);
+//   particles-bin-scatter  each particle appends its key to those tiles.
+//   particles-composite  workgroups per tile (groups) each put their run of the tile's slabs in
+//                        order nearest first (consecutive cells of at most 256 particles together
+//                        sorted as one) and blend every pixel front to back into (colour,
 //                        transmittance), stopping where it is opaque (lit/particles_tiles.comp);
 //                        with glass in the scene, two layers at once: the particles in front of
 //                        the nearest glass and those behind it;
@@ -172,12 +173,9 @@ void ParticleSystem::binTiles(FrameContext& frame) {
   std::vector<ResourceUse> clears{uses(t.headerBuffer, Use::TransferWrite), uses(t.cells, Use::TransferWrite),
                                   uses(t.opaque, Use::TransferWrite)};
   if (radiance_) clears.push_back(uses(radiance_, Use::StorageRead, kCompute));
-  frame.graph.pass("particles-bin", clears + particleReads, [&](VkCommandBuffer cmd) {
-    gpu::ParticleTileHeader header = t.header;
-    header.requested = 0;
-    vkCmdUpdateBuffer(cmd, t.headerBuffer.handle(), 0, sizeof(header), &header);
-    vkCmdFillBuffer(cmd, t.cells.handle(), 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cmd, t.opaque.handle(), 0, VK_WHOLE_SIZE, 0);
+  // The descriptors every step pushes (the count and scatter passes share a layout; the scan's
+  // three steps another).
+  auto binDescriptors = [&](VkCommandBuffer cmd) {
     DescriptorWriter writer = systemDescriptors(frame);
     // Read only with vertex lighting (specialization constant 1); a stand-in otherwise.
     if (!radiance_) writer.storage(15, t.screen.handle());
@@ -185,38 +183,55 @@ void ParticleSystem::binTiles(FrameContext& frame) {
         .storage(18, t.cells.handle())
         .storage(19, t.entries.handle())
         .storage(20, t.screen.handle());
-    auto dispatch = [&](const Pipeline& pipeline) {
-      pipeline.bind(cmd);
-      writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.binLayout);
-      vkCmdDispatchIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, dispatch));
-    };
+    writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.binLayout);
+  };
+  auto dispatch = [&](VkCommandBuffer cmd, const Pipeline& pipeline) {
+    pipeline.bind(cmd);
+    binDescriptors(cmd);
+    vkCmdDispatchIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, dispatch));
+  };
+  // Three timed passes: the count (with the clears), the prefix sum, the scatter.
+  frame.graph.pass("particles-bin", clears + particleReads, [&](VkCommandBuffer cmd) {
+    gpu::ParticleTileHeader header = t.header;
+    header.requested = 0;
+    vkCmdUpdateBuffer(cmd, t.headerBuffer.handle(), 0, sizeof(header), &header);
+    vkCmdFillBuffer(cmd, t.cells.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, t.opaque.handle(), 0, VK_WHOLE_SIZE, 0);
     frame.graph.barriers({uses(t.headerBuffer, Use::StorageRead, kCompute),
                           uses(t.cells, Use::StorageReadWrite, kCompute),
                           uses(t.screen, Use::StorageWrite, kCompute)});
-    dispatch(t.count);
-    frame.graph.barriers({uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
-                          uses(t.cells, Use::StorageReadWrite, kCompute)});
-    // The three steps share one layout: the descriptors pushed once stay bound across them.
-    for (uint32_t step = 0; step < 3; ++step) {
-      if (step > 0)
-        frame.graph.barriers({uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
-                              uses(t.cells, Use::StorageReadWrite, kCompute),
-                              uses(t.blockSums, Use::StorageReadWrite, kCompute)});
-      t.scan[step].bind(cmd);
-      if (step == 0)
-        DescriptorWriter()
-            .storage(17, t.headerBuffer.handle())
-            .storage(18, t.cells.handle())
-            .storage(49, t.blockSums.handle())
-            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.scanLayout);
-      vkCmdDispatch(cmd, step == 1 ? 1 : t.scanBlocks, 1, 1);
-    }
-    frame.graph.barriers(
-        {uses(t.headerBuffer, Use::StorageRead, kCompute), uses(t.cells, Use::StorageReadWrite, kCompute),
-         // Only read, but one shader with the count pass, which writes it.
-         uses(t.screen, Use::StorageReadWrite, kCompute), uses(t.entries, Use::StorageWrite, kCompute)});
-    dispatch(t.scatter);
+    dispatch(cmd, t.count);
   });
+  frame.graph.pass(
+      "particles-bin-scan",
+      {uses(t.headerBuffer, Use::StorageReadWrite, kCompute), uses(t.cells, Use::StorageReadWrite, kCompute),
+       uses(t.blockSums, Use::StorageReadWrite, kCompute)},
+      [&](VkCommandBuffer cmd) {
+        // The three steps share one layout: the descriptors pushed once stay bound.
+        for (uint32_t step = 0; step < 3; ++step) {
+          if (step > 0)
+            frame.graph.barriers({uses(t.headerBuffer, Use::StorageReadWrite, kCompute),
+                                  uses(t.cells, Use::StorageReadWrite, kCompute),
+                                  uses(t.blockSums, Use::StorageReadWrite, kCompute)});
+          t.scan[step].bind(cmd);
+          if (step == 0)
+            DescriptorWriter()
+                .storage(17, t.headerBuffer.handle())
+                .storage(18, t.cells.handle())
+                .storage(49, t.blockSums.handle())
+                .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.scanLayout);
+          vkCmdDispatch(cmd, step == 1 ? 1 : t.scanBlocks, 1, 1);
+        }
+      });
+  frame.graph.pass(
+      "particles-bin-scatter",
+      particleReads +
+          std::vector<ResourceUse>{uses(t.headerBuffer, Use::StorageRead, kCompute),
+                                   uses(t.cells, Use::StorageReadWrite, kCompute),
+                                   // Only read, but one shader with the count pass, which writes it.
+                                   uses(t.screen, Use::StorageReadWrite, kCompute),
+                                   uses(t.entries, Use::StorageWrite, kCompute)},
+      [&](VkCommandBuffer cmd) { dispatch(cmd, t.scatter); });
 }
 
 void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelines,
