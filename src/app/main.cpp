@@ -209,9 +209,9 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(CLI::IsMember({"full", "half", "quarter"}))
       ->needs(particles);
   cmd.add_option("--particle-tile-groups", s.particleTileGroups,
-                 "compute renderer: workgroups each particle tile's slabs are shared out to (default: 1 "
-                 "at full resolution; below it slabs x scale / 8, a slab per 4,096 particle slots up to "
-                 "64, scale 2 at half and 4 at quarter)")
+                 "compute renderer: workgroups each particle tile's slabs are shared out to (default: "
+                 "slabs x scale / 8, at least 4 or the slabs, at most 32; a slab per 4,096 particle slots "
+                 "up to 64, scale 1 at full resolution, 2 at half, 4 at quarter)")
       ->check(CLI::Range(1u, lll::gpu::kParticleMaxGroups))
       ->needs(particles);
   cmd.add_option("--particle-count", s.particleCount, "particle slots, overriding the preset's count")

@@ -77,8 +77,8 @@ ParticleRender parseParticleRender(const std::string& name);
 // (quarter). Throws InputError for any other name.
 uint32_t parseParticleResolution(const std::string& name);
 
-// The compute renderer's workgroups a tile when --particle-tile-groups does not say: one at full
-// resolution, below it slabs x scale / 8 (1 to kParticleMaxGroups), fitted on the H200
+// The compute renderer's workgroups a tile when --particle-tile-groups does not say: slabs x scale
+// / 8, at least 4 (or one a slab) and at most kParticleMaxGroups, fitted on the H200
 // (particle_tiles.cpp, bench/README.md).
 uint32_t defaultParticleTileGroups(uint32_t slabs, uint32_t scale);
 

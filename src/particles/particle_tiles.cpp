@@ -50,20 +50,24 @@ static_assert(2 * gpu::kParticlesPerSlab <= 32 * gpu::kParticleTileBitmapWords);
 static_assert(gpu::kParticleTileSharedSort <= gpu::kParticleTileBitmapWords);
 static_assert(gpu::kParticleTileSharedSort <=
               gpu::kParticleTileSize * gpu::kParticleTileSize);  // one key an invocation
+static_assert(gpu::kParticleMaxSlabs <=
+              gpu::kParticleTileSize * gpu::kParticleTileSize);  // one cell an invocation
 // Initial entries per tile (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerTile = 64;
 }  // namespace
 
-// Groups below full resolution only, where a tile covers 4 or 16 times the frame pixels. On the H200,
-// settled smoke at 1080p (vertex-lit; every particle pass, ms, with 1 / 2 / 4 / 8 / 16 / 32 groups):
-//   65,536 (16 slabs): full 3.93 / 4.17 / 4.30 / 5.25, half - / - / 2.03 / 2.27 / 3.02,
-//                      quarter - / - / 1.59 / 1.47 / 1.86;
-//   a million (64):    half - / - / - / 11.19 / 11.16 / 13.84, quarter - / - / 14.85 / 9.84 / 8.66 / 8.75.
-// At full resolution the groups behind mostly blend what the front ones make opaque before they see
-// it; below it more particles share a tile and one group would hold up the frame.
+// Fitted on the H200, settled smoke at 1080p (vertex-lit; every particle pass, ms, with 1 / 2 / 4 / 8 /
+// 16 / 32 groups; bench/README.md 2026-12-04 (fourth) and 2026-12-03 (fifth)):
+//   full:    65,536 (16 slabs) 1.64 / 1.69 / 1.59;  131,072 (32) 2.58 / 2.62 / 2.35 / 2.51;
+//            262,144 (64) 3.94 / - / 3.75 / 3.59 / 4.45;  a million (64) 10.28 / 10.20 / 9.15 /
+//            8.58 / 8.47 / 11.23;
+//   half:    65,536 - / - / 2.03 / 2.27 / 3.02;  a million - / - / - / 11.19 / 11.16 / 13.84;
+//   quarter: 65,536 - / - / 1.59 / 1.47 / 1.86;  a million - / - / 14.85 / 9.84 / 8.66 / 8.75.
+// More groups help where a tile holds many particles, mostly the tiles at a plume's edge, which never
+// turn opaque and blend every slab; they cost where the groups behind blend what the front ones make
+// opaque before they see it, and past what the GPU runs at once.
 uint32_t defaultParticleTileGroups(uint32_t slabs, uint32_t scale) {
-  if (scale <= 1) return 1;
-  return std::clamp(slabs * scale / 8, 1u, gpu::kParticleMaxGroups);
+  return std::clamp(slabs * scale / 8, std::min(4u, slabs), gpu::kParticleMaxGroups);
 }
 
 void ParticleSystem::prepareTiles(const FrameContext& frame) {
