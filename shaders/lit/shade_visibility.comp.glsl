@@ -40,23 +40,6 @@ layout(set = 0, binding = 13, rgba16f) uniform writeonly image2D hdr;
 #define addLight(sums, index, light, s) sums += evaluateLight(light, s, terms)
 #endif
 
-#ifndef LIGHTING_EVERY_LIGHT
-// Up to kSharedLights lights (a scene with no more, LitPasses), every light record is loaded into
-// shared memory once per workgroup and the interface's walk reads records there; 1 otherwise.
-layout(constant_id = 23) const uint kSharedLights = 1u;
-shared GpuLight groupLights[kSharedLights];
-
-// Loads every light into groupLights where the scene's fit; every invocation must call it.
-bool loadGroupLights() {
-  uint count = frame.counts.x;
-  if (kSharedLights <= 1u || count > kSharedLights) return false;
-  for (uint i = gl_LocalInvocationIndex; i < count; i += kVisibilityGroupSize * kVisibilityGroupSize)
-    groupLights[i] = lights[i];
-  barrier();
-  return true;
-}
-#endif
-
 #ifdef LIGHTING_EVERY_LIGHT
 const uint kLightsPerChunk = 64u;
 shared GpuLight chunkLights[kLightsPerChunk];
@@ -96,7 +79,6 @@ void main() {
 #ifdef LIGHTING_EVERY_LIGHT
   lightFromChunks(s, covered, sums);
 #else
-  bool lightsShared = loadGroupLights();
   if (covered) {
 #ifdef LLL_INTERLEAVED_VPLS
     // Only the lights this pixel evaluates where the interface keeps the classes apart (lll's lists).
@@ -109,11 +91,7 @@ void main() {
 #endif
     BrdfTerms terms = brdfTerms(s);
     uint light;
-    if (lightsShared) {
-      while (nextLight(cursor, light)) addLight(sums, light, groupLights[light], s);
-    } else {
-      while (nextLight(cursor, light)) addLight(sums, light, lights[light], s);
-    }
+    while (nextLight(cursor, light)) addLight(sums, light, lights[light], s);
   }
 #endif
   bool replaced = false;

@@ -13,8 +13,6 @@ namespace {
 // post/display.glsl's kWritesDisplay.
 constexpr uint32_t kWritesDisplayConstant = 60;
 constexpr uint32_t kGlassLightPartsConstant = 61;  // common/glass_layers.glsl
-constexpr uint32_t kSharedLightsConstant = 23;     // lit/shade_visibility.comp.glsl
-constexpr uint32_t kSharedLights = 256;
 }  // namespace
 
 LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets& targets,
@@ -34,7 +32,6 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
     if (!visibility) throw std::logic_error("LitPasses: visibility shading without a visibility buffer");
     SpecializationConstants opaqueConstants = constants;
     opaqueConstants.merge(visibility->surfaceConstants(scene));
-    opaqueConstants[kSharedLightsConstant] = scene.lightCount() <= kSharedLights ? kSharedLights : 1u;
     std::string shader = litShader(lighting_, "shade_visibility.comp");
     if (interleave > 1) {
       interleaved_ = std::make_unique<InterleavedVpls>(context, targets, interleave, lighting_.listParts > 1);
