@@ -65,11 +65,11 @@ struct ParticleLit {
   vec4 worldRadius;
 };
 shared ParticleLit stagedLit[kLightSource == 0u ? 1u : kThreads];
-// This group's cells (its tile's slabs firstSlab.. on, as `local` = slab - firstSlab): each one's
-// first entry and count, read once.
+// The tile's cells (one per slab): each one's first entry and count, read once.
 shared uint cellFirst[kParticleMaxSlabs];
 shared uint cellCount[kParticleMaxSlabs];
 shared uint finishedPixels;
+shared uint tileParticles;  // in all the tile's cells
 shared bool opaqueInFront;  // a group in front of this one made the whole tile opaque
 
 // The first key of slab `slab` (keys k with k * slabs / visible == slab).
@@ -195,7 +195,7 @@ void stageParticle(uint slot, uint order) {
     stagedLit[slot] = ParticleLit(vec4(s.albedo.rgb, uintBitsToFloat(order)), s.worldRadius);
 }
 
-// Blends a run of cells (this group's cells from `first` on, `total` particles together, at most
+// Blends a run of cells (the tile's from slab `first` on, `total` particles together, at most
 // kParticleTileSharedSort) in one staging: each invocation reads one key and its particle, counts
 // the run's keys below its own (a cell holds a particle once, and the slabs' keys do not overlap, so
 // they differ) and stages the particle at that rank. Three barriers for the run, however many cells
@@ -227,17 +227,16 @@ void blendSortedRun(uint first, uint total, ivec2 pixel, uvec2 framePixel, float
   barrier();
 }
 
-// Blends one cell of more than kParticleTileSharedSort particles (slab `slab`, this group's cell
-// `local`) through the bitmap of its slab's keys, kThreads at a time, stopping once every pixel is
+// Blends one cell of more than kParticleTileSharedSort particles (slab `slab`'s) through the bitmap
+// of its slab's keys, kThreads at a time, stopping once every pixel is
 // opaque (barriers: call it uniformly).
-void blendMarkedCell(uint local, uint slab, ivec2 pixel, uvec2 framePixel, float sceneViewDepth,
-                     float glassViewDepth, uint visible, inout vec4 front, inout vec4 behind,
-                     inout bool finished) {
-  uint count = cellCount[local];
+void blendMarkedCell(uint slab, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, float glassViewDepth,
+                     uint visible, inout vec4 front, inout vec4 behind, inout bool finished) {
+  uint count = cellCount[slab];
   uint slabs = tileHeader.cellsX;
   uint base = slabFirstKey(slab, slabs, visible);
   uint words = (slabFirstKey(slab + 1u, slabs, visible) - base + 31u) / 32u;
-  markKeys(cellFirst[local], count, base, words);
+  markKeys(cellFirst[slab], count, base, words);
   for (uint start = 0u; start < count; start += kThreads) {
     uint index = start + gl_LocalInvocationIndex;
     if (index < count) stageParticle(gl_LocalInvocationIndex, visible - 1u - keyOfRank(index, base, words));
@@ -267,64 +266,75 @@ float particlePixelDepth(sampler2D depthImage, ivec2 pixel) {
 
 void main() {
   uint tile = gl_WorkGroupID.y * tileHeader.tilesX + gl_WorkGroupID.x;
+  uint slabs = tileHeader.cellsX;  // at most kParticleMaxSlabs <= kThreads
+  uint group = gl_WorkGroupID.z;
+  if (gl_LocalInvocationIndex == 0u) {
+    finishedPixels = 0u;
+    opaqueInFront = false;
+    tileParticles = 0u;
+  }
+  barrier();
+  // Every cell of the tile (group 0 counts the longest for the stats: an atomic only where the
+  // value read, perhaps stale, never above the true one, does not already hold it).
+  if (gl_LocalInvocationIndex < slabs) {
+    uvec2 range = particleTileRange(tile * slabs + gl_LocalInvocationIndex);
+    cellFirst[gl_LocalInvocationIndex] = range.x;
+    cellCount[gl_LocalInvocationIndex] = range.y;
+    if (range.y > 0u) atomicAdd(tileParticles, range.y);
+    if (group == 0u && range.y > tileHeader.longest) atomicMax(tileHeader.longest, range.y);
+  }
+  barrier();
+  // The tile's groups: one per kParticlesPerTileGroup of its particles, up to the dispatch's. The
+  // rest write nothing and say so (kTileGroupUnused), so particles-merge skips them.
+  uint groups = clamp((tileParticles + kParticlesPerTileGroup - 1u) / kParticlesPerTileGroup, 1u,
+                      tileHeader.groups);
+  if (group >= groups) {
+    if (gl_LocalInvocationIndex == 0u)
+      tileGroupOpaque[tile * tileHeader.groups + group] = kTileGroupUnused;
+    return;  // the same in every invocation
+  }
   ivec2 pixel = ivec2(gl_WorkGroupID.xy * kParticleTileSize + gl_LocalInvocationID.xy);
   uint scale = tileHeader.scale;
   bool inside = all(lessThan(pixel, ivec2(tileHeader.layerWidth, tileHeader.layerHeight)));
   uvec2 framePixel = min(uvec2(pixel) * scale + scale / 2u, uvec2(frame.viewport.xy) - 1u);
   float sceneViewDepth = inside ? particlePixelDepth(sceneDepth, pixel) : 0.0;
   float glassViewDepth = inside && kBehindGlass ? particlePixelDepth(glassDepth, pixel) : 0.0;
-  if (gl_LocalInvocationIndex == 0u) {
-    finishedPixels = 0u;
-    opaqueInFront = false;
-  }
-  barrier();
   bool finished = !inside;
   if (finished) atomicAdd(finishedPixels, 1u);
   barrier();
   uint visible = particleCounters.dispatch.w;
   vec4 front = vec4(0.0, 0.0, 0.0, 1.0), behind = vec4(0.0, 0.0, 0.0, 1.0);
-  uint slabs = tileHeader.cellsX;
-  uint group = gl_WorkGroupID.z;
-  uint firstSlab = group * slabs / tileHeader.groups, endSlab = (group + 1u) * slabs / tileHeader.groups;
-  uint cells = endSlab - firstSlab;  // at most kParticleMaxSlabs <= kThreads
-  if (gl_LocalInvocationIndex < cells) {
-    uvec2 range = particleTileRange(tile * slabs + firstSlab + gl_LocalInvocationIndex);
-    cellFirst[gl_LocalInvocationIndex] = range.x;
-    cellCount[gl_LocalInvocationIndex] = range.y;
-    // The longest cell, for the stats: an atomic only where the value read (perhaps stale, never
-    // above the true one) does not already hold it.
-    if (range.y > tileHeader.longest) atomicMax(tileHeader.longest, range.y);
-  }
-  barrier();
-  uint local = 0u;
-  while (local < cells && finishedPixels < kThreads) {
+  uint slab = group * slabs / groups, endSlab = (group + 1u) * slabs / groups;
+  while (slab < endSlab && finishedPixels < kThreads) {
     if (group > 0u) {
       if (gl_LocalInvocationIndex == 0u) {
         bool seen = false;
-        for (uint g = 0u; g < group && !seen; ++g) seen = tileGroupOpaque[tile * tileHeader.groups + g] != 0u;
+        for (uint g = 0u; g < group && !seen; ++g)
+          seen = tileGroupOpaque[tile * tileHeader.groups + g] == kTileGroupOpaque;
         opaqueInFront = seen;
         if (seen) atomicAdd(tileHeader.stopped, 1u);
       }
       barrier();
       if (opaqueInFront) break;  // the same in every invocation
     }
-    // The cells from `local` on that together hold at most kThreads particles are sorted and
-    // blended as one; a longer cell goes through the bitmap. The same in every invocation.
-    uint total = cellCount[local], last = local + 1u;
+    // The cells from `slab` on that together hold at most kParticleTileSharedSort particles are
+    // sorted and blended as one; a longer cell goes through the bitmap. The same in every invocation.
+    uint total = cellCount[slab], last = slab + 1u;
     if (total > kParticleTileSharedSort) {
-      blendMarkedCell(local, firstSlab + local, pixel, framePixel, sceneViewDepth, glassViewDepth, visible,
-                      front, behind, finished);
+      blendMarkedCell(slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, front, behind,
+                      finished);
     } else {
-      while (last < cells && total + cellCount[last] <= kParticleTileSharedSort) total += cellCount[last++];
+      while (last < endSlab && total + cellCount[last] <= kParticleTileSharedSort)
+        total += cellCount[last++];
       if (total > 0u)
-        blendSortedRun(local, total, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, front,
+        blendSortedRun(slab, total, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, front,
                        behind, finished);
     }
-    local = last;
+    slab = last;
     barrier();
   }
   if (gl_LocalInvocationIndex == 0u && finishedPixels == kThreads)
-    tileGroupOpaque[tile * tileHeader.groups + group] = 1u;
+    tileGroupOpaque[tile * tileHeader.groups + group] = kTileGroupOpaque;
   // Stopped for a group in front: particles-resolve never reads this group here.
   if (!inside || (group > 0u && opaqueInFront)) return;
   uint index = particleLayerIndex(group, pixel);

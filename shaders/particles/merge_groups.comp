@@ -5,7 +5,8 @@
 // every group (four times over below full resolution, where a frame pixel takes four particle
 // pixels; twice with glass). The groups are combined up to the first that left either layer opaque:
 // a group behind it may have stopped early once it saw the whole tile opaque (particles-composite),
-// so what it left is never read; what it held is hidden.
+// so what it left is never read; what it held is hidden. A tile's unused groups (kTileGroupUnused,
+// the last ones) wrote nothing and are skipped.
 #define PARTICLE_LAYERS_READ_WRITE
 #include "particles/tiles.glsl"
 
@@ -13,6 +14,10 @@ layout(local_size_x = kTileGroupSize, local_size_y = kTileGroupSize) in;
 layout(constant_id = 0) const bool kBehindGlass = false;
 layout(std430, set = 0, binding = 36) buffer ParticleLayersBehindBlock {
   uvec2 particleLayersBehind[];
+};
+// Per tile and group: kTileGroupUnused where the tile needed fewer groups (particles-composite).
+layout(std430, set = 0, binding = 47) readonly buffer ParticleTileOpaqueBlock {
+  uint tileGroupOpaque[];
 };
 
 // `layer` (colour, transmittance) with the packed one behind it over.
@@ -28,12 +33,17 @@ uvec2 pack(vec4 layer) {
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, ivec2(tileHeader.layerWidth, tileHeader.layerHeight)))) return;
+  uvec2 tileXY = uvec2(pixel) / kParticleTileSize;
+  uint tile = tileXY.y * tileHeader.tilesX + tileXY.x;
+  // The tile's groups: group 1 unused, group 0 alone holds it all.
+  if (tileGroupOpaque[tile * tileHeader.groups + 1u] == kTileGroupUnused) return;
   uint index = particleLayerIndex(0u, pixel);
   vec4 front = under(vec4(0.0, 0.0, 0.0, 1.0), particleLayers[index]);
   vec4 behind = kBehindGlass ? under(vec4(0.0, 0.0, 0.0, 1.0), particleLayersBehind[index]) : vec4(1.0);
   // A group's transmittance below kParticleOpaqueTransmittance is at most it once packed as a half,
   // and a product of transmittances is at most each of them.
   for (uint g = 1u; g < tileHeader.groups && min(front.a, behind.a) > kParticleOpaqueTransmittance; ++g) {
+    if (tileGroupOpaque[tile * tileHeader.groups + g] == kTileGroupUnused) break;  // so are the rest
     uint at = particleLayerIndex(g, pixel);
     front = under(front, particleLayers[at]);
     if (kBehindGlass) behind = under(behind, particleLayersBehind[at]);

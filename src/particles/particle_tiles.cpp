@@ -292,7 +292,8 @@ void ParticleSystem::mergeGroups(FrameContext& frame) {
   if (t.header.groups <= 1) return;
   const bool behind = bool(frame.targets.glassDepth);
   std::vector<ResourceUse> used{uses(t.headerBuffer, Use::StorageRead, kCompute),
-                                uses(t.layers, Use::StorageReadWrite, kCompute)};
+                                uses(t.layers, Use::StorageReadWrite, kCompute),
+                                uses(t.opaque, Use::StorageRead, kCompute)};
   if (behind) used.push_back(uses(t.layersBehind, Use::StorageReadWrite, kCompute));
   frame.graph.pass("particles-merge", used, [&](VkCommandBuffer cmd) {
     t.merge[behind ? 1 : 0].bind(cmd);
@@ -302,6 +303,7 @@ void ParticleSystem::mergeGroups(FrameContext& frame) {
         .storage(17, t.headerBuffer.handle())
         .storage(23, t.layers.handle())
         .storage(36, (behind ? t.layersBehind : t.layers).handle())
+        .storage(47, t.opaque.handle())
         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.mergeLayout);
     vkCmdDispatch(cmd, divideRoundingUp(t.header.layerWidth, gpu::kTileGroupSize),
                   divideRoundingUp(t.header.layerHeight, gpu::kTileGroupSize), 1);
