@@ -5,7 +5,10 @@
 // loads are uniform across the group. (Reading the list once per workgroup into shared memory, one
 // invocation following the links, was slower on the H200: 0.342 against 0.286 ms for ThreeL's 16
 // lights at 1080p, 4.14 against 3.47 ms for its 256.) Every light at once (forward) is loaded into
-// shared memory 64 lights at a time instead: 0.206 against 0.231 ms, 2.27 against 2.70 ms.
+// shared memory 64 lights at a time instead: 0.206 against 0.231 ms, 2.27 against 2.70 ms. The
+// same for a list's lights (every record of a scene of at most 256 in shared memory, the walk
+// reading the one a link names there) was 3.3x slower on the H200: 0.725 against 0.223 ms, 8.27
+// against 2.40 (registers 56 -> 103; bench/README.md 2026-12-04 fourth).
 #include "common/lighting.glsl"
 #include "common/visibility_surface.glsl"
 #define LLL_DISPLAY_FROM_SHADING
