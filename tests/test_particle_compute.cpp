@@ -170,6 +170,31 @@ TEST(ComputeParticles, SlabsSharedOutToSeveralWorkgroups) {
   test::expectWithinBound(many.image.ldr, one.image.ldr, test::kSmokeBound, "every group a tile against one");
 }
 
+// Dust: small, sparse particles, a few hundred a tile. Of four groups a tile, each tile needs one
+// (kParticlesPerTileGroup): the others write nothing and particles-merge must skip them, so the
+// image is one group's (a merge that read an unused group's layer would take what no one wrote).
+TEST(ComputeParticles, SparseTilesUseOneGroup) {
+  static const Scene scene = loadScene(SceneRequest{"atrium", 0, 1});
+  RenderSettings settings = settingsFor("lll", 160, 90);
+  settings.particles = "dust";
+  settings.particleCount = 16384;  // four slabs: one a group
+  settings.particleLighting = "vertex";
+  settings.particleRender = "compute";
+  settings.particleTileGroups = 4;
+  const ParticleFrame many = renderParticles(scene, settings, kSmokeSteps);
+  settings.particleTileGroups = 1;
+  const ParticleFrame one = renderParticles(scene, settings, kSmokeSteps);
+  const double tiles =
+      double(divideRoundingUp(160u, gpu::kParticleTileSize) * divideRoundingUp(90u, gpu::kParticleTileSize));
+  EXPECT_EQ(stat(many.image, "particle_tile_groups"), 4.0);
+  EXPECT_LT(stat(many.image, "particle_tile_entries_used"), tiles * gpu::kParticlesPerTileGroup);
+  EXPECT_GT(stat(many.image, "particle_tile_groups_unused"), 0.0);
+  EXPECT_EQ(stat(one.image, "particle_tile_groups_unused"), 0.0);
+  EXPECT_GT(stat(many.image, "particle_tile_entries_used"), 100.0);  // dust on screen
+  test::expectWithinBound(many.image.ldr, one.image.ldr, test::kSmokeBound,
+                          "sparse dust, four groups against one");
+}
+
 // A fog of large, nearly opaque puffs filling the view: every tile turns opaque in the nearest
 // group's slabs. The groups behind it stop once they see that and write nothing; particles-resolve
 // stops at the opaque group, so the image is one group's. Lavapipe runs the groups in order, so

@@ -289,8 +289,10 @@ void main() {
   uint groups = clamp((tileParticles + kParticlesPerTileGroup - 1u) / kParticlesPerTileGroup, 1u,
                       tileHeader.groups);
   if (group >= groups) {
-    if (gl_LocalInvocationIndex == 0u)
+    if (gl_LocalInvocationIndex == 0u) {
       tileGroupOpaque[tile * tileHeader.groups + group] = kTileGroupUnused;
+      atomicAdd(tileHeader.unused, 1u);
+    }
     return;  // the same in every invocation
   }
   ivec2 pixel = ivec2(gl_WorkGroupID.xy * kParticleTileSize + gl_LocalInvocationID.xy);

@@ -144,8 +144,12 @@ struct ParticleTileHeader {
   uint layerWidth;  // particle pixels across and down
   uint layerHeight;
   uint stopped;  // groups that stopped because a group in front made their whole tile opaque
+  uint unused;   // groups a tile did not need (kParticlesPerTileGroup)
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
-LLL_CHECK_SIZE(ParticleTileHeader, 48);
+LLL_CHECK_SIZE(ParticleTileHeader, 64);
 
 // What the tiled renderer needs of one visible particle, by position in the draw order: written
 // once per frame (particles-bin), read by every pixel of every tile it covers. The quad is a disc

@@ -275,6 +275,7 @@ std::vector<std::pair<std::string, double>> ParticleSystem::stats() const {
           {"particle_resolution_scale", double(resolutionScale_)},
           {"particle_tile_longest", double(tiles_.longestCell)},
           {"particle_tile_groups_stopped", double(tiles_.stoppedGroups)},
+          {"particle_tile_groups_unused", double(tiles_.unusedGroups)},
           {"particle_tile_overflows", double(tiles_.overflows)}};
 }
 

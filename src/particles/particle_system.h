@@ -147,6 +147,7 @@ class ParticleSystem {
     uint32_t lastRequested = 0;
     uint32_t longestCell = 0;    // the most particles one tile's slab held in the last frame
     uint32_t stoppedGroups = 0;  // groups that stopped at an opaque group in front, last frame
+    uint32_t unusedGroups = 0;   // groups a tile did not need (too few particles), last frame
     uint32_t overflows = 0;
     Buffer headerBuffer;
     Buffer cells;

@@ -346,6 +346,7 @@ bool ParticleSystem::afterFrame() {
   t.lastRequested = read.requested;
   t.longestCell = read.longest;
   t.stoppedGroups = read.stopped;
+  t.unusedGroups = read.unused;
   if (read.requested <= t.header.capacity) return false;
   ++t.overflows;
   allocateTileEntries(grownCapacity(read.requested, t.maxEntries));
