@@ -286,8 +286,8 @@ void main() {
   barrier();
   // The tile's groups: one per kParticlesPerTileGroup of its particles, up to the dispatch's. The
   // rest write nothing and say so (kTileGroupUnused), so particles-merge skips them.
-  uint groups = clamp((tileParticles + kParticlesPerTileGroup - 1u) / kParticlesPerTileGroup, 1u,
-                      tileHeader.groups);
+  uint groups =
+      clamp((tileParticles + kParticlesPerTileGroup - 1u) / kParticlesPerTileGroup, 1u, tileHeader.groups);
   if (group >= groups) {
     if (gl_LocalInvocationIndex == 0u) {
       tileGroupOpaque[tile * tileHeader.groups + group] = kTileGroupUnused;
@@ -326,11 +326,10 @@ void main() {
       blendMarkedCell(slab, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, front, behind,
                       finished);
     } else {
-      while (last < endSlab && total + cellCount[last] <= kParticleTileSharedSort)
-        total += cellCount[last++];
+      while (last < endSlab && total + cellCount[last] <= kParticleTileSharedSort) total += cellCount[last++];
       if (total > 0u)
-        blendSortedRun(slab, total, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, front,
-                       behind, finished);
+        blendSortedRun(slab, total, pixel, framePixel, sceneViewDepth, glassViewDepth, visible, front, behind,
+                       finished);
     }
     slab = last;
     barrier();
