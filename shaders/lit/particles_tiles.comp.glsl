@@ -186,9 +186,8 @@ void blendStaged(uint n, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, fl
   }
 }
 
-// Stages the particle of draw order `order` at `slot`.
-void stageParticle(uint slot, uint order) {
-  ParticleScreen s = particleScreen[order];
+// Stages `s`, the particle of draw order `order`, at `slot`.
+void stageParticle(uint slot, ParticleScreen s, uint order) {
   stagedDisc[slot] = s.disc;
   stagedLook[slot] = s.look;
   if (kLightSource != 0u)
@@ -217,10 +216,7 @@ void blendSortedRun(uint first, uint total, ivec2 pixel, uvec2 framePixel, float
   if (i < total) {
     uint rank = 0u;
     for (uint j = 0u; j < total; ++j) rank += sortedKeys[j] < key ? 1u : 0u;
-    stagedDisc[rank] = s.disc;
-    stagedLook[rank] = s.look;
-    if (kLightSource != 0u)
-      stagedLit[rank] = ParticleLit(vec4(s.albedo.rgb, uintBitsToFloat(visible - 1u - key)), s.worldRadius);
+    stageParticle(rank, s, visible - 1u - key);
   }
   barrier();
   blendStaged(total, pixel, framePixel, sceneViewDepth, glassViewDepth, front, behind, finished);
@@ -228,8 +224,8 @@ void blendSortedRun(uint first, uint total, ivec2 pixel, uvec2 framePixel, float
 }
 
 // Blends one cell of more than kParticleTileSharedSort particles (slab `slab`'s) through the bitmap
-// of its slab's keys, kThreads at a time, stopping once every pixel is
-// opaque (barriers: call it uniformly).
+// of its slab's keys, kThreads at a time, stopping once every pixel is opaque (barriers: call it
+// uniformly).
 void blendMarkedCell(uint slab, ivec2 pixel, uvec2 framePixel, float sceneViewDepth, float glassViewDepth,
                      uint visible, inout vec4 front, inout vec4 behind, inout bool finished) {
   uint count = cellCount[slab];
@@ -239,7 +235,10 @@ void blendMarkedCell(uint slab, ivec2 pixel, uvec2 framePixel, float sceneViewDe
   markKeys(cellFirst[slab], count, base, words);
   for (uint start = 0u; start < count; start += kThreads) {
     uint index = start + gl_LocalInvocationIndex;
-    if (index < count) stageParticle(gl_LocalInvocationIndex, visible - 1u - keyOfRank(index, base, words));
+    if (index < count) {
+      uint order = visible - 1u - keyOfRank(index, base, words);
+      stageParticle(gl_LocalInvocationIndex, particleScreen[order], order);
+    }
     barrier();
     blendStaged(min(kThreads, count - start), pixel, framePixel, sceneViewDepth, glassViewDepth, front,
                 behind, finished);
