@@ -31,9 +31,9 @@ layout(std430, set = 0, binding = 16) readonly buffer SurfaceRecordBlock {
 layout(std430, set = 0, binding = 17) readonly buffer InstanceBlock {
   MeshInstance meshInstances[];
 };
-// lll::Vertex: position xyz, normal xyz, uv, tangent xyzw (12 floats, three vec4s).
+// lll::Vertex: position xyz, normal xyz, uv, tangent xyzw (12 floats).
 layout(std430, set = 0, binding = 18) readonly buffer VertexBlock {
-  vec4 vertexData[];
+  float vertexData[];
 };
 layout(std430, set = 0, binding = 19) readonly buffer IndexBlock {
   uint sceneIndices[];
@@ -50,14 +50,13 @@ struct TriangleVertex {
   vec4 tangent;
 };
 
-// Three 16-byte reads, where twelve 4-byte ones were.
 TriangleVertex fetchVertex(uint index) {
-  vec4 a = vertexData[3u * index], b = vertexData[3u * index + 1u], c = vertexData[3u * index + 2u];
+  uint b = index * 12u;
   TriangleVertex v;
-  v.position = a.xyz;
-  v.normal = vec3(a.w, b.xy);
-  v.uv = b.zw;
-  v.tangent = c;
+  v.position = vec3(vertexData[b], vertexData[b + 1u], vertexData[b + 2u]);
+  v.normal = vec3(vertexData[b + 3u], vertexData[b + 4u], vertexData[b + 5u]);
+  v.uv = vec2(vertexData[b + 6u], vertexData[b + 7u]);
+  v.tangent = vec4(vertexData[b + 8u], vertexData[b + 9u], vertexData[b + 10u], vertexData[b + 11u]);
   return v;
 }
 
