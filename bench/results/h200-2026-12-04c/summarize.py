@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-"""The tables of bench/README.md's "2026-12-04 (third)" section, from this folder's runs.
+"""The tables of bench/README.md's "2026-12-04 (third)" and "(fourth)" sections, from the runs of
+this folder or, where RUN is a folder from the current directory, of that one (h200-2026-12-04d:
+run there as `python3 ../h200-2026-12-04c/summarize.py smoke run6 smoke`).
 
   summarize.py renders RUN VARIANT,... NAME,... [REPS]   per-pass medians of `lll render --stats`
                                                          (runN/r/VARIANT-NAME-REP.json), mean of reps
@@ -19,12 +21,16 @@ def load(path):
         return json.load(f)
 
 
+def run_folder(run):
+    return run if os.path.isdir(run) else f'{here}/{run}'
+
+
 def renders(run, variants, names, reps):
     for name in names:
         table = {}
         for v in variants:
             for rep in reps:
-                path = f'{here}/{run}/r/{v}-{name}-{rep}.json'
+                path = f'{run_folder(run)}/r/{v}-{name}-{rep}.json'
                 if not os.path.exists(path):
                     continue
                 for p in load(path)['passes']:
@@ -40,7 +46,7 @@ def smoke(run, variants):
         return name.startswith('particles') or name == 'glass-depth'
     rows = {}
     for v in variants:
-        for folder in sorted(glob.glob(f'{here}/{run}/bench-{v}*/')):
+        for folder in sorted(glob.glob(f'{run_folder(run)}/bench-{v}*/')):
             if not re.fullmatch(re.escape('bench-' + v) + r'(-\d+)?', os.path.basename(folder.rstrip('/'))):
                 continue
             for r in load(folder + 'results.json')['results']:
