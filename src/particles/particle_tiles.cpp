@@ -177,21 +177,17 @@ void ParticleSystem::binTiles(FrameContext& frame) {
   std::vector<ResourceUse> clears{uses(t.headerBuffer, Use::TransferWrite), uses(t.cells, Use::TransferWrite),
                                   uses(t.opaque, Use::TransferWrite)};
   if (radiance_) clears.push_back(uses(radiance_, Use::StorageRead, kCompute));
-  // The descriptors every step pushes (the count and scatter passes share a layout; the scan's
-  // three steps another).
-  auto binDescriptors = [&](VkCommandBuffer cmd) {
+  // The count and the scatter: one shader, one layout.
+  auto dispatch = [&](VkCommandBuffer cmd, const Pipeline& pipeline) {
+    pipeline.bind(cmd);
     DescriptorWriter writer = systemDescriptors(frame);
     // Read only with vertex lighting (specialization constant 1); a stand-in otherwise.
     if (!radiance_) writer.storage(15, t.screen.handle());
     writer.storage(17, t.headerBuffer.handle())
         .storage(18, t.cells.handle())
         .storage(19, t.entries.handle())
-        .storage(20, t.screen.handle());
-    writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.binLayout);
-  };
-  auto dispatch = [&](VkCommandBuffer cmd, const Pipeline& pipeline) {
-    pipeline.bind(cmd);
-    binDescriptors(cmd);
+        .storage(20, t.screen.handle())
+        .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.binLayout);
     vkCmdDispatchIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, dispatch));
   };
   // Three timed passes: the count (with the clears), the prefix sum, the scatter.
