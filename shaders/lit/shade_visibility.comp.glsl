@@ -94,7 +94,9 @@ void main() {
 #endif
     BrdfTerms terms = brdfTerms(s);
     uint light;
-    while (nextLight(cursor, light)) addLight(sums, light, lights[light], s);
+    bool listed;
+    while (nextLink(cursor, light, listed))
+      if (listed) addLight(sums, light, lights[light], s);
   }
 #endif
   bool replaced = false;

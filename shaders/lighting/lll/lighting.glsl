@@ -55,6 +55,29 @@ bool nextLight(inout LightCursor cursor, out uint light) {
   return true;
 }
 
+// The same walk one link at a time (common/lighting.glsl's optional nextLink): every link of the
+// cursor's lists is yielded, `listed` saying whether its depth bounds hold the point. A loop over
+// links that evaluates a light only where listed runs as one loop for a workgroup that shares a
+// list, instead of nextLight's loop inside a loop that each invocation leaves at its own link.
+#define LIGHTING_LINK_WALK
+bool nextLink(inout LightCursor cursor, out uint light, out bool listed) {
+  while (isListEnd(cursor.link) || cursor.steps >= longestPossibleList()) {
+    if (cursor.headsLeft == 0u) {
+      light = 0u;
+      listed = false;
+      return false;
+    }
+    --cursor.headsLeft;
+    cursor.link = tileHeads[cursor.nextHead++];
+  }
+  LightLink l = readLink(cursor.link);
+  cursor.link = l.next;
+  ++cursor.steps;
+  light = l.light;
+  listed = cursor.viewDepth >= l.minDepth && cursor.viewDepth <= l.maxDepth;
+  return true;
+}
+
 // As ThreeL's view: a listed light's colour where it reaches the surface, grey where the list has
 // it but the surface is out of its range (the cost of a coarse shape), black with no list entry.
 vec3 boundsView(Surface s, uvec2 pixel, float viewDepth) {
