@@ -63,16 +63,6 @@ void lightFromChunks(Surface s, bool covered, inout LightSums sums) {
 }
 #endif
 
-// Every light of `cursor` added to sums.
-#define WALK_LIGHTS(cursor)                                 \
-  {                                                         \
-    BrdfTerms terms = brdfTerms(s);                         \
-    uint light;                                             \
-    bool listed;                                            \
-    while (nextLink(cursor, light, listed))                 \
-      if (listed) addLight(sums, light, lights[light], s);  \
-  }
-
 void main() {
 #ifdef LLL_INTERLEAVED_VPLS
   uvec2 pixel = interleavedPixel(gl_WorkGroupID.xy, gl_LocalInvocationID.xy);
@@ -99,21 +89,14 @@ void main() {
                          : sums.pixelClass == kClassesElsewhere
                              ? lightsAtPart(pixel, viewDepth, 0u)
                              : lightsAtInClass(pixel, viewDepth, sums.pixelClass);
-    WALK_LIGHTS(cursor);
 #else
-#ifdef LIGHTING_GROUP_LISTS
-    // A workgroup inside one list reads its head from its first pixel: the compiler sees the whole
-    // walk uniform across the workgroup.
-    if (groupSharesLists(kVisibilityGroupSize)) {
-      LightCursor cursor = lightsAt(gl_WorkGroupID.xy * kVisibilityGroupSize, viewDepth);
-      WALK_LIGHTS(cursor);
-    } else
+    LightCursor cursor = lightsAt(pixel, viewDepth);
 #endif
-    {
-      LightCursor cursor = lightsAt(pixel, viewDepth);
-      WALK_LIGHTS(cursor);
-    }
-#endif
+    BrdfTerms terms = brdfTerms(s);
+    uint light;
+    bool listed;
+    while (nextLink(cursor, light, listed))
+      if (listed) addLight(sums, light, lights[light], s);
   }
 #endif
   bool replaced = false;

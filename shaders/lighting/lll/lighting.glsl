@@ -78,13 +78,6 @@ bool nextLink(inout LightCursor cursor, out uint light, out bool listed) {
   return true;
 }
 
-// Whether every pixel of an aligned `size` x `size` workgroup walks the same lists
-// (common/lighting.glsl's optional groupSharesLists): one list per tile, tiles a multiple of it.
-#define LIGHTING_GROUP_LISTS
-bool groupSharesLists(uint size) {
-  return listSlices() == 1u && frame.counts.y % size == 0u;
-}
-
 // As ThreeL's view: a listed light's colour where it reaches the surface, grey where the list has
 // it but the surface is out of its range (the cost of a coarse shape), black with no list entry.
 vec3 boundsView(Surface s, uvec2 pixel, float viewDepth) {
