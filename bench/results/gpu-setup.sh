@@ -1,4 +1,5 @@
-# Sourced on the GPU machine from the repository root.
+# Sourced on the GPU machine from the repository root (copied to .gpu/setup.sh), by every run of
+# the results folders from h200-2026-12-03 on.
 g=$(pwd)/.gpu
 (cd "$g" && xz -dc pack.tar.xz | tar xf -)
 for f in "$g"/debs/*.deb; do dpkg -x "$f" /; done
