@@ -1,5 +1,6 @@
-# Sourced on the GPU machine from the repository root (copied to .gpu/setup.sh), by every run of
-# the results folders from h200-2026-12-03 on.
+# Sourced on the GPU machine from the repository root (copied to .gpu/setup.sh) by every H200 run
+# from h200-2026-12-02b on: unpacks .gpu/pack.tar.xz, installs the loaders, points Vulkan at
+# NVIDIA's driver and the packed validation layer.
 g=$(pwd)/.gpu
 (cd "$g" && xz -dc pack.tar.xz | tar xf -)
 for f in "$g"/debs/*.deb; do dpkg -x "$f" /; done
