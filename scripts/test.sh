@@ -23,6 +23,9 @@ sweeps+='|BenchQuick\.|HostileCli\.InterruptedBench'
 # The same for the command line's 31-frame moving-light render (45 s under the sanitizers); the
 # moved-lights path itself is sanitized by LightAnimation.LightsMovedBetweenFramesDrawWhatTheirTimeDraws.
 sweeps+='|LightAnimationCli\.'
+# Mirrored glTF nodes through every technique and surface path (24 s in the release build); the
+# loader's reversed copies are sanitized by GltfLoaderTest.MirroringNodesKeepTheirFrontFaces.
+sweeps+='|Instancing\.MirroredGltfNodes'
 # Installing the package and building the example against it tests the packaging, not memory: once.
 sweeps+='|InstalledPackage\.'
 # The soak runs every technique case in the release build; under the sanitizers one case (lll, 95 s

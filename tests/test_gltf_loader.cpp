@@ -127,6 +127,53 @@ TEST_F(GltfLoaderTest, NodeHierarchyGivesWorldTransforms) {
   expectVec3Near(glm::vec3(scene.instances[1].transform * glm::vec4(1, 0, 0, 1)), {1, 3, 13});
 }
 
+// glTF: where a node's world transform mirrors (negative determinant) its mesh's fronts wind
+// clockwise. The renderer's fronts are counter-clockwise after the transform, so such a node must
+// be placed with the mesh's triangles reversed: every instance's triangles then face the way its
+// normals do in the world (the geometric normal of the transformed winding along the transformed
+// vertex normal), as they do for the unmirrored node. Two mirroring nodes share one reversed copy.
+TEST_F(GltfLoaderTest, MirroringNodesKeepTheirFrontFaces) {
+  GltfBuilder b = quadScene();
+  b.doc["nodes"] = json::array({{{"mesh", 0}},
+                                {{"scale", {-1, 1, 1}}, {"mesh", 0}},
+                                {{"scale", {-1, -1, 1}}, {"mesh", 0}},  // a half turn: no mirror
+                                {{"scale", {1, 1, -2}}, {"children", {4}}},
+                                {{"rotation", {0, 0.7071068, 0, 0.7071068}}, {"mesh", 0}},
+                                {{"scale", {-1, 1, 1}}, {"children", {6}}},
+                                {{"scale", {1, -1, 1}}, {"mesh", 0}}});  // mirrored twice: none
+  b.setScene({0, 1, 2, 3, 5});
+  const Scene scene = loadGltf(b.writeGltf(dir_, "mirrored"));
+  ASSERT_EQ(scene.instances.size(), 5u);
+  ASSERT_EQ(scene.meshes.size(), 2u);  // the quad and its reversed copy, shared
+  const bool mirrored[5] = {false, true, false, true, false};
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    const Instance& instance = scene.instances[i];
+    EXPECT_EQ(instance.mesh, mirrored[i] ? 1u : 0u) << "instance " << i;
+    EXPECT_EQ(glm::determinant(glm::mat3(instance.transform)) < 0.0f, mirrored[i]) << "instance " << i;
+    const Primitive& p = scene.meshes[instance.mesh].primitives.at(0);
+    ASSERT_EQ(p.indexCount, 6u);
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.transform)));
+    for (uint32_t t = 0; t < p.indexCount; t += 3) {
+      glm::vec3 corner[3], normal(0.0f);
+      for (uint32_t k = 0; k < 3; ++k) {
+        const Vertex& v = scene.vertices[p.vertexOffset + scene.indices[p.firstIndex + t + k]];
+        corner[k] = glm::vec3(instance.transform * glm::vec4(v.position, 1.0f));
+        normal += normalMatrix * v.normal;
+      }
+      const glm::vec3 front = glm::cross(corner[1] - corner[0], corner[2] - corner[0]);
+      EXPECT_GT(glm::dot(glm::normalize(front), glm::normalize(normal)), 0.99f)
+          << "instance " << i << " triangle " << t / 3;
+    }
+  }
+  // The copy's triangles are the quad's, each with its last two corners swapped.
+  const Primitive& reversed = scene.meshes[1].primitives[0];
+  EXPECT_EQ(std::vector<uint32_t>(scene.indices.begin() + reversed.firstIndex,
+                                  scene.indices.begin() + reversed.firstIndex + reversed.indexCount),
+            (std::vector<uint32_t>{0, 2, 1, 0, 3, 2}));
+  EXPECT_EQ(reversed.vertexOffset, scene.meshes[0].primitives[0].vertexOffset);
+  EXPECT_EQ(reversed.material, scene.meshes[0].primitives[0].material);
+}
+
 TEST_F(GltfLoaderTest, UsesTheDefaultSceneOnly) {
   GltfBuilder b = quadScene();
   b.addNode({{"mesh", 0}, {"translation", {0, 7, 0}}});

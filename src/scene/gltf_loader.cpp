@@ -163,7 +163,8 @@ class GltfImporter {
   std::vector<DecodedImage> images_;                  // per glTF image, decoded on first use
   std::map<std::pair<int, bool>, int> textureIndex_;  // (glTF image, srgb) -> Scene::textures
   std::optional<uint32_t> defaultMaterial_;
-  std::map<uint32_t, Bounds> meshBounds_;  // object-space bounds of each placed mesh
+  std::map<uint32_t, Bounds> meshBounds_;        // object-space bounds of each placed mesh
+  std::map<uint32_t, uint32_t> reversedMeshes_;  // a mesh's reversed copy, for mirroring nodes
   std::set<std::string> ignoredAttributes_;
   bool hasMorphTargets_ = false;
   bool usesOtherTexCoords_ = false;
@@ -615,6 +616,19 @@ void GltfImporter::placeMesh(uint32_t mesh, const glm::mat4& world, int node) {
     fail("node " + std::to_string(node) + " places mesh " + std::to_string(mesh) + " at coordinates up to " +
          fmt::format("{}", largest) + " m, beyond the " + fmt::format("{}", kMaxWorldCoordinate) +
          " m the renderer's 32-bit arithmetic takes");
+  // glTF: a node whose world transform mirrors (negative determinant) winds its fronts clockwise.
+  if (glm::determinant(glm::mat3(world)) < 0.0f) {
+    auto reversed = reversedMeshes_.find(mesh);
+    if (reversed == reversedMeshes_.end()) {
+      uint64_t indices = scene_.indices.size();
+      for (const Primitive& p : scene_.meshes[mesh].primitives) indices += p.indexCount;
+      if (indices > std::numeric_limits<uint32_t>::max())
+        fail("node " + std::to_string(node) + " mirrors mesh " + std::to_string(mesh) +
+             ", whose reversed copy would take the scene past 2^32 indices");
+      reversed = reversedMeshes_.emplace(mesh, addReversedWindingMesh(scene_, mesh)).first;
+    }
+    mesh = reversed->second;
+  }
   scene_.instances.push_back({mesh, world});
 }
 

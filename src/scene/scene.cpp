@@ -41,6 +41,24 @@ Bounds Scene::worldBounds() const {
   return bounds;
 }
 
+uint32_t addReversedWindingMesh(Scene& scene, uint32_t mesh) {
+  Mesh reversed = scene.meshes[mesh];
+  reversed.name += " (reversed winding)";
+  for (Primitive& primitive : reversed.primitives) {
+    const uint32_t first = uint32_t(scene.indices.size());
+    scene.indices.reserve(first + primitive.indexCount);
+    for (uint32_t i = 0; i + 2 < primitive.indexCount; i += 3) {
+      const uint32_t* triangle = &scene.indices[primitive.firstIndex + i];
+      const uint32_t a = triangle[0], b = triangle[1], c = triangle[2];
+      scene.indices.insert(scene.indices.end(), {a, c, b});
+    }
+    primitive.firstIndex = first;
+    primitive.indexCount = primitive.indexCount / 3 * 3;
+  }
+  scene.meshes.push_back(std::move(reversed));
+  return uint32_t(scene.meshes.size() - 1);
+}
+
 uint64_t Scene::triangleCount() const {
   uint64_t triangles = 0;
   for (const Instance& instance : instances) {

@@ -66,6 +66,10 @@ struct Mesh {
   std::vector<Primitive> primitives;
 };
 
+// Front faces are the triangles that wind counter-clockwise on screen after `transform`, as the
+// rasterizer sees them, also where the transform mirrors (a negative determinant turns the mesh's
+// fronts away). glTF instead lets a mirroring node's determinant flip the winding: its loader
+// places such a node's mesh as the mesh's reversed copy (addReversedWindingMesh).
 struct Instance {
   uint32_t mesh = 0;
   glm::mat4 transform{1.0f};  // object to world
@@ -181,6 +185,11 @@ struct Bounds {
 // The box around `bounds` transformed by `transform`: exact for transforms that keep the axes
 // (translations, scales, quarter turns), a little larger than the transformed geometry otherwise.
 Bounds transformBounds(const Bounds& bounds, const glm::mat4& transform);
+
+struct Scene;
+// Appends a copy of mesh `mesh` whose triangles wind the other way (each triangle's last two
+// indices swapped, the same vertices and materials) and returns its index.
+uint32_t addReversedWindingMesh(Scene& scene, uint32_t mesh);
 
 // World coordinates beyond this are refused: squared distances must stay finite in 32-bit floats.
 inline constexpr float kMaxWorldCoordinate = 1e18f;
