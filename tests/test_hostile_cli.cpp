@@ -81,6 +81,7 @@ TEST_F(HostileCli, EveryWordOptionRejectsHostileValues) {
       {render, "--lll-fill"},
       {render, "--lll-link"},
       {render, "--lll-shade"},
+      {render, "--light-motion"},
       {render, "--debug-view"},
       {render, "--deferred-translucent"},
       {render, "--aa"},

@@ -4,7 +4,9 @@
 // deferred light volumes placed on the CPU, the local shadows written into the light array).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "cli_test_support.h"
@@ -130,6 +132,108 @@ TEST(LightAnimation, LightsMovedBetweenFramesDrawWhatTheirTimeDraws) {
     const test::Rendered fresh = test::render(atSix, settings);
     test::expectWithinBound(moved.ldr, fresh.ldr, test::kSameImage, "moved vs made at 6 s, " + c.technique);
     EXPECT_LT(test::psnr(moved.ldr, first.ldr), 40.0) << "the lights' move changed the image";
+  }
+}
+
+// Where nothing reads the lights' positions on the CPU (--light-motion auto), moveLightsTo leaves the
+// scene's lights as they are and the next frame's first pass places them on the GPU: the image of a
+// renderer made at that time, for every technique that reads lights on the GPU only. Where the CPU
+// reads them (deferred's and the pre-pass's volumes, local shadows' views) they are placed in the
+// scene and uploaded, as before. After a GPU move, updateLights draws the scene's lights as they
+// are on the CPU again.
+TEST(LightAnimation, MovedOnTheGpuWhereTheCpuDoesNotReadThem) {
+  struct Case {
+    std::string technique;
+    std::string shadows;
+    bool onGpu;
+  };
+  const Scene atThree = loadScene(movingRequest(48, 3.0f)), atSix = loadScene(movingRequest(48, 6.0f));
+  for (const Case& c : {Case{"forward", "sun", true}, Case{"lll", "none", true}, Case{"tiled", "sun", true},
+                        Case{"clustered", "none", true}, Case{"deferred", "none", false},
+                        Case{"prepass", "sun", false}, Case{"lll", "all", false}}) {
+    SCOPED_TRACE(c.technique + " shadows " + c.shadows);
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 54;
+    settings.technique = c.technique;
+    settings.shadows = c.shadows;
+    settings.shadowLights = 4;
+    Scene scene = loadScene(movingRequest(48, 0.0f));
+    const std::vector<Light> atZero = scene.lights;
+    Renderer renderer(test::gpuContext(), scene, settings);
+    EXPECT_EQ(renderer.lightsMoveOnGpu(), c.onGpu);
+    const test::Rendered first = test::render(renderer);
+    renderer.moveLightsTo(scene, 6.0f);
+    const test::Rendered moved = test::render(renderer);
+    test::expectWithinBound(moved.ldr, test::render(atSix, settings).ldr, test::kSameImage,
+                            "moved to 6 s vs made at 6 s, " + c.technique);
+    EXPECT_LT(test::psnr(moved.ldr, first.ldr), 40.0) << "the lights' move changed the image";
+    size_t unchanged = 0;
+    for (size_t i = 0; i < scene.lights.size(); ++i)
+      unchanged += scene.lights[i].position == atZero[i].position;
+    EXPECT_EQ(unchanged == scene.lights.size(), c.onGpu) << "the scene's lights stay where they were";
+    if (!c.onGpu) continue;
+    const size_t passes = std::count_if(moved.frame.passes.begin(), moved.frame.passes.end(),
+                                        [](const PassTime& p) { return p.name == "lights-move"; });
+    EXPECT_EQ(passes, 1u);
+    placeLightsAt(scene.lights, scene.lightAnimation, 3.0f);
+    renderer.updateLights();
+    test::expectWithinBound(test::render(renderer).ldr, test::render(atThree, settings).ldr, test::kSameImage,
+                            "placed at 3 s on the CPU after a GPU move, " + c.technique);
+  }
+}
+
+// --light-motion gpu is refused where the CPU reads the lights' positions, and cpu keeps them there.
+TEST(LightAnimation, LightMotionSetting) {
+  Scene scene = loadScene(movingRequest(8, 0.0f));
+  RenderSettings settings;
+  settings.width = 32;
+  settings.height = 18;
+  settings.lightMotion = "gpu";
+  for (const char* technique : {"deferred", "prepass"}) {
+    settings.technique = technique;
+    EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError) << technique;
+  }
+  settings.technique = "lll";
+  settings.shadows = "all";
+  EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError);
+  settings.shadows = "none";
+  EXPECT_TRUE(Renderer(test::gpuContext(), scene, settings).lightsMoveOnGpu());
+  settings.lightMotion = "cpu";
+  EXPECT_FALSE(Renderer(test::gpuContext(), scene, settings).lightsMoveOnGpu());
+  settings.lightMotion = "sometimes";
+  EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError);
+}
+
+// The GPU places every light where positionAt (the CPU, in double precision) does, at any time up
+// to a day, to within a hundred-thousandth of the orbit's radius: the orbit reaches 13,750 turns
+// there, where one rounding of a 32-bit product of speed and time moves a light by a few
+// thousandths of its radius (shaders/lighting/move_lights.comp splits both so that it is exact).
+TEST(LightAnimation, GpuPositionsAreTheCpusUpToADay) {
+  Scene scene = loadScene(movingRequest(256, 0.0f));
+  RenderSettings settings;
+  settings.width = 16;
+  settings.height = 16;
+  settings.technique = "forward";
+  Renderer renderer(test::gpuContext(), scene, settings);
+  ASSERT_TRUE(renderer.lightsMoveOnGpu());
+  const LightAnimation& animation = scene.lightAnimation;
+  for (const float t : {0.0f, 6.0f, 1234.567f, 86399.98f}) {
+    renderer.moveLightsTo(scene, t);
+    renderer.renderFrame(false);
+    const std::vector<uint8_t> bytes = readBack(test::gpuContext(), renderer.gpuScene().lightBuffer(),
+                                                scene.lights.size() * sizeof(gpu::GpuLight));
+    float worst = 0.0f;
+    for (size_t i = 0; i < animation.motions.size(); ++i) {
+      gpu::GpuLight light;
+      std::memcpy(&light, bytes.data() + (animation.first + i) * sizeof(gpu::GpuLight), sizeof(light));
+      const LightMotion& m = animation.motions[i];
+      const float error = glm::length(glm::vec3(light.positionRange) - positionAt(m, t)) / m.radius;
+      worst = std::max(worst, error);
+      EXPECT_EQ(light.positionRange.w, scene.lights[animation.first + i].range) << "only the position moves";
+    }
+    EXPECT_LT(worst, 1e-5f) << "at " << t << " s";
+    std::printf("GPU against CPU positions at %.2f s: at most %.2e of the orbit's radius\n", t, worst);
   }
 }
 

@@ -22,6 +22,18 @@ struct GpuLight {
 };
 LLL_CHECK_SIZE(GpuLight, 64);
 
+// A moving light's motion (scene/light_animation.h) as the GPU evaluates it each frame
+// (render/moving_lights.h): position(t) = centre + (r cos 2 pi o, h sin 2 pi b, r sin 2 pi o), with
+// o = orbit's turns a second x t + its phase in turns, b the same for the bob. A speed is split in
+// two floats, the first of 12 significant bits, so that its product with the time (split alike)
+// stays exact where it must: w t reaches 13,750 turns at a day's seconds.
+struct GpuLightMotion {
+  vec4 centerRadius;  // xyz the orbit's centre at the bob's middle height, w the orbit's radius
+  vec4 orbit;         // x, y turns a second (x + y, x of 12 significant bits), z phase in turns, w unused
+  vec4 bob;           // x, y the bob's frequency (split as orbit's), z phase in turns, w amplitude
+};
+LLL_CHECK_SIZE(GpuLightMotion, 48);
+
 // Per-frame constants: camera, viewport and light count.
 struct FrameUniforms {
   mat4 view;

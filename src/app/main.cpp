@@ -67,6 +67,11 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(finiteIn(0.0, lll::kMaxAnimationSeconds));
   cmd.add_flag("--animate", s.animateLights,
                "the --lights lights move 1/60 s each frame, from --time (0 unless given)");
+  cmd.add_option("--light-motion", s.lightMotion,
+                 "where moving lights are placed each frame: gpu (a pass writes their positions) | cpu "
+                 "(placed and uploaded) | auto (gpu unless the CPU reads them: deferred, prepass, "
+                 "--shadows all, --gi)")
+      ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
   cmd.add_option("--exposure", s.exposure, "exposure multiplier before tonemapping")
       ->check(finiteIn(1e-6, 1e6));
   cmd.add_option("--ambient", s.ambient, "constant ambient radiance")->check(finiteIn(0.0, 1e3));

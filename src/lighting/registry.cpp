@@ -29,9 +29,10 @@ bool lllFragmentShading(const RenderSettings& settings) {
 const std::vector<TechniqueInfo>& techniques() {
   static const std::vector<TechniqueInfo> table = {
       {"forward", "brute force: every pixel evaluates every light (the reference)", &createForward},
-      {"deferred", "Infinity's deferred lighting: G-buffer, then lights drawn as volumes", &createDeferred},
+      {"deferred", "Infinity's deferred lighting: G-buffer, then lights drawn as volumes", &createDeferred,
+       nullptr, 8, /*readsLightsOnCpu=*/true},
       {"prepass", "Resistance 2's light pre-pass: normals, stencil-volume lights, material", &createPrepass,
-       &always},
+       &always, 8, /*readsLightsOnCpu=*/true},
       {"lll", "light linked list: per-tile light lists built on the GPU (--lll-fill shells|ray|compute)",
        &createLightLinkedList, &lllFragmentShading, kLllDefaultTile},
       {"tiled", "tiled shading (Forward+): per-tile light index arrays between the tile's depth bounds",

@@ -54,6 +54,9 @@ struct TechniqueInfo {
   // The tile size (pixels) when --tile is not given, each technique's fastest measured on the H200
   // (bench/README.md, 2026-12-03): lll 16, tiled and clustered 8.
   uint32_t defaultTile = 8;
+  // Whether the technique reads the lights' positions on the CPU each frame (deferred's and the
+  // pre-pass's light volumes): moving lights are then placed on the CPU (Renderer::moveLightsTo).
+  bool readsLightsOnCpu = false;
 };
 
 const std::vector<TechniqueInfo>& techniques();

@@ -70,6 +70,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   shadows_ = std::make_unique<SunShadows>(context, *gpuScene_, sunShadowOptions(settings));
   lightShadows_ = std::make_unique<LocalShadows>(context, *gpuScene_, localShadowOptions(settings));
   gpuScene_->setShadowedLights(lightShadows_->casting());
+  chooseLightMotion();
   updateUniforms();
 
   depthLayout_ = meshPassLayout(context, *gpuScene_);
@@ -253,13 +254,37 @@ FrameResult Renderer::renderFrame(bool capture) {
   return result;
 }
 
+// --light-motion: the GPU places moving lights unless something reads their positions on the CPU.
+void Renderer::chooseLightMotion() {
+  const std::string& motion = settings_.lightMotion;
+  if (motion != "auto" && motion != "gpu" && motion != "cpu")
+    throw InputError(fmt::format("--light-motion {}: expected auto, gpu or cpu", motion));
+  std::string cpuReader;
+  if (findTechnique(settings_.technique).readsLightsOnCpu)
+    cpuReader = fmt::format("--technique {} places its light volumes on the CPU", settings_.technique);
+  else if (lightShadows_->casting())
+    cpuReader = "--shadows all places the lights' shadow views on the CPU";
+  else if (scene_.movingIndirect)
+    cpuReader = "--gi traces the moving lights' photons on the CPU";
+  if (motion == "gpu" && !cpuReader.empty())
+    throw InputError(fmt::format("--light-motion gpu: {}", cpuReader));
+  if (motion == "cpu" || !cpuReader.empty() || scene_.lightAnimation.empty()) return;
+  movingLights_ = std::make_unique<MovingLights>(context_, scene_.lightAnimation);
+}
+
 void Renderer::updateLights() {
+  gpuLightTime_.reset();
   gpuScene_->uploadLights(scene_.lights);
   lightShadows_->lightsRewritten();
 }
 
 void Renderer::moveLightsTo(Scene& scene, float seconds) {
   if (scene.lightAnimation.empty() && !scene.movingIndirect) return;
+  if (movingLights_) {
+    checkAnimationTime(seconds);
+    gpuLightTime_ = seconds;
+    return;
+  }
   if (!scene.lightAnimation.empty()) placeLightsAt(scene.lights, scene.lightAnimation, seconds);
   if (scene.movingIndirect)
     scene.movingIndirect.vpls->moveTo(seconds, scene.lights, scene.movingIndirect.first);
@@ -293,6 +318,7 @@ std::vector<std::pair<std::string, double>> Renderer::stats() const {
                        {"vpl-lit-slots", double(g.litSlots)},
                        {"vpl-dropped-cells", double(g.droppedCells)}});
   }
+  if (!scene_.lightAnimation.empty()) s.push_back({"light-motion-gpu", movingLights_ ? 1.0 : 0.0});
   s.push_back({"instances", double(scene_.instances.size())});
   s.push_back({"visible_instances", double(gpuScene_->visibleInstances())});
   // 1 when opaque surfaces came from the visibility buffer (its ids are lighting memory too).
@@ -315,6 +341,7 @@ void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advancePartic
   if (visibility_) visibility_->prepareFrame(*gpuScene_);
   timer_.reset(cmd);
   FrameGraph graph(cmd, timer_);
+  if (gpuLightTime_) movingLights_->record(graph, gpuScene_->lightBuffer(), *gpuLightTime_);
   FrameContext frame{
       context_,           cmd,       graph,   *gpuScene_,       targets_,          uniformBuffer_,
       uniforms_,          settings_, capture, particles_.get(), visibility_.get(), shadows_.get(),

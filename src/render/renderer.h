@@ -1,9 +1,10 @@
 #pragma once
 // The frame: upload the scene once, then per frame a short list of named, GPU-timed passes:
-//   depth-prepass -> (particles: simulate, sort, indirect) -> the technique's passes (drawing the
-//   particles after its glass) -> tonemap (-> readback when captured).
+//   (lights moved on the GPU: lights-move) -> depth-prepass -> (particles: simulate, sort, indirect) -> the
+//   technique's passes (drawing the particles after its glass) -> tonemap (-> readback when captured).
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "gpu/pass_timer.h"
@@ -11,6 +12,7 @@
 #include "particles/particle_system.h"
 #include "render/frame.h"
 #include "render/gpu_scene.h"
+#include "render/moving_lights.h"
 #include "render/settings.h"
 #include "scene/camera.h"
 #include "shadows/local_shadows.h"
@@ -63,12 +65,17 @@ class Renderer {
   // particles, each frame advances the simulation one fixed step (1 / kParticleStepsPerSecond).
   FrameResult renderFrame(bool capture);
   // The scene's lights moved (their positions changed between frames, scene/light_animation.h):
-  // writes the light array again; every technique rebuilds its light data each frame anyway.
+  // writes the light array again, as the scene's lights are now (a time moveLightsTo gave the GPU
+  // is dropped); every technique rebuilds its light data each frame anyway.
   void updateLights();
-  // Places `scene`'s moving lights (the scene this renderer draws) at `seconds`, lets its VPLs
-  // follow them (a share of their photons traced again, on the CPU: gi/moving_vpls.h) and updates
-  // the light array; nothing when none move.
+  // Moves `scene`'s animated lights (the scene this renderer draws) to `seconds` for the next
+  // frames; nothing when none move. With --light-motion gpu (auto's choice unless the CPU reads
+  // their positions: settings.h) the next frames' first pass places them and `scene` is not
+  // touched; otherwise they are placed in `scene`, its VPLs follow them (a share of their photons
+  // traced again, on the CPU: gi/moving_vpls.h) and the light array is uploaded again.
   void moveLightsTo(Scene& scene, float seconds);
+  // Whether moving lights are placed on the GPU (--light-motion).
+  bool lightsMoveOnGpu() const { return movingLights_ != nullptr; }
   // Advances the particle simulation `steps` fixed steps without drawing (no-op without particles):
   // `lll render --frames N` simulates N - 1 steps this way, then draws the N-th frame.
   void advanceParticles(uint32_t steps);
@@ -105,6 +112,7 @@ class Renderer {
 
  private:
   void chooseSurfaces();
+  void chooseLightMotion();
   void createTargets();
   void updateUniforms();
   void recordFrame(VkCommandBuffer cmd, bool capture, bool advanceParticles);
@@ -136,8 +144,10 @@ class Renderer {
   std::unique_ptr<VisibilityBuffer> visibility_;  // null with --surfaces gbuffer
   std::string surfacesFallback_;                  // why --surfaces visibility fell back to gbuffer, if it did
   std::unique_ptr<Technique> technique_;
-  std::unique_ptr<LitPasses> lit_;  // the shared passes, with the technique's lighting interface
-  bool lastCaptured_ = false;       // the last frame was read back (displayLayout())
+  std::unique_ptr<LitPasses> lit_;              // the shared passes, with the technique's lighting interface
+  std::unique_ptr<MovingLights> movingLights_;  // --light-motion gpu; null otherwise
+  std::optional<float> gpuLightTime_;           // where movingLights_ places the lights, once moved
+  bool lastCaptured_ = false;                   // the last frame was read back (displayLayout())
 };
 
 }  // namespace lll

@@ -15,6 +15,11 @@ struct RenderSettings {
   uint32_t frames = 1;
   // --animate: the moving lights advance kAnimationFrameSeconds each frame (scene/light_animation.h).
   bool animateLights = false;
+  // Where moving lights are placed each frame (Renderer::moveLightsTo): gpu (a pass writes their
+  // positions: render/moving_lights.h) | cpu (placed in the scene's lights, the array uploaded
+  // again) | auto (the GPU unless something reads their positions on the CPU: deferred's and the
+  // pre-pass's light volumes, local shadows, VPLs that follow the lights).
+  std::string lightMotion = "auto";
   float exposure = 1.0f;
   float ambient = 0.02f;  // constant ambient radiance, so unlit corners are not pitch black
   // Light Linked List options (technique "lll").

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "scene/errors.h"
 #include "scene/hash.h"
@@ -22,10 +23,12 @@ float hash01(uint32_t seed, uint32_t light, uint32_t stream) {
 
 // Where the light is against its orbit's centre. The angles are reduced in double: w t reaches
 // 86,400 rad at the largest time, where a float angle would keep only about 8 ms of the period.
+// Reduced by 2 pi itself (a float 2 pi is 1.7e-7 rad long, 2.4 mrad after a day's turns; the GPU's
+// motion, render/moving_lights.h, counts whole turns exactly).
 glm::vec3 offsetAt(const LightMotion& m, float seconds) {
-  const double t = seconds;
-  const float orbit = float(std::fmod(double(m.angularSpeed) * t + m.phase, double(kTwoPi)));
-  const float bob = float(std::fmod(double(kTwoPi) * m.bobFrequency * t + m.bobPhase, double(kTwoPi)));
+  const double t = seconds, twoPi = 2.0 * std::numbers::pi;
+  const float orbit = float(std::fmod(double(m.angularSpeed) * t + m.phase, twoPi));
+  const float bob = float(std::fmod(twoPi * m.bobFrequency * t + m.bobPhase, twoPi));
   return {m.radius * std::cos(orbit), m.bobAmplitude * std::sin(bob), m.radius * std::sin(orbit)};
 }
 
@@ -62,9 +65,13 @@ glm::vec3 positionAt(const LightMotion& m, float seconds) {
   return m.origin + (offsetAt(m, seconds) - offsetAt(m, 0.0f));
 }
 
-void placeLightsAt(std::vector<Light>& lights, const LightAnimation& animation, float seconds) {
+void checkAnimationTime(float seconds) {
   if (!std::isfinite(seconds) || seconds < 0.0f || seconds > kMaxAnimationSeconds)
     throw InputError(fmt::format("--time {}: expected seconds from 0 to {}", seconds, kMaxAnimationSeconds));
+}
+
+void placeLightsAt(std::vector<Light>& lights, const LightAnimation& animation, float seconds) {
+  checkAnimationTime(seconds);
   if (uint64_t(animation.first) + animation.motions.size() > lights.size())
     throw InputError(fmt::format("light animation: {} moving lights from light {}, but the scene has {}",
                                  animation.motions.size(), animation.first, lights.size()));

@@ -27,8 +27,10 @@ glm::vec3 positionAt(const LightMotion& motion, float seconds);
 // The centre of the light's orbit (at the height its bobbing swings about).
 glm::vec3 orbitCenter(const LightMotion& motion);
 
-// Moves the animated lights to where they are at `seconds`; throws InputError for a time that is
-// negative, not finite or past kMaxAnimationSeconds.
+// Throws InputError for a time that is negative, not finite or past kMaxAnimationSeconds.
+void checkAnimationTime(float seconds);
+
+// Moves the animated lights to where they are at `seconds` (checked as checkAnimationTime).
 void placeLightsAt(std::vector<Light>& lights, const LightAnimation& animation, float seconds);
 
 }  // namespace lll
