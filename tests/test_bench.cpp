@@ -149,13 +149,16 @@ TEST(BenchSuites, SlicesIsLllWithAndWithoutDepthSlicesOnBothLightSets) {
 }
 
 // Moving lights: every technique with the dense lights moving (the light-volume ones and forward
-// only where they finish, as in the density suite), and lll standing still as the control.
+// only where they finish, as in the density suite), lll standing still as the control, and lll
+// with the lights placed on the CPU (what the GPU's placing saves).
 TEST(BenchSuites, MovingIsEveryTechniqueWithMovingLightsAndLllStill) {
   const auto full = buildSuite("moving", SuiteOptions{});
-  size_t still = 0;
+  size_t still = 0, cpu = 0;
   for (const Scenario& s : full) {
     EXPECT_TRUE(s.scene.scaleIntensityWithRange) << s.name;
-    EXPECT_TRUE(s.scene.extraLights == 4096u || s.scene.extraLights == 131072u) << s.name;
+    EXPECT_TRUE(s.scene.extraLights == 4096u || s.scene.extraLights == 131072u ||
+                s.scene.extraLights == 1048576u)
+        << s.name;
     if (!s.settings.animateLights) {
       ++still;
       EXPECT_FALSE(s.scene.movingLights);
@@ -164,13 +167,20 @@ TEST(BenchSuites, MovingIsEveryTechniqueWithMovingLightsAndLllStill) {
       continue;
     }
     EXPECT_TRUE(s.scene.movingLights) << s.name;
+    if (s.settings.lightMotion == "cpu") {
+      ++cpu;
+      EXPECT_EQ(seriesLabel(s), "lll/compute/cpu-motion");
+      continue;
+    }
+    EXPECT_EQ(s.settings.lightMotion, "auto") << seriesLabel(s);
     EXPECT_EQ(s.skip.empty(), s.scene.extraLights <= kDensityVolumeLimit ||
                                   (s.settings.technique != "forward" && s.settings.technique != "deferred" &&
                                    s.settings.technique != "prepass"))
         << seriesLabel(s) << " " << s.name;
   }
-  EXPECT_EQ(still, 2u);
-  EXPECT_EQ(full.size(), 2u * (techniques().size() + 1u));
+  EXPECT_EQ(still, 3u);
+  EXPECT_EQ(cpu, 3u);
+  EXPECT_EQ(full.size(), 3u * (techniques().size() + 2u));
 }
 
 TEST(BenchSuites, DensityScalesIntensityWithTheSquareOfTheRange) {

@@ -215,13 +215,14 @@ std::vector<Scenario> slicesSuite(const SuiteOptions& options) {
   return out;
 }
 
-// Moving lights: the density suite's small lights at 4,096 and 131,072 orbiting and bobbing
-// (--animate), 1/60 s a frame, for every technique that finishes in reasonable time, and lll with
-// the same lights standing still ("lll/compute/static"): every technique rebuilds its light data
-// each frame, so moving lights should cost the same GPU time.
+// Moving lights: the density suite's small lights at 4,096, 131,072 and 1,048,576 orbiting and
+// bobbing (--animate), 1/60 s a frame, for every technique that finishes in reasonable time, lll
+// with the same lights standing still ("lll/compute/static") and lll with them placed on the CPU
+// ("lll/compute/cpu-motion"): every technique rebuilds its light data each frame, so moving lights
+// should cost the same GPU time plus lights-move, and no CPU time where the GPU places them.
 std::vector<Scenario> movingSuite(const SuiteOptions& options) {
   const std::vector<uint32_t> counts =
-      options.quick ? std::vector<uint32_t>{64} : std::vector<uint32_t>{4096, 131072};
+      options.quick ? std::vector<uint32_t>{64} : std::vector<uint32_t>{4096, 131072, 1048576};
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   std::vector<Scenario> out;
   for (const uint32_t lights : counts) {
@@ -237,6 +238,13 @@ std::vector<Scenario> movingSuite(const SuiteOptions& options) {
     still.settings.technique = "lll";
     still.series = techniqueLabel(still.settings) + "/static";
     out.push_back(still);
+    // The lights placed on the CPU and the array uploaded each frame (--light-motion cpu): what
+    // the GPU's lights-move pass saves ("light-update-cpu-ms").
+    Scenario cpu = base;
+    cpu.settings.technique = "lll";
+    cpu.settings.lightMotion = "cpu";
+    cpu.series = techniqueLabel(cpu.settings) + "/cpu-motion";
+    out.push_back(cpu);
   }
   return out;
 }
