@@ -174,6 +174,42 @@ TEST_F(GltfLoaderTest, MirroringNodesKeepTheirFrontFaces) {
   EXPECT_EQ(reversed.material, scene.meshes[0].primitives[0].material);
 }
 
+// KHR_mesh_quantization (gltfpack's default output): positions and texture coordinates of 8- and
+// 16-bit integers, normalized or not, normals and tangents of normalized signed ones, read as glTF
+// defines them (a normalized signed c is max(c / max, -1)); the same types without the extension,
+// and unsigned normals with it, are refused.
+TEST_F(GltfLoaderTest, QuantizedAttributesWithKhrMeshQuantization) {
+  constexpr int kByte = 5120, kShort = 5122;
+  GltfBuilder b;
+  const int position = b.addAccessor<int16_t>({0, 0, 0, 1000, 0, 0, 1000, -1000, 0}, kShort, "VEC3");
+  const int normal = b.addAccessor<int8_t>({0, 0, 127, 0, -128, 0, 0, 127, 0, 0, 0, 64}, kByte, "VEC3", true);
+  b.doc["accessors"][normal]["count"] = 3;
+  const int tangent = b.addAccessor<int16_t>({32767, 0, 0, 32767, 0, 0, -32767, -32768, 0, 32767, 0, 32767},
+                                             kShort, "VEC4", true);
+  const int uv = b.addAccessor<uint16_t>({0, 0, 2, 0, 0, 3}, kUnsignedShort, "VEC2");
+  b.addMesh(json::array(
+      {{{"attributes",
+         {{"POSITION", position}, {"NORMAL", normal}, {"TANGENT", tangent}, {"TEXCOORD_0", uv}}}}}));
+  b.setScene({b.addNode({{"mesh", 0}, {"scale", {0.001, 0.001, 0.001}}})});
+  expectInputError(b.writeGltf(dir_, "undeclared"), "KHR_mesh_quantization");
+  b.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+  b.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+  const Scene scene = loadGltf(b.writeGltf(dir_, "quantized"));
+  ASSERT_EQ(scene.vertices.size(), 3u);
+  expectVec3Near(scene.vertices[1].position, {1000, 0, 0});
+  expectVec3Near(scene.vertices[2].position, {1000, -1000, 0});
+  expectVec3Near(glm::vec3(scene.instances[0].transform * glm::vec4(scene.vertices[2].position, 1.0f)),
+                 {1, -1, 0});
+  expectVec3Near(scene.vertices[0].normal, {0, 0, 1});
+  expectVec3Near(scene.vertices[1].normal, {0, -1, 0});  // -128 is -1, as -127 is
+  expectVec3Near(scene.vertices[2].normal, {0, 1, 0});
+  EXPECT_EQ(scene.vertices[0].tangent, glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(scene.vertices[1].tangent, glm::vec4(0, 0, -1, -1));
+  EXPECT_EQ(scene.vertices[2].uv, glm::vec2(0, 3));  // not normalized: the integers themselves
+  b.doc["accessors"][normal]["componentType"] = kUnsignedByte;
+  expectInputError(b.writeGltf(dir_, "unsigned-normal"), "NORMAL");
+}
+
 TEST_F(GltfLoaderTest, UsesTheDefaultSceneOnly) {
   GltfBuilder b = quadScene();
   b.addNode({{"mesh", 0}, {"translation", {0, 7, 0}}});
@@ -430,6 +466,23 @@ INSTANTIATE_TEST_SUITE_P(GltfSharedScenes, GltfAssetsTest,
                          ::testing::Values(AssetScene{"camp", 6285}, AssetScene{"cave", 5894},
                                            AssetScene{"garage", 11358}, AssetScene{"space", 15861}),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// assets/cave-quantized is assets/cave through gltfpack 1.3 (KHR_mesh_quantization: 16-bit
+// positions, 8-bit normals, its meshes and identical materials merged): the same triangles and
+// world bounds to within gltfpack's 14-bit position grid.
+TEST(GltfAssets, QuantizedCaveIsTheCave) {
+  LoadReport report;
+  const Scene quantized = loadGltf(LLL_ASSETS_DIR "/cave-quantized/cave.gltf", &report);
+  for (const std::string& warning : report.warnings) ADD_FAILURE() << "unexpected warning: " << warning;
+  const Scene cave = loadGltf(LLL_ASSETS_DIR "/cave/cave.gltf");
+  EXPECT_EQ(quantized.triangleCount(), cave.triangleCount());
+  const Bounds a = quantized.worldBounds(), b = cave.worldBounds();
+  const float step = std::max({b.extent().x, b.extent().y, b.extent().z}) / 16383.0f;
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(a.min[axis], b.min[axis], step) << "axis " << axis;
+    EXPECT_NEAR(a.max[axis], b.max[axis], step) << "axis " << axis;
+  }
+}
 
 TEST(GltfAssets, CaveHasABlendedMaterial) {
   const Scene scene = loadGltf(LLL_ASSETS_DIR "/cave/cave.gltf");

@@ -3,6 +3,7 @@
 // file ends in an InputError that names it, never in an out-of-bounds read.
 #include "scene/gltf_accessors.h"
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <type_traits>
@@ -22,8 +23,22 @@ std::string typeName(int type) {
   return "a matrix type";
 }
 
+bool isSmallInteger(int componentType) {
+  return componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
+         componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+         componentType == TINYGLTF_COMPONENT_TYPE_SHORT ||
+         componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+}
+
 bool componentsAllowed(Components allowed, int componentType, bool normalized) {
+  const bool isFloat = componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
   switch (allowed) {
+    case Components::QuantizedPosition:
+    case Components::QuantizedTexCoord:
+      return isFloat || isSmallInteger(componentType);
+    case Components::QuantizedDirection:
+      return isFloat || (normalized && (componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
+                                        componentType == TINYGLTF_COMPONENT_TYPE_SHORT));
     case Components::Float:
       return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
     case Components::FloatOrNormalizedUnsigned:
@@ -41,11 +56,17 @@ bool componentsAllowed(Components allowed, int componentType, bool normalized) {
 const char* describe(Components allowed) {
   switch (allowed) {
     case Components::Float:
-      return "FLOAT (5126)";
+      return "FLOAT (5126) (integer types need KHR_mesh_quantization in extensionsUsed)";
     case Components::FloatOrNormalizedUnsigned:
       return "FLOAT (5126), or normalized UNSIGNED_BYTE (5121) or UNSIGNED_SHORT (5123)";
     case Components::Index:
       return "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT, not normalized";
+    case Components::QuantizedPosition:
+    case Components::QuantizedTexCoord:
+      return "FLOAT (5126), or BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT (5120 to 5123) with "
+             "KHR_mesh_quantization";
+    case Components::QuantizedDirection:
+      return "FLOAT (5126), or normalized BYTE (5120) or SHORT (5122) with KHR_mesh_quantization";
   }
   return "";
 }
@@ -57,13 +78,18 @@ double loadComponent(const uint8_t* p, bool normalized) {
   if constexpr (std::is_floating_point_v<T>) {
     return value;
   } else {
-    return normalized ? double(value) / double(std::numeric_limits<T>::max()) : double(value);
+    // glTF: a normalized signed integer is max(c / max, -1), so that -128 and -127 are both -1.
+    return normalized ? std::max(double(value) / double(std::numeric_limits<T>::max()), -1.0) : double(value);
   }
 }
 
-// Only called for the unsigned and float component types that componentsAllowed() accepts.
+// Only called for the component types that componentsAllowed() accepts.
 double loadComponent(const uint8_t* p, int componentType, bool normalized) {
   switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+      return loadComponent<int8_t>(p, normalized);
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+      return loadComponent<int16_t>(p, normalized);
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
       return loadComponent<uint8_t>(p, normalized);
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:

@@ -12,15 +12,24 @@
 
 namespace lll::gltf_detail {
 
-// Which component types glTF allows for what we read.
-enum class Components { Float, FloatOrNormalizedUnsigned, Index };
+// Which component types glTF allows for what we read. The Quantized kinds are
+// KHR_mesh_quantization's, for files that use it: positions and texture coordinates of any 8- or
+// 16-bit integer type, normalized or not; normals and tangents of normalized signed ones.
+enum class Components {
+  Float,
+  FloatOrNormalizedUnsigned,
+  Index,
+  QuantizedPosition,
+  QuantizedDirection,
+  QuantizedTexCoord
+};
 
 // Checks that every bufferView lies within its buffer.
 void checkBufferViews(const tinygltf::Model& model, const std::string& file);
 
 // The elements of accessor `index` (sparse values applied), `type` components each, converted to T
-// (normalized integers to 0..1). `what` names the accessor's use in error messages. Instantiated for
-// float and uint32_t.
+// (normalized unsigned integers to 0..1, normalized signed ones to -1..1 as glTF defines). `what` names the
+// accessor's use in error messages. Instantiated for float and uint32_t.
 template <typename T>
 std::vector<T> readAccessor(const tinygltf::Model& model, const std::string& file, int index,
                             const std::string& what, int type, Components allowed);

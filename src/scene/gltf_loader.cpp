@@ -54,7 +54,8 @@ constexpr int kMaxTextureSide = 16384;
 
 // Extensions we implement, and those a file may require that only refine the look when ignored
 // (texture transforms shift UVs, IOR nudges dielectric reflectance). Both get a warning when used.
-const std::set<std::string> kHandledExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+const std::set<std::string> kHandledExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                                  "KHR_mesh_quantization"};
 const std::set<std::string> kIgnorableRequiredExtensions = {"KHR_texture_transform", "KHR_materials_ior"};
 
 std::string inQuotes(const std::string& name) {
@@ -229,7 +230,7 @@ void GltfImporter::checkVersionAndExtensions() {
     if (!kHandledExtensions.contains(extension) && !kIgnorableRequiredExtensions.contains(extension)) {
       fail("requires the glTF extension " + extension +
            ", which this renderer does not support. Re-export the scene without it (for example "
-           "without mesh compression or quantization).");
+           "without mesh compression).");
     }
   }
   std::set<std::string> ignored;
@@ -404,8 +405,13 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
   if (position == primitive.attributes.end()) {
     fail(where + " has no POSITION attribute; every glTF mesh primitive needs one. Re-export the mesh.");
   }
+  // KHR_mesh_quantization: integer attributes, dequantized here (the node's transform usually
+  // scales them back to metres).
+  const bool quantized = std::find(model_.extensionsUsed.begin(), model_.extensionsUsed.end(),
+                                   "KHR_mesh_quantization") != model_.extensionsUsed.end();
   const std::vector<float> positions =
-      readAccessor<float>(position->second, where + " POSITION", TINYGLTF_TYPE_VEC3, Components::Float);
+      readAccessor<float>(position->second, where + " POSITION", TINYGLTF_TYPE_VEC3,
+                          quantized ? Components::QuantizedPosition : Components::Float);
   const size_t vertexCount = positions.size() / 3;
   checkFinite(positions, where + " POSITION");
   std::vector<float> normals;
@@ -413,12 +419,15 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
   std::vector<float> tangents;
   for (const auto& [attribute, accessor] : primitive.attributes) {
     if (attribute == "NORMAL") {
-      normals = readAccessor<float>(accessor, where + " NORMAL", TINYGLTF_TYPE_VEC3, Components::Float);
+      normals = readAccessor<float>(accessor, where + " NORMAL", TINYGLTF_TYPE_VEC3,
+                                    quantized ? Components::QuantizedDirection : Components::Float);
     } else if (attribute == "TANGENT") {
-      tangents = readAccessor<float>(accessor, where + " TANGENT", TINYGLTF_TYPE_VEC4, Components::Float);
+      tangents = readAccessor<float>(accessor, where + " TANGENT", TINYGLTF_TYPE_VEC4,
+                                     quantized ? Components::QuantizedDirection : Components::Float);
     } else if (attribute == "TEXCOORD_0") {
-      uvs = readAccessor<float>(accessor, where + " TEXCOORD_0", TINYGLTF_TYPE_VEC2,
-                                Components::FloatOrNormalizedUnsigned);
+      uvs = readAccessor<float>(
+          accessor, where + " TEXCOORD_0", TINYGLTF_TYPE_VEC2,
+          quantized ? Components::QuantizedTexCoord : Components::FloatOrNormalizedUnsigned);
     } else if (attribute != "POSITION") {
       ignoredAttributes_.insert(attribute);
     }
