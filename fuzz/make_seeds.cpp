@@ -1,7 +1,7 @@
 // Writes the fuzzer's seed corpus into a folder: each test scene of assets/ as a self-contained
-// .glb (its .bin as the binary chunk), and a small lit, textured quad as .glb and as .gltf with its
-// buffer in a data URI, so mutations start from files that load.
-// Usage: make_seeds ASSETS_DIR OUT_DIR
+// .glb (its .bin as the binary chunk; a .glb as it is), and a small lit, textured quad as .glb and as .gltf
+// with its buffer in a data URI, so mutations start from files that load. Usage: make_seeds ASSETS_DIR
+// OUT_DIR
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -164,10 +164,18 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   int written = 0;
   for (const auto& entry : fs::recursive_directory_iterator(assets)) {
+    // Named by folder and file: two folders may hold files of one name (cave/, cave-quantized/).
+    const std::string name =
+        entry.path().parent_path().filename().string() + "-" + entry.path().stem().string();
+    if (entry.path().extension() == ".glb") {
+      fs::copy_file(entry.path(), out / (name + ".glb"), fs::copy_options::overwrite_existing);
+      ++written;
+      continue;
+    }
     if (entry.path().extension() != ".gltf") continue;
     json doc = json::parse(std::ifstream(entry.path()));
     const fs::path bin = entry.path().parent_path() / doc["buffers"][0]["uri"].get<std::string>();
-    writeGlb(out / (entry.path().stem().string() + ".glb"), doc, readBytes(bin));
+    writeGlb(out / (name + ".glb"), doc, readBytes(bin));
     ++written;
   }
   writeQuad(out);
