@@ -484,6 +484,70 @@ TEST(GltfAssets, QuantizedCaveIsTheCave) {
   }
 }
 
+// EXT_meshopt_compression (gltfpack -c): assets/cave-meshopt/cave.glb (gltfpack -cc -vpf: vertex
+// and index codecs, EXPONENTIAL positions, OCTAHEDRAL normals) decodes to the cave's triangles and
+// bounds. The same file as .gltf with its binary chunk beside it (its fallback buffer then a JSON
+// buffer without data, which tinygltf alone refuses) loads to the same vertices and indices, and
+// broken extension values are InputErrors naming them.
+TEST_F(GltfLoaderTest, MeshoptCompressedCave) {
+  const fs::path glb = fs::path(LLL_ASSETS_DIR) / "cave-meshopt" / "cave.glb";
+  LoadReport report;
+  const Scene packed = loadGltf(glb, &report);
+  for (const std::string& warning : report.warnings) ADD_FAILURE() << "unexpected warning: " << warning;
+  const Scene cave = loadGltf(LLL_ASSETS_DIR "/cave/cave.gltf");
+  EXPECT_EQ(packed.triangleCount(), cave.triangleCount());
+  // The EXPONENTIAL filter keeps positions to a shared exponent and a 16-bit mantissa: within the
+  // quantized cave's 14-bit grid of the scene's extent.
+  const Bounds a = packed.worldBounds(), b = cave.worldBounds();
+  const float step = std::max({b.extent().x, b.extent().y, b.extent().z}) / 16383.0f;
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(a.min[axis], b.min[axis], step) << "axis " << axis;
+    EXPECT_NEAR(a.max[axis], b.max[axis], step) << "axis " << axis;
+  }
+
+  std::ifstream in(glb, std::ios::binary);
+  const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  uint32_t jsonLength = 0, binLength = 0;
+  std::memcpy(&jsonLength, bytes.data() + 12, 4);
+  std::memcpy(&binLength, bytes.data() + 20 + jsonLength, 4);
+  const json doc = json::parse(bytes.begin() + 20, bytes.begin() + 20 + jsonLength);
+  writeBytes(dir_ / "cave.bin", bytes.data() + 28 + jsonLength, binLength);
+  const auto written = [&](json d, const std::string& name) {
+    d["buffers"][0]["uri"] = "cave.bin";
+    writeText(dir_ / (name + ".gltf"), d.dump());
+    return dir_ / (name + ".gltf");
+  };
+  const Scene text = loadGltf(written(doc, "cave"));
+  ASSERT_EQ(text.vertices.size(), packed.vertices.size());
+  for (size_t i = 0; i < text.vertices.size(); ++i)
+    ASSERT_EQ(text.vertices[i].position, packed.vertices[i].position) << "vertex " << i;
+  EXPECT_EQ(text.indices, packed.indices);
+
+  // The first compressed attribute view of four bytes a vertex, as a JSON pointer.
+  std::string view;
+  for (size_t i = 0; i < doc["bufferViews"].size() && view.empty(); ++i) {
+    const json& e = doc["bufferViews"][i]["extensions"]["EXT_meshopt_compression"];
+    if (e.value("mode", "") == "ATTRIBUTES" && e.value("byteStride", 0) == 4)
+      view = "/bufferViews/" + std::to_string(i) + "/extensions/EXT_meshopt_compression";
+  }
+  ASSERT_FALSE(view.empty());
+  const json::json_pointer at(view);
+  const auto broken = [&](const std::string& name, const std::string& detail, const auto& edit) {
+    json d = doc;
+    edit(d[at]);
+    expectInputError(written(d, name), detail);
+  };
+  broken("truncated", "does not decode", [](json& e) { e["byteLength"] = e["byteLength"].get<int>() / 2; });
+  broken("mode", "mode 'POINTS'", [](json& e) { e["mode"] = "POINTS"; });
+  broken("stride", "byteStride 6", [](json& e) { e["byteStride"] = 6; });
+  broken("count", "decodes to", [](json& e) { e["count"] = e["count"].get<int>() + 1; });
+  broken("buffer", "names buffer 7", [](json& e) { e["buffer"] = 7; });
+  broken("filter", "filter 'QUATERNION'", [](json& e) { e["filter"] = "QUATERNION"; });
+  broken("nocount", "has no count", [](json& e) { e.erase("count"); });
+  broken("range", "covers bytes", [](json& e) { e["byteOffset"] = 1 << 30; });
+  broken("expansion", "more than meshoptimizer", [](json& e) { e["count"] = 1 << 28; });
+}
+
 TEST(GltfAssets, CaveHasABlendedMaterial) {
   const Scene scene = loadGltf(LLL_ASSETS_DIR "/cave/cave.gltf");
   EXPECT_TRUE(std::any_of(scene.materials.begin(), scene.materials.end(),

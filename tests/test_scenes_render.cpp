@@ -119,18 +119,21 @@ TEST_P(EveryTechniqueEveryScene, SecondFrameGivesTheFirstFramesImage) {
 // up to a pixel (one of the 14,400 pixels, on a crystal's edge against the dark, by 112 of 255).
 TEST(QuantizedAssets, GltfpackCaveRendersAsTheCave) {
   Scene cave = loadScene(SceneRequest{std::string(LLL_ASSETS_DIR) + "/cave/cave.gltf", 64, 3});
-  Scene quantized = loadScene(SceneRequest{std::string(LLL_ASSETS_DIR) + "/cave-quantized/cave.gltf"});
-  quantized.lights = cave.lights;
   RenderSettings settings;
   settings.width = 160;
   settings.height = 90;
   settings.camera = fmt::format("{},{},{},{},{},{}", -1.5, 1.2, 1.5, 0.0, 0.4, -0.8);
-  for (const char* technique : {"forward", "lll"}) {
-    settings.technique = technique;
-    const test::Rendered a = test::render(quantized, settings), b = test::render(cave, settings);
-    test::expectWithinBound(a.ldr, b.ldr, test::ImageBound{45.0, 4, 0.999, 255},
-                            std::string("cave-quantized vs cave, ") + technique);
-    EXPECT_GT(test::shareAboveBlack(b.ldr), 0.2) << technique;
+  // And compressed (EXT_meshopt_compression, gltfpack -cc -vpf: float positions, octahedral normals).
+  for (const char* file : {"cave-quantized/cave.gltf", "cave-meshopt/cave.glb"}) {
+    Scene packed = loadScene(SceneRequest{std::string(LLL_ASSETS_DIR) + "/" + file});
+    packed.lights = cave.lights;
+    for (const char* technique : {"forward", "lll"}) {
+      settings.technique = technique;
+      const test::Rendered a = test::render(packed, settings), b = test::render(cave, settings);
+      test::expectWithinBound(a.ldr, b.ldr, test::ImageBound{45.0, 4, 0.999, 255},
+                              fmt::format("{} vs cave, {}", file, technique));
+      EXPECT_GT(test::shareAboveBlack(b.ldr), 0.2) << technique;
+    }
   }
 }
 

@@ -6,6 +6,7 @@
 // Before the implementation macros: it includes tiny_gltf.h, whose implementation must come once.
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_files.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/gltf_numbers.h"
 #include "scene/gltf_schema.h"
 
@@ -55,7 +56,7 @@ constexpr int kMaxTextureSide = 16384;
 // Extensions we implement, and those a file may require that only refine the look when ignored
 // (texture transforms shift UVs, IOR nudges dielectric reflectance). Both get a warning when used.
 const std::set<std::string> kHandledExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                                  "KHR_mesh_quantization"};
+                                                  "KHR_mesh_quantization", "EXT_meshopt_compression"};
 const std::set<std::string> kIgnorableRequiredExtensions = {"KHR_texture_transform", "KHR_materials_ior"};
 
 std::string inQuotes(const std::string& name) {
@@ -96,6 +97,7 @@ class GltfImporter {
     scene_.name = path_.stem().string();
     parse();
     checkVersionAndExtensions();
+    gltf_detail::decodeMeshoptBufferViews(model_, file_);
     checkBufferViews();
     images_.resize(model_.images.size());
     for (size_t i = 0; i < model_.materials.size(); ++i) {
@@ -196,6 +198,7 @@ void GltfImporter::parse() {
          " levels deep; no valid glTF needs that, so the file is corrupt or not glTF");
   }
   gltf_detail::checkFieldTypes(reinterpret_cast<const char*>(bytes.data() + jsonBegin), jsonSize, file_);
+  bytes = gltf_detail::withMeshoptFallbacksStubbed(bytes, binary);
 
   FileAccess access{std::filesystem::absolute(path_).parent_path().string()};
   tinygltf::TinyGLTF gltf;
