@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 
+#include "gltf_test_support.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_source.h"
 #include "test_support.h"
@@ -134,6 +135,48 @@ TEST(QuantizedAssets, GltfpackCaveRendersAsTheCave) {
                               fmt::format("{} vs cave, {}", file, technique));
       EXPECT_GT(test::shareAboveBlack(b.ldr), 0.2) << technique;
     }
+  }
+}
+
+// A glTF whose material has data textures (normal, metallic-roughness, occlusion: 8-bit UNORM) as
+// well as a colour one renders through the visibility buffer as through the geometry passes. On
+// lavapipe (Mesa 22.3) the surface rebuild's textureLod of such a texture through the texture
+// table crashed the process (LLVM segfault) before those textures were made 16-bit on CPU devices
+// (render/gpu_scene.cpp); the shared assets have no textures, and the built-in scenes only colour.
+TEST(TexturedAssets, DataTexturesRenderThroughTheVisibilityBuffer) {
+  using namespace gltf_test;
+  const fs::path dir =
+      fs::temp_directory_path() / ("lll-data-textures-" + std::to_string(std::random_device{}()));
+  fs::create_directories(dir);
+  GltfBuilder b = quadScene();
+  writeBytes(dir / "checker.png", kPng2x2.data(), kPng2x2.size());
+  b.doc["images"] = json::array({{{"uri", "checker.png"}}});
+  b.doc["samplers"] = json::array({json::object()});
+  b.doc["textures"] = json::array({{{"source", 0}, {"sampler", 0}}});
+  b.doc["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}},
+                                                   {"metallicRoughnessTexture", {{"index", 0}}}};
+  b.doc["materials"][0]["normalTexture"] = {{"index", 0}};
+  b.doc["materials"][0]["occlusionTexture"] = {{"index", 0}};
+  Scene scene = loadGltf(b.writeGltf(dir, "textured"));
+  fs::remove_all(dir);
+  Light light;
+  light.position = glm::vec3(0.5f, 0.6f, 1.2f);
+  light.intensity = 3.0f;
+  light.range = 5.0f;
+  scene.lights.push_back(light);
+  RenderSettings settings;
+  settings.width = 64;
+  settings.height = 48;
+  settings.camera = "0.5,0.5,0.85,0.5,0.5,0";  // the quad fills the view
+  for (const char* technique : {"forward", "lll", "deferred"}) {
+    settings.technique = technique;
+    settings.surfaces = "visibility";
+    const test::Rendered visibility = test::render(scene, settings);
+    settings.surfaces = "gbuffer";
+    const test::Rendered gbuffer = test::render(scene, settings);
+    test::expectWithinBound(visibility.ldr, gbuffer.ldr, test::kSameImage,
+                            std::string("data textures, visibility vs gbuffer, ") + technique);
+    EXPECT_GT(test::shareAboveBlack(visibility.ldr), 0.5) << technique;
   }
 }
 

@@ -55,12 +55,26 @@ uint32_t mipLevelsFor(uint32_t width, uint32_t height) {
 
 // Uploads RGBA8 pixels and fills the mip chain by successive linear blits.
 Image makeTexture(Context& context, const Texture& texture) {
-  const VkFormat format = texture.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+  // lavapipe (Mesa 22.3) crashes in LLVM compiling textureLod of an 8-bit UNORM texture through a
+  // sampler array indexed at run time (the visibility path's table, common/visibility_surface.glsl;
+  // any glTF with a normal or metallic-roughness map): on a CPU device those textures are 16-bit
+  // UNORM, each 8-bit value v stored as 257 v, the same number.
+  const bool wide = !texture.srgb && context.isCpuDevice();
+  const VkFormat format = texture.srgb ? VK_FORMAT_R8G8B8A8_SRGB
+                          : wide       ? VK_FORMAT_R16G16B16A16_UNORM
+                                       : VK_FORMAT_R8G8B8A8_UNORM;
+  std::vector<uint16_t> widened;
+  if (wide) {
+    widened.reserve(texture.rgba.size());
+    for (uint8_t v : texture.rgba) widened.push_back(uint16_t(v * 257u));
+  }
+  const void* texels = wide ? static_cast<const void*>(widened.data()) : texture.rgba.data();
+  const size_t bytes = wide ? widened.size() * sizeof(uint16_t) : texture.rgba.size();
   const uint32_t levels = mipLevelsFor(texture.width, texture.height);
   Image image(context, texture.width, texture.height, format,
               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
               texture.name, levels);
-  uploadImage(context, image, texture.rgba.data(), texture.rgba.size(), [&](VkCommandBuffer cmd) {
+  uploadImage(context, image, texels, bytes, [&](VkCommandBuffer cmd) {
     int32_t w = int32_t(texture.width), h = int32_t(texture.height);
     for (uint32_t level = 1; level < levels; ++level) {
       VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
