@@ -210,6 +210,50 @@ TEST_F(GltfLoaderTest, QuantizedAttributesWithKhrMeshQuantization) {
   expectInputError(b.writeGltf(dir_, "unsigned-normal"), "NORMAL");
 }
 
+// KHR_texture_transform on a material's textures: offset, rotation and scale read per texture
+// (the identity where a texture has none), a texCoord in it counted like the texture's own, and
+// values of the wrong shape or not finite as 32-bit floats refused naming the texture.
+TEST_F(GltfLoaderTest, TextureTransformsAreRead) {
+  GltfBuilder b = quadScene();
+  writeBytes(dir_ / "checker.png", kPng2x2.data(), kPng2x2.size());
+  b.doc["images"] = json::array({{{"uri", "checker.png"}}});
+  b.doc["textures"] = json::array({{{"source", 0}}});
+  const json transform = {{"offset", {0.5, -0.25}}, {"rotation", 1.5}, {"scale", {2, 3}}};
+  b.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {
+      {"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}};
+  b.doc["materials"][0]["normalTexture"] = {
+      {"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {-1, 1}}}}}}};
+  b.doc["materials"][0]["emissiveTexture"] = {{"index", 0}};
+  b.doc["extensionsUsed"] = {"KHR_texture_transform"};
+  LoadReport report;
+  const Scene scene = loadGltf(b.writeGltf(dir_, "transformed"), &report);
+  ASSERT_EQ(scene.materials.size(), 1u);
+  const Material& m = scene.materials[0];
+  EXPECT_EQ(m.transforms[kBaseColorSlot].offset, glm::vec2(0.5f, -0.25f));
+  EXPECT_EQ(m.transforms[kBaseColorSlot].rotation, 1.5f);
+  EXPECT_EQ(m.transforms[kBaseColorSlot].scale, glm::vec2(2.0f, 3.0f));
+  EXPECT_EQ(m.transforms[kNormalSlot].scale, glm::vec2(-1.0f, 1.0f));
+  EXPECT_TRUE(m.transforms[kEmissiveSlot].identity());
+  EXPECT_TRUE(m.transforms[kMetallicRoughnessSlot].identity());
+  EXPECT_FALSE(anyWarningContains(report, "KHR_texture_transform"));
+  EXPECT_FALSE(anyWarningContains(report, "texCoord"));
+
+  json& extension = b.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]
+                         ["KHR_texture_transform"];
+  extension["texCoord"] = 1;
+  LoadReport other;
+  loadGltf(b.writeGltf(dir_, "texcoord"), &other);
+  EXPECT_TRUE(anyWarningContains(other, "texCoord"));
+  extension.erase("texCoord");
+  extension["offset"] = {1};
+  expectInputError(b.writeGltf(dir_, "short"), "KHR_texture_transform's offset is not two numbers");
+  extension["offset"] = {0, 1e39};
+  expectInputError(b.writeGltf(dir_, "huge"), "offset[1]");
+  extension["offset"] = {0, 0};
+  extension["rotation"] = "quarter";
+  expectInputError(b.writeGltf(dir_, "rotation"), "rotation");
+}
+
 TEST_F(GltfLoaderTest, UsesTheDefaultSceneOnly) {
   GltfBuilder b = quadScene();
   b.addNode({{"mesh", 0}, {"translation", {0, 7, 0}}});

@@ -12,19 +12,22 @@ layout(set = 1, binding = 3) uniform sampler2D emissiveTexture;
 layout(set = 1, binding = 4) uniform sampler2D occlusionTexture;
 
 float materialAlpha(GpuMaterial m, vec2 uv) {
-  return m.baseColorFactor.a * texture(baseColorTexture, uv).a;
+  return m.baseColorFactor.a * texture(baseColorTexture, textureCoordinates(m, 0u, uv)).a;
 }
 
 // Derivatives and implicit-LOD samples are taken first, before any branch: both are undefined in
-// control flow that differs across a 2x2 quad.
+// control flow that differs across a 2x2 quad (and the texture transforms are applied without
+// one: common/texture_transform.glsl). The derivative tangent frame follows the normal texture's
+// coordinates (KHR_texture_transform turns its u and v with it).
 Surface sampleSurface(GpuMaterial m, vec3 position, vec3 normal, vec4 tangent, vec2 uv, bool frontFacing) {
-  SurfaceDerivatives d = SurfaceDerivatives(dFdx(position), dFdy(position), dFdx(uv), dFdy(uv));
+  vec2 normalUv = textureCoordinates(m, 2u, uv);
+  SurfaceDerivatives d = SurfaceDerivatives(dFdx(position), dFdy(position), dFdx(normalUv), dFdy(normalUv));
   MaterialSamples t;
-  t.baseColor = texture(baseColorTexture, uv);
-  t.metallicRoughness = texture(metallicRoughnessTexture, uv);
-  t.normal = texture(normalTexture, uv).xyz;
-  t.emissive = texture(emissiveTexture, uv).rgb;
-  t.occlusion = texture(occlusionTexture, uv).r;
+  t.baseColor = texture(baseColorTexture, textureCoordinates(m, 0u, uv));
+  t.metallicRoughness = texture(metallicRoughnessTexture, textureCoordinates(m, 1u, uv));
+  t.normal = texture(normalTexture, normalUv).xyz;
+  t.emissive = texture(emissiveTexture, textureCoordinates(m, 3u, uv)).rgb;
+  t.occlusion = texture(occlusionTexture, textureCoordinates(m, 4u, uv)).r;
   return assembleSurface(m, t, position, normal, tangent, d, frontFacing);
 }
 

@@ -8,6 +8,7 @@
 #include "common/brdf.glsl"
 #include "common/frame.glsl"
 #include "common/sun_shadow.glsl"
+#include "common/texture_transform.glsl"
 
 // Screen-space derivatives of the surface at a pixel (position and texture coordinates, per pixel
 // right and down).

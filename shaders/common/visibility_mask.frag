@@ -1,6 +1,7 @@
 #version 460
 // The visibility pass's id for alpha-masked primitives, where the material's alpha passes.
 #include "common/frame.glsl"
+#include "common/texture_transform.glsl"
 
 layout(constant_id = 20) const uint kTriangleBits = 16u;
 
@@ -16,6 +17,6 @@ layout(location = 0) out uint outId;
 
 void main() {
   GpuMaterial m = materials[visibility.ids.y];
-  if (m.baseColorFactor.a * texture(baseColorTexture, inUv).a < m.alpha.x) discard;
+  if (m.baseColorFactor.a * texture(baseColorTexture, textureCoordinates(m, 0u, inUv)).a < m.alpha.x) discard;
   outId = (inRecord << kTriangleBits) | uint(gl_PrimitiveID);
 }

@@ -147,13 +147,25 @@ vec4 sampleTextureTable(uint index, vec2 uv, SurfaceDerivatives d) {
   return textureLod(TEXTURE_TABLE(index), uv, lod);
 }
 
+// Texture `slot` of material `m` (texture table entry `index`) at the surface's TEXCOORD_0 `uv`,
+// through its KHR_texture_transform (explicit gradients: the test of the material's flag costs no
+// helper invocation here).
+vec4 sampleMaterialTexture(GpuMaterial m, uint slot, uint index, vec2 uv, SurfaceDerivatives d) {
+  if (hasTextureTransform(m)) {
+    uv = textureCoordinates(m, slot, uv);
+    d.duvx = textureCoordinatesDerivative(m, slot, d.duvx);
+    d.duvy = textureCoordinatesDerivative(m, slot, d.duvy);
+  }
+  return sampleTextureTable(index, uv, d);
+}
+
 // The five textures of material `m` at the surface.
 void sampleMaterial(GpuMaterial m, vec2 uv, SurfaceDerivatives d, inout MaterialSamples t) {
-  t.baseColor = sampleTextureTable(m.textures.x, uv, d);
-  t.metallicRoughness = sampleTextureTable(m.textures.y, uv, d);
-  t.normal = sampleTextureTable(m.textures.z, uv, d).xyz;
-  t.emissive = sampleTextureTable(m.textures.w, uv, d).rgb;
-  t.occlusion = sampleTextureTable(m.flags.w, uv, d).r;
+  t.baseColor = sampleMaterialTexture(m, 0u, m.textures.x, uv, d);
+  t.metallicRoughness = sampleMaterialTexture(m, 1u, m.textures.y, uv, d);
+  t.normal = sampleMaterialTexture(m, 2u, m.textures.z, uv, d).xyz;
+  t.emissive = sampleMaterialTexture(m, 3u, m.textures.w, uv, d).rgb;
+  t.occlusion = sampleMaterialTexture(m, 4u, m.flags.w, uv, d).r;
 }
 
 // The surface at `pixel`, or false where the visibility pass drew nothing (or `inside` is false:
@@ -210,6 +222,11 @@ bool rebuildSurface(uvec2 pixel, bool inside, out Surface s, out float viewDepth
     }
   }
 #endif
+  // The derivative tangent frame follows the normal texture's coordinates (material.glsl).
+  if (hasTextureTransform(m)) {
+    d.duvx = textureCoordinatesDerivative(m, 2u, d.duvx);
+    d.duvy = textureCoordinatesDerivative(m, 2u, d.duvy);
+  }
   s = assembleSurface(m, t, g.position, g.normal, g.tangent, d, g.frontFacing);
   return covered;
 }

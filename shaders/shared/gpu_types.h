@@ -58,12 +58,17 @@ struct GpuMaterial {
   vec4 baseColorFactor;
   vec4 emissive;   // rgb emissive factor * KHR_materials_emissive_strength, w unused
   vec4 params;     // x metallic, y roughness, z normal scale, w occlusion strength
-  uvec4 flags;     // x alpha mode, y double sided, z kMaterial*Texture bits, w occlusion texture
+  uvec4 flags;     // x alpha mode, y double sided, z kMaterial* bits, w occlusion texture
   vec4 alpha;      // x alpha cutoff, yzw unused
   uvec4 textures;  // in GpuScene's texture table (the visibility path): x base colour,
                    // y metallic-roughness, z normal, w emissive; flags.w the occlusion texture
+  // KHR_texture_transform per texture (base colour, metallic-roughness, normal, emissive,
+  // occlusion), read where flags.z has kMaterialTextureTransform: uv' = mat2(m.xy, m.zw) uv +
+  // offset, the offsets two to a vec4 (texture 2i in xy, 2i + 1 in zw).
+  vec4 uvMatrix[5];
+  vec4 uvOffset[3];
 };
-LLL_CHECK_SIZE(GpuMaterial, 96);
+LLL_CHECK_SIZE(GpuMaterial, 96 + 8 * 16);
 
 // One placed copy of a mesh (a glTF node), read by the mesh vertex shader through the frame's draw
 // order: a draw of a primitive covers every visible instance of its mesh.

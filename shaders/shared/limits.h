@@ -43,6 +43,8 @@ LLL_CONST(uint, kAlphaBlend, 2u);
 LLL_CONST(uint, kNoSurface, 0xFFFFFFFFu);
 // GpuMaterial.flags.z bits: which of the material's textures the file gave.
 LLL_CONST(uint, kMaterialNormalTexture, 1u);
+// GpuMaterial.flags.z: some texture of the material has a KHR_texture_transform.
+LLL_CONST(uint, kMaterialTextureTransform, 256u);
 
 // FrameUniforms.display.x: how the tonemap pass treats the HDR image.
 LLL_CONST(uint, kDisplayFilmic, 0u);

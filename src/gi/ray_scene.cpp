@@ -28,7 +28,7 @@ struct RayScene::State {
     if (m.baseColorTexture >= 0) {
       const glm::vec2* c = &cornerUv[3 * size_t(triangle)];
       alpha *= sampleTexture(scene->textures[size_t(m.baseColorTexture)],
-                             (1.0f - u - v) * c[0] + u * c[1] + v * c[2])
+                             m.transforms[kBaseColorSlot].apply((1.0f - u - v) * c[0] + u * c[1] + v * c[2]))
                    .a;
     }
     return alpha;
@@ -215,15 +215,18 @@ MaterialSample RayScene::materialAt(const RayHit& hit) const {
   MaterialSample r;
   r.baseColor = m.baseColorFactor;
   if (m.baseColorTexture >= 0)
-    r.baseColor *= sampleTexture(scene.textures[size_t(m.baseColorTexture)], hit.uv);
+    r.baseColor *=
+        sampleTexture(scene.textures[size_t(m.baseColorTexture)], m.transforms[kBaseColorSlot].apply(hit.uv));
   glm::vec4 metallicRoughness(1.0f);
   if (m.metallicRoughnessTexture >= 0)
-    metallicRoughness = sampleTexture(scene.textures[size_t(m.metallicRoughnessTexture)], hit.uv);
+    metallicRoughness = sampleTexture(scene.textures[size_t(m.metallicRoughnessTexture)],
+                                      m.transforms[kMetallicRoughnessSlot].apply(hit.uv));
   r.metallic = glm::clamp(m.metallic * metallicRoughness.b, 0.0f, 1.0f);
   r.roughness = glm::clamp(m.roughness * metallicRoughness.g, 0.0f, 1.0f);
   r.emissive = m.emissiveFactor * m.emissiveStrength;
   if (m.emissiveTexture >= 0)
-    r.emissive *= glm::vec3(sampleTexture(scene.textures[size_t(m.emissiveTexture)], hit.uv));
+    r.emissive *= glm::vec3(
+        sampleTexture(scene.textures[size_t(m.emissiveTexture)], m.transforms[kEmissiveSlot].apply(hit.uv)));
   return r;
 }
 
@@ -231,10 +234,13 @@ SurfaceResponse RayScene::surfaceAt(const RayHit& hit) const {
   const Material& m = state_->scene->materials[hit.material];
   glm::vec4 base = m.baseColorFactor;
   if (m.baseColorTexture >= 0)
-    base *= sampleTexture(state_->scene->textures[size_t(m.baseColorTexture)], hit.uv);
+    base *= sampleTexture(state_->scene->textures[size_t(m.baseColorTexture)],
+                          m.transforms[kBaseColorSlot].apply(hit.uv));
   float metallic = m.metallic;
   if (m.metallicRoughnessTexture >= 0)
-    metallic *= sampleTexture(state_->scene->textures[size_t(m.metallicRoughnessTexture)], hit.uv).b;
+    metallic *= sampleTexture(state_->scene->textures[size_t(m.metallicRoughnessTexture)],
+                              m.transforms[kMetallicRoughnessSlot].apply(hit.uv))
+                    .b;
   SurfaceResponse r;
   r.albedo = glm::clamp(glm::vec3(base) * (1.0f - glm::clamp(metallic, 0.0f, 1.0f)), 0.0f, 1.0f);
   r.coverage = m.alphaMode == AlphaMode::Blend ? glm::clamp(base.a, 0.0f, 1.0f) : 1.0f;

@@ -222,7 +222,15 @@ void GpuScene::uploadMaterials() {
     g.baseColorFactor = m.baseColorFactor;
     g.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
     g.params = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
-    const uint32_t textures = m.normalTexture >= 0 ? gpu::kMaterialNormalTexture : 0u;
+    uint32_t textures = m.normalTexture >= 0 ? gpu::kMaterialNormalTexture : 0u;
+    for (uint32_t slot = 0; slot < kTextureSlots; ++slot) {
+      const TextureTransform& t = m.transforms[slot];
+      if (!t.identity()) textures |= gpu::kMaterialTextureTransform;
+      const glm::mat2 linear = t.linear();
+      g.uvMatrix[slot] = glm::vec4(linear[0], linear[1]);
+      g.uvOffset[slot / 2][2 * (slot % 2)] = t.offset.x;
+      g.uvOffset[slot / 2][2 * (slot % 2) + 1] = t.offset.y;
+    }
     const TextureSlots slots = textureSlots(m);
     g.flags = glm::uvec4(uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, textures, slots[4]);
     g.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);

@@ -56,8 +56,9 @@ constexpr int kMaxTextureSide = 16384;
 // Extensions we implement, and those a file may require that only refine the look when ignored
 // (texture transforms shift UVs, IOR nudges dielectric reflectance). Both get a warning when used.
 const std::set<std::string> kHandledExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                                  "KHR_mesh_quantization", "EXT_meshopt_compression"};
-const std::set<std::string> kIgnorableRequiredExtensions = {"KHR_texture_transform", "KHR_materials_ior"};
+                                                  "KHR_mesh_quantization", "EXT_meshopt_compression",
+                                                  "KHR_texture_transform"};
+const std::set<std::string> kIgnorableRequiredExtensions = {"KHR_materials_ior"};
 
 std::string inQuotes(const std::string& name) {
   return "'" + name + "'";
@@ -138,6 +139,7 @@ class GltfImporter {
   }
 
   Material convertMaterial(const tinygltf::Material& in, int index);
+  TextureTransform textureTransform(const tinygltf::ExtensionMap& extensions, const std::string& what);
   template <typename Info>
   int textureFor(const Info& info, bool srgb, const std::string& material, const char* slot);
   const DecodedImage& decodeImage(int index);
@@ -292,7 +294,41 @@ Material GltfImporter::convertMaterial(const tinygltf::Material& in, int index) 
   out.normalTexture = textureFor(in.normalTexture, false, out.name, "normal");
   out.occlusionTexture = textureFor(in.occlusionTexture, false, out.name, "occlusion");
   out.emissiveTexture = textureFor(in.emissiveTexture, true, out.name, "emissive");
+  out.transforms[kBaseColorSlot] = textureTransform(pbr.baseColorTexture.extensions, name + " base colour");
+  out.transforms[kMetallicRoughnessSlot] =
+      textureTransform(pbr.metallicRoughnessTexture.extensions, name + " metallic-roughness");
+  out.transforms[kNormalSlot] = textureTransform(in.normalTexture.extensions, name + " normal");
+  out.transforms[kEmissiveSlot] = textureTransform(in.emissiveTexture.extensions, name + " emissive");
+  out.transforms[kOcclusionSlot] = textureTransform(in.occlusionTexture.extensions, name + " occlusion");
   return out;
+}
+
+// A texture's KHR_texture_transform (identity without one); `what` names the texture.
+TextureTransform GltfImporter::textureTransform(const tinygltf::ExtensionMap& extensions,
+                                                const std::string& what) {
+  TextureTransform t;
+  const auto found = extensions.find("KHR_texture_transform");
+  if (found == extensions.end()) return t;
+  const tinygltf::Value& e = found->second;
+  const std::string name = what + " texture's KHR_texture_transform";
+  const auto pair = [&](const char* field, glm::vec2 fallback) {
+    if (!e.Has(field)) return fallback;
+    const tinygltf::Value& v = e.Get(field);
+    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+      fail(name + "'s " + field + " is not two numbers");
+    return glm::vec2(numbers_.finite(v.Get(0).GetNumberAsDouble(), name + " " + field + "[0]"),
+                     numbers_.finite(v.Get(1).GetNumberAsDouble(), name + " " + field + "[1]"));
+  };
+  t.offset = pair("offset", glm::vec2(0.0f));
+  t.scale = pair("scale", glm::vec2(1.0f));
+  if (e.Has("rotation")) {
+    if (!e.Get("rotation").IsNumber()) fail(name + " has a rotation that is not a number");
+    t.rotation = numbers_.finite(e.Get("rotation").GetNumberAsDouble(), name + " rotation");
+  }
+  // Its texCoord replaces the texture's own; only TEXCOORD_0 is read (warned about at the end).
+  if (e.Has("texCoord") && !(e.Get("texCoord").IsNumber() && e.Get("texCoord").GetNumberAsInt() == 0))
+    usesOtherTexCoords_ = true;
+  return t;
 }
 
 template <typename Info>

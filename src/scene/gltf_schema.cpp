@@ -84,10 +84,16 @@ bool hasKind(const json& v, Kind kind) {
 }
 
 // glTF 2.0's schema, for the fields the loader reads (and the indices tinygltf follows).
+const Fields kTextureTransform = {{"offset", Kind::Numbers},
+                                  {"rotation", Kind::Number},
+                                  {"scale", Kind::Numbers},
+                                  {"texCoord", Kind::Integer}};
+const Fields kTextureInfoExtensions = {{"KHR_texture_transform", Kind::Object, &kTextureTransform}};
 const Fields kTextureInfo = {{"index", Kind::Integer},
                              {"texCoord", Kind::Integer},
                              {"scale", Kind::Number},
-                             {"strength", Kind::Number}};
+                             {"strength", Kind::Number},
+                             {"extensions", Kind::Object, &kTextureInfoExtensions}};
 const Fields kPbr = {{"baseColorFactor", Kind::Numbers},
                      {"metallicFactor", Kind::Number},
                      {"roughnessFactor", Kind::Number},

@@ -3,6 +3,8 @@
 // instances placing meshes in the world (the glTF node hierarchy already flattened), materials,
 // textures, punctual lights and named cameras. Loaders (glTF, built-in scenes) fill it; the GPU
 // layer uploads it; techniques only read it.
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
@@ -33,6 +35,32 @@ struct Texture {
   bool srgb = false;
 };
 
+// KHR_texture_transform of one of a material's textures: the texture is sampled at
+// offset + rotate(rotation) (scale * uv), glTF's Translation x Rotation x Scale, the rotation
+// (radians) turning u towards -v, as the extension defines it.
+struct TextureTransform {
+  glm::vec2 offset{0.0f};
+  float rotation = 0.0f;
+  glm::vec2 scale{1.0f};
+  bool identity() const { return offset == glm::vec2(0.0f) && rotation == 0.0f && scale == glm::vec2(1.0f); }
+  // The 2x2 part as glm's column-major matrix: uv' = linear() * uv + offset.
+  glm::mat2 linear() const {
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    return glm::mat2(glm::vec2(c * scale.x, -s * scale.x), glm::vec2(s * scale.y, c * scale.y));
+  }
+  glm::vec2 apply(glm::vec2 uv) const { return linear() * uv + offset; }
+};
+
+// A material's texture slots, in the order of Material::transforms and GpuMaterial's arrays.
+enum TextureSlot : uint32_t {
+  kBaseColorSlot = 0,
+  kMetallicRoughnessSlot,
+  kNormalSlot,
+  kEmissiveSlot,
+  kOcclusionSlot,
+  kTextureSlots
+};
+
 struct Material {
   std::string name;
   glm::vec4 baseColorFactor{1.0f};
@@ -51,6 +79,8 @@ struct Material {
   int normalTexture = -1;
   int emissiveTexture = -1;
   int occlusionTexture = -1;
+  // KHR_texture_transform of each slot (TextureSlot order).
+  std::array<TextureTransform, kTextureSlots> transforms{};
 };
 
 // A contiguous run of triangles with one material. vertexOffset is added to every index.

@@ -1,0 +1,30 @@
+// KHR_texture_transform: where a material's texture `slot` (0 base colour, 1 metallic-roughness,
+// 2 normal, 3 emissive, 4 occlusion) is sampled for the mesh's TEXCOORD_0 `uv`, and how its
+// derivatives turn with it. GpuMaterial (shared/gpu_types.h) holds the transforms, the identity
+// for a texture without one, so a fragment shader applies them unconditionally: inside a branch,
+// even one every fragment of the draw takes, lavapipe leaves the helper invocations of a 2x2 quad
+// out, and a texture's implicit level of detail at a triangle's edge then comes from garbage.
+#ifndef LLL_TEXTURE_TRANSFORM_GLSL
+#define LLL_TEXTURE_TRANSFORM_GLSL
+#include "shared/gpu_types.h"
+
+// Whether material `m` has a texture transform other than the identity (kMaterialTextureTransform).
+bool hasTextureTransform(GpuMaterial m) {
+  return (m.flags.z & kMaterialTextureTransform) != 0u;
+}
+
+mat2 textureTransformLinear(GpuMaterial m, uint slot) {
+  return mat2(m.uvMatrix[slot].xy, m.uvMatrix[slot].zw);
+}
+
+vec2 textureCoordinates(GpuMaterial m, uint slot, vec2 uv) {
+  vec4 offsets = m.uvOffset[slot >> 1];
+  return textureTransformLinear(m, slot) * uv + ((slot & 1u) == 0u ? offsets.xy : offsets.zw);
+}
+
+// A derivative of uv (per pixel right or down) as one of textureCoordinates(m, slot, uv).
+vec2 textureCoordinatesDerivative(GpuMaterial m, uint slot, vec2 duv) {
+  return textureTransformLinear(m, slot) * duv;
+}
+
+#endif

@@ -1,0 +1,201 @@
+// KHR_texture_transform (scene.h's TextureTransform, shaders/common/texture_transform.glsl): a
+// material whose five textures share a transform (offset, rotation, scale) draws exactly what the
+// same material draws with the transform baked into the mesh's UVs, through every way a surface
+// is built: fragment shading (forward and lll on the geometry passes), the visibility buffer's
+// compute rebuild (hardware and compute rasterizer), deferred's G-buffer, glass, and an
+// alpha-masked material's coverage (the masked depth and visibility passes). And the transform
+// matters: without it the image is another.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "lighting/technique.h"
+#include "test_support.h"
+
+namespace lll {
+namespace {
+
+// A `size` x `size` RGBA texture whose texels come from `texel(x, y)`.
+template <typename F>
+Texture makeTexture(const std::string& name, uint32_t size, bool srgb, F texel) {
+  Texture t;
+  t.name = name;
+  t.width = t.height = size;
+  t.srgb = srgb;
+  for (uint32_t y = 0; y < size; ++y)
+    for (uint32_t x = 0; x < size; ++x) {
+      const glm::u8vec4 c = texel(x, y);
+      t.rgba.insert(t.rgba.end(), {c.r, c.g, c.b, c.a});
+    }
+  return t;
+}
+
+// A quad from `origin` along `u` and `v` (its normal u x v), UVs from `uv0` over `uvSize`, with
+// the tangent along u.
+void addQuad(Scene& scene, uint32_t material, glm::vec3 origin, glm::vec3 u, glm::vec3 v, glm::vec2 uv0,
+             glm::vec2 uvSize, const TextureTransform& bake) {
+  const uint32_t first = uint32_t(scene.vertices.size());
+  const glm::vec3 n = glm::normalize(glm::cross(u, v));
+  for (const glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)}) {
+    Vertex vertex;
+    vertex.position = origin + c.x * u + c.y * v;
+    vertex.normal = n;
+    vertex.uv = bake.apply(uv0 + c * uvSize);
+    vertex.tangent = glm::vec4(glm::normalize(u), 1.0f);
+    scene.vertices.push_back(vertex);
+  }
+  Mesh mesh;
+  mesh.name = "quad";
+  mesh.primitives.push_back({uint32_t(scene.indices.size()), 6, first, material});
+  scene.indices.insert(scene.indices.end(), {0, 1, 2, 0, 2, 3});
+  scene.meshes.push_back(mesh);
+  scene.instances.push_back({uint32_t(scene.meshes.size() - 1), glm::mat4(1.0f)});
+}
+
+// Textured, masked and glass quads over a floor. `transformed`: the materials carry the
+// transforms; otherwise they are baked into the UVs.
+Scene transformScene(bool transformed) {
+  Scene scene;
+  scene.name = transformed ? "transformed" : "baked";
+  const auto pattern = [](uint32_t x, uint32_t y) {
+    return glm::u8vec4(40 + 13 * x, 60 + 11 * y, ((x ^ y) & 1) ? 220 : 50, 255);
+  };
+  scene.textures.push_back(makeTexture("colour", 16, true, pattern));
+  scene.textures.push_back(makeTexture("normal", 16, false, [](uint32_t x, uint32_t y) {
+    return glm::u8vec4(128 + 90 * std::sin(0.8f * float(x)), 128 + 90 * std::cos(0.6f * float(y)), 200, 255);
+  }));
+  scene.textures.push_back(makeTexture("metallic-roughness", 16, false, [](uint32_t x, uint32_t y) {
+    return glm::u8vec4(0, 40 + 12 * x, 15 * y, 255);
+  }));
+  scene.textures.push_back(makeTexture("emissive", 16, true, [](uint32_t x, uint32_t y) {
+    return glm::u8vec4((x + y) % 5 == 0 ? 255 : 0, 0, 0, 255);
+  }));
+  scene.textures.push_back(makeTexture("mask", 16, true, [](uint32_t x, uint32_t y) {
+    return glm::u8vec4(200, 120, 60, ((x / 4 + y / 4) & 1) ? 255 : 0);
+  }));
+
+  TextureTransform all;
+  all.offset = glm::vec2(0.3f, -0.15f);
+  all.rotation = 0.6f;
+  all.scale = glm::vec2(1.7f, 0.8f);
+  TextureTransform mask;
+  mask.offset = glm::vec2(0.1f, 0.4f);
+  mask.rotation = -1.1f;
+  mask.scale = glm::vec2(2.5f, 2.5f);
+
+  Material floor;
+  floor.metallic = 0.0f;
+  floor.roughness = 0.7f;
+  Material textured;
+  textured.baseColorTexture = 0;
+  textured.normalTexture = 1;
+  textured.metallicRoughnessTexture = 2;
+  textured.emissiveTexture = 3;
+  textured.occlusionTexture = 2;
+  textured.emissiveFactor = glm::vec3(0.6f);
+  textured.roughness = 0.8f;
+  Material masked;
+  masked.baseColorTexture = 4;
+  masked.alphaMode = AlphaMode::Mask;
+  masked.doubleSided = true;
+  masked.metallic = 0.0f;
+  Material glass = textured;
+  glass.baseColorFactor.a = 0.5f;
+  glass.alphaMode = AlphaMode::Blend;
+  if (transformed) {
+    textured.transforms.fill(all);
+    glass.transforms.fill(all);
+    masked.transforms[kBaseColorSlot] = mask;
+  }
+  scene.materials = {floor, textured, masked, glass};
+  const TextureTransform none;
+  addQuad(scene, 0, glm::vec3(-4, 0, 4), glm::vec3(8, 0, 0), glm::vec3(0, 0, -8), glm::vec2(0), glm::vec2(1),
+          none);
+  addQuad(scene, 1, glm::vec3(-2.2f, 0.1f, -0.5f), glm::vec3(2, 0, 0.3f), glm::vec3(0, 2, 0), glm::vec2(0.1f),
+          glm::vec2(1.3f), transformed ? none : all);
+  addQuad(scene, 2, glm::vec3(0.3f, 0.1f, 0.2f), glm::vec3(1.8f, 0, -0.4f), glm::vec3(0, 1.8f, 0),
+          glm::vec2(-0.2f, 0.3f), glm::vec2(1.0f), transformed ? none : mask);
+  addQuad(scene, 3, glm::vec3(-1.0f, 0.2f, 1.2f), glm::vec3(2.2f, 0, 0), glm::vec3(0, 1.2f, 0.2f),
+          glm::vec2(0.5f), glm::vec2(0.8f), transformed ? none : all);
+  for (int i = 0; i < 3; ++i) {
+    Light light;
+    light.position = glm::vec3(-2.5f + 2.5f * float(i), 2.4f, 2.0f);
+    light.color = glm::vec3(i == 0, i == 1, i == 2) * 0.6f + 0.4f;
+    light.intensity = 8.0f;
+    light.range = 9.0f;
+    scene.lights.push_back(light);
+  }
+  Camera camera;
+  camera.name = "view";
+  camera.eye = glm::vec3(0.4f, 1.8f, 4.5f);
+  camera.target = glm::vec3(-0.2f, 0.9f, 0.0f);
+  scene.cameras.push_back(camera);
+  return scene;
+}
+
+TEST(TextureTransform, DrawsWhatTheTransformBakedIntoTheUvsDraws) {
+  const Scene transformed = transformScene(true), baked = transformScene(false);
+  struct Path {
+    const char* name;
+    const char* technique;
+    const char* surfaces;
+    const char* raster;
+  };
+  for (const Path& p : {Path{"forward", "forward", "gbuffer", "hardware"},
+                        Path{"forward visibility", "forward", "visibility", "hardware"},
+                        Path{"lll visibility", "lll", "visibility", "hardware"},
+                        Path{"lll compute raster", "lll", "visibility", "compute"},
+                        Path{"lll fragment", "lll", "gbuffer", "hardware"},
+                        Path{"deferred", "deferred", "visibility", "hardware"},
+                        Path{"tiled", "tiled", "visibility", "hardware"}}) {
+    RenderSettings settings;
+    settings.width = 160;
+    settings.height = 90;
+    settings.technique = p.technique;
+    settings.surfaces = p.surfaces;
+    settings.raster = p.raster;
+    const test::Rendered a = test::render(transformed, settings), b = test::render(baked, settings);
+    // The same texture coordinates, one computed in the shader and one on the CPU: the last bits.
+    test::expectWithinBound(a.ldr, b.ldr, test::kSameImage, std::string("transformed vs baked, ") + p.name);
+    EXPECT_GT(test::shareAboveBlack(b.ldr), 0.4) << p.name;  // the upper half is sky
+  }
+  // Without the transforms (the baked scene's materials on its original UVs) the image is another.
+  Scene ignored = transformScene(true);
+  for (Material& m : ignored.materials) m.transforms.fill(TextureTransform{});
+  RenderSettings settings;
+  settings.width = 160;
+  settings.height = 90;
+  EXPECT_LT(test::psnr(test::render(ignored, settings).ldr, test::render(baked, settings).ldr), 30.0);
+}
+
+// glTF's matrix: Translation x Rotation x Scale, with the rotation turning u towards -v.
+TEST(TextureTransform, MatrixIsTheExtensions) {
+  TextureTransform t;
+  t.offset = glm::vec2(0.5f, -0.25f);
+  t.rotation = 1.5707963f;
+  t.scale = glm::vec2(2.0f, 3.0f);
+  const glm::vec2 x = t.apply(glm::vec2(1, 0)), y = t.apply(glm::vec2(0, 1));
+  EXPECT_NEAR(x.x, 0.5f, 1e-6f);
+  EXPECT_NEAR(x.y, -2.25f, 1e-6f);
+  EXPECT_NEAR(y.x, 3.5f, 1e-6f);
+  EXPECT_NEAR(y.y, -0.25f, 1e-6f);
+  // The extension's own example: "only the lower left quadrant of the source image, rotated
+  // clockwise 90 degrees" (v runs down the image).
+  TextureTransform quadrant;
+  quadrant.offset = glm::vec2(0.0f, 1.0f);
+  quadrant.rotation = 1.57079632679f;
+  quadrant.scale = glm::vec2(0.5f);
+  for (const glm::vec2 corner : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1), glm::vec2(1, 1)}) {
+    const glm::vec2 uv = quadrant.apply(corner);
+    EXPECT_TRUE(uv.x > -1e-6f && uv.x < 0.5f + 1e-6f && uv.y > 0.5f - 1e-6f && uv.y < 1.0f + 1e-6f)
+        << corner.x << "," << corner.y << " -> " << uv.x << "," << uv.y;
+  }
+  EXPECT_TRUE(TextureTransform{}.identity());
+  EXPECT_FALSE(t.identity());
+}
+
+}  // namespace
+}  // namespace lll
