@@ -28,6 +28,17 @@ SceneRequest movingRequest(uint32_t lights, float seconds) {
   return request;
 }
 
+// The image tests' frame: 96x54, `technique`, `shadows` (sun | all | none; 4 shadowed lights).
+RenderSettings movingSettings(const std::string& technique, const std::string& shadows) {
+  RenderSettings settings;
+  settings.width = 96;
+  settings.height = 54;
+  settings.technique = technique;
+  settings.shadows = shadows;
+  settings.shadowLights = 4;
+  return settings;
+}
+
 float horizontalDistance(glm::vec3 a, glm::vec3 b) {
   return std::hypot(a.x - b.x, a.z - b.z);
 }
@@ -115,12 +126,7 @@ TEST(LightAnimation, LightsMovedBetweenFramesDrawWhatTheirTimeDraws) {
   for (const Case& c :
        {Case{"lll", "none"}, Case{"tiled", "none"}, Case{"deferred", "none"}, Case{"lll", "all"}}) {
     SCOPED_TRACE(c.technique + " shadows " + c.shadows);
-    RenderSettings settings;
-    settings.width = 96;
-    settings.height = 54;
-    settings.technique = c.technique;
-    settings.shadows = c.shadows;
-    settings.shadowLights = 4;
+    const RenderSettings settings = movingSettings(c.technique, c.shadows);
     Scene scene = loadScene(movingRequest(48, 0.0f));
     Renderer renderer(test::gpuContext(), scene, settings);
     const test::Rendered first = test::render(renderer);
@@ -152,12 +158,7 @@ TEST(LightAnimation, MovedOnTheGpuWhereTheCpuDoesNotReadThem) {
                         Case{"clustered", "none", true}, Case{"deferred", "none", false},
                         Case{"prepass", "sun", false}, Case{"lll", "all", false}}) {
     SCOPED_TRACE(c.technique + " shadows " + c.shadows);
-    RenderSettings settings;
-    settings.width = 96;
-    settings.height = 54;
-    settings.technique = c.technique;
-    settings.shadows = c.shadows;
-    settings.shadowLights = 4;
+    const RenderSettings settings = movingSettings(c.technique, c.shadows);
     Scene scene = loadScene(movingRequest(48, 0.0f));
     const std::vector<Light> atZero = scene.lights;
     Renderer renderer(test::gpuContext(), scene, settings);
