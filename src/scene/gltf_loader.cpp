@@ -6,6 +6,7 @@
 // Before the implementation macros: it includes tiny_gltf.h, whose implementation must come once.
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_files.h"
+#include "scene/gltf_importer.h"
 #include "scene/gltf_meshopt.h"
 #include "scene/gltf_numbers.h"
 #include "scene/gltf_schema.h"
@@ -35,34 +36,14 @@
 #include "scene/errors.h"
 #include "scene/lights.h"
 
-namespace lll {
+namespace lll::gltf_detail {
 namespace {
-
-using gltf_detail::Components;
-using gltf_detail::FileAccess;
-using gltf_detail::fileExistsBesideGltf;
-using gltf_detail::jsonNestingWithinLimit;
-using gltf_detail::keepPath;
-using gltf_detail::kMaxJsonNesting;
-using gltf_detail::looksLikeJsonObject;
-using gltf_detail::oneLine;
-using gltf_detail::readFileBytes;
-using gltf_detail::readWholeFile;
-using gltf_detail::refuseWrite;
-
-// Beyond what any GPU we target samples; stops a forged image header from asking for gigabytes.
-constexpr int kMaxTextureSide = 16384;
-
 // Extensions we implement, and those a file may require that only refine the look when ignored
-// (texture transforms shift UVs, IOR nudges dielectric reflectance). Both get a warning when used.
+// (IOR nudges dielectric reflectance), which get a warning when used.
 const std::set<std::string> kHandledExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
                                                   "KHR_mesh_quantization", "EXT_meshopt_compression",
                                                   "KHR_texture_transform"};
 const std::set<std::string> kIgnorableRequiredExtensions = {"KHR_materials_ior"};
-
-std::string inQuotes(const std::string& name) {
-  return "'" + name + "'";
-}
 
 // tinygltf's image callback. We only keep the encoded bytes and decode later, for the images a
 // material uses; bufferView images are not even read here, because tinygltf hands over a pointer
@@ -90,90 +71,23 @@ std::string describeList(const std::set<std::string>& names) {
   return list;
 }
 
-class GltfImporter {
- public:
-  explicit GltfImporter(const std::filesystem::path& file) : path_(file), file_(file.string()) {}
+}  // namespace
 
-  Scene run() {
-    scene_.name = path_.stem().string();
-    parse();
-    checkVersionAndExtensions();
-    gltf_detail::decodeMeshoptBufferViews(model_, file_);
-    checkBufferViews();
-    images_.resize(model_.images.size());
-    for (size_t i = 0; i < model_.materials.size(); ++i) {
-      scene_.materials.push_back(convertMaterial(model_.materials[i], int(i)));
-    }
-    for (size_t i = 0; i < model_.meshes.size(); ++i) scene_.meshes.push_back(convertMesh(int(i)));
-    placeNodes();
-    warnAboutIgnoredData();
-    return std::move(scene_);
+Scene GltfImporter::run() {
+  scene_.name = path_.stem().string();
+  parse();
+  checkVersionAndExtensions();
+  decodeMeshoptBufferViews(model_, file_);
+  checkBufferViews();
+  images_.resize(model_.images.size());
+  for (size_t i = 0; i < model_.materials.size(); ++i) {
+    scene_.materials.push_back(convertMaterial(model_.materials[i], int(i)));
   }
-
-  std::vector<std::string> takeWarnings() { return std::move(warnings_); }
-
- private:
-  struct DecodedImage {
-    bool attempted = false;
-    std::string failure;  // why it could not be used; empty once decoded
-    uint32_t width = 0;
-    uint32_t height = 0;
-    std::vector<uint8_t> rgba;
-  };
-
-  [[noreturn]] void fail(const std::string& what) const { throw InputError(file_ + ": " + what); }
-  void warn(const std::string& what) { warnings_.push_back(file_ + ": " + what); }
-
-  void parse();
-  void checkVersionAndExtensions();
-  void checkBufferViews() const { gltf_detail::checkBufferViews(model_, file_); }
-  void checkFinite(const std::vector<float>& values, const std::string& what) const {
-    const auto bad = std::find_if(values.begin(), values.end(), [](float x) { return !std::isfinite(x); });
-    if (bad != values.end())
-      fail(what + " has a component that is infinite or NaN (" + std::to_string(*bad) + " at component " +
-           std::to_string(bad - values.begin()) + ")");
-  }
-  template <typename T>
-  std::vector<T> readAccessor(int index, const std::string& what, int type, Components allowed) const {
-    return gltf_detail::readAccessor<T>(model_, file_, index, what, type, allowed);
-  }
-
-  Material convertMaterial(const tinygltf::Material& in, int index);
-  TextureTransform textureTransform(const tinygltf::ExtensionMap& extensions, const std::string& what);
-  template <typename Info>
-  int textureFor(const Info& info, bool srgb, const std::string& material, const char* slot);
-  const DecodedImage& decodeImage(int index);
-  std::string imageName(int index) const;
-
-  Mesh convertMesh(int index);
-  void convertPrimitive(const tinygltf::Primitive& primitive, const std::string& where, Mesh& mesh);
-  std::vector<uint32_t> toTriangleList(int mode, const std::vector<uint32_t>& indices,
-                                       const std::string& where);
-  uint32_t materialFor(int material, const std::string& where);
-
-  void placeNodes();
-  void placeMesh(uint32_t mesh, const glm::mat4& world, int node);
-  glm::dmat4 localTransform(const tinygltf::Node& node, int index) const;
-  void addLight(const tinygltf::Node& node, int nodeIndex, const glm::dmat4& world);
-  void addCamera(int cameraIndex, int nodeIndex, const glm::dmat4& world);
-  void addDirectionalLight(const tinygltf::Light& in, const std::string& name, const glm::dmat4& world);
-  void warnAboutIgnoredData();
-
-  std::filesystem::path path_;
-  std::string file_;
-  tinygltf::Model model_;
-  Scene scene_;
-  std::vector<std::string> warnings_;
-  gltf_detail::NumberReader numbers_{file_, warnings_};
-  std::vector<DecodedImage> images_;                  // per glTF image, decoded on first use
-  std::map<std::pair<int, bool>, int> textureIndex_;  // (glTF image, srgb) -> Scene::textures
-  std::optional<uint32_t> defaultMaterial_;
-  std::map<uint32_t, Bounds> meshBounds_;        // object-space bounds of each placed mesh
-  std::map<uint32_t, uint32_t> reversedMeshes_;  // a mesh's reversed copy, for mirroring nodes
-  std::set<std::string> ignoredAttributes_;
-  bool hasMorphTargets_ = false;
-  bool usesOtherTexCoords_ = false;
-};
+  for (size_t i = 0; i < model_.meshes.size(); ++i) scene_.meshes.push_back(convertMesh(int(i)));
+  placeNodes();
+  warnAboutIgnoredData();
+  return std::move(scene_);
+}
 
 void GltfImporter::parse() {
   std::vector<unsigned char> bytes;
@@ -199,8 +113,8 @@ void GltfImporter::parse() {
     fail("its JSON is nested more than " + std::to_string(kMaxJsonNesting) +
          " levels deep; no valid glTF needs that, so the file is corrupt or not glTF");
   }
-  gltf_detail::checkFieldTypes(reinterpret_cast<const char*>(bytes.data() + jsonBegin), jsonSize, file_);
-  bytes = gltf_detail::withMeshoptFallbacksStubbed(bytes, binary);
+  checkFieldTypes(reinterpret_cast<const char*>(bytes.data() + jsonBegin), jsonSize, file_);
+  bytes = withMeshoptFallbacksStubbed(bytes, binary);
 
   FileAccess access{std::filesystem::absolute(path_).parent_path().string()};
   tinygltf::TinyGLTF gltf;
@@ -246,175 +160,6 @@ void GltfImporter::checkVersionAndExtensions() {
     warn("uses glTF extension(s) " + describeList(ignored) +
          " that the renderer ignores; the scene may look different than in other viewers");
   }
-}
-
-Material GltfImporter::convertMaterial(const tinygltf::Material& in, int index) {
-  Material out;
-  out.name = in.name.empty() ? "material " + std::to_string(index) : in.name;
-  const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
-  const std::string name = "material " + inQuotes(out.name);
-  out.baseColorFactor = glm::make_vec4(
-      numbers_.clampedArray(pbr.baseColorFactor, 4, 0.0, 1.0, name + " baseColorFactor").data());
-  // Emissive factors above 1 are common in files older than KHR_materials_emissive_strength.
-  out.emissiveFactor = glm::make_vec3(
-      numbers_.clampedArray(in.emissiveFactor, 3, 0.0, kMaxEmissiveStrength, name + " emissiveFactor")
-          .data());
-  out.metallic = numbers_.clamped(pbr.metallicFactor, 0.0, 1.0, name + " metallicFactor");
-  out.roughness = numbers_.clamped(pbr.roughnessFactor, 0.0, 1.0, name + " roughnessFactor");
-  out.normalScale = numbers_.finite(in.normalTexture.scale, name + " normalTexture scale");
-  out.occlusionStrength =
-      numbers_.clamped(in.occlusionTexture.strength, 0.0, 1.0, name + " occlusion strength");
-  out.alphaCutoff = numbers_.atLeast(in.alphaCutoff, 0.0, name + " alphaCutoff");
-  out.doubleSided = in.doubleSided;
-  if (in.alphaMode == "OPAQUE") {
-    out.alphaMode = AlphaMode::Opaque;
-  } else if (in.alphaMode == "MASK") {
-    out.alphaMode = AlphaMode::Mask;
-  } else if (in.alphaMode == "BLEND") {
-    out.alphaMode = AlphaMode::Blend;
-  } else {
-    fail("material " + inQuotes(out.name) + " has alphaMode '" + in.alphaMode +
-         "'; glTF allows OPAQUE, MASK or BLEND");
-  }
-  if (auto strength = in.extensions.find("KHR_materials_emissive_strength");
-      strength != in.extensions.end()) {
-    const tinygltf::Value& value = strength->second.Get("emissiveStrength");
-    if (value.IsNumber())
-      out.emissiveStrength = numbers_.atLeast(value.GetNumberAsDouble(), 0.0, name + " emissiveStrength");
-  }
-  const double emission =
-      double(std::max({out.emissiveFactor.r, out.emissiveFactor.g, out.emissiveFactor.b})) *
-      double(out.emissiveStrength);
-  if (emission > double(kMaxEmissiveStrength))
-    fail(name + " emits " + std::to_string(emission) + " (emissiveFactor x emissiveStrength), above the " +
-         std::to_string(kMaxEmissiveStrength) + " the renderer's 32-bit shading takes without overflow");
-  out.baseColorTexture = textureFor(pbr.baseColorTexture, true, out.name, "base colour");
-  out.metallicRoughnessTexture =
-      textureFor(pbr.metallicRoughnessTexture, false, out.name, "metallic-roughness");
-  out.normalTexture = textureFor(in.normalTexture, false, out.name, "normal");
-  out.occlusionTexture = textureFor(in.occlusionTexture, false, out.name, "occlusion");
-  out.emissiveTexture = textureFor(in.emissiveTexture, true, out.name, "emissive");
-  out.transforms[kBaseColorSlot] = textureTransform(pbr.baseColorTexture.extensions, name + " base colour");
-  out.transforms[kMetallicRoughnessSlot] =
-      textureTransform(pbr.metallicRoughnessTexture.extensions, name + " metallic-roughness");
-  out.transforms[kNormalSlot] = textureTransform(in.normalTexture.extensions, name + " normal");
-  out.transforms[kEmissiveSlot] = textureTransform(in.emissiveTexture.extensions, name + " emissive");
-  out.transforms[kOcclusionSlot] = textureTransform(in.occlusionTexture.extensions, name + " occlusion");
-  return out;
-}
-
-// A texture's KHR_texture_transform (identity without one); `what` names the texture.
-TextureTransform GltfImporter::textureTransform(const tinygltf::ExtensionMap& extensions,
-                                                const std::string& what) {
-  TextureTransform t;
-  const auto found = extensions.find("KHR_texture_transform");
-  if (found == extensions.end()) return t;
-  const tinygltf::Value& e = found->second;
-  const std::string name = what + " texture's KHR_texture_transform";
-  const auto pair = [&](const char* field, glm::vec2 fallback) {
-    if (!e.Has(field)) return fallback;
-    const tinygltf::Value& v = e.Get(field);
-    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
-      fail(name + "'s " + field + " is not two numbers");
-    return glm::vec2(numbers_.finite(v.Get(0).GetNumberAsDouble(), name + " " + field + "[0]"),
-                     numbers_.finite(v.Get(1).GetNumberAsDouble(), name + " " + field + "[1]"));
-  };
-  t.offset = pair("offset", glm::vec2(0.0f));
-  t.scale = pair("scale", glm::vec2(1.0f));
-  if (e.Has("rotation")) {
-    if (!e.Get("rotation").IsNumber()) fail(name + " has a rotation that is not a number");
-    t.rotation = numbers_.finite(e.Get("rotation").GetNumberAsDouble(), name + " rotation");
-  }
-  // Its texCoord replaces the texture's own; only TEXCOORD_0 is read (warned about at the end).
-  if (e.Has("texCoord") && !(e.Get("texCoord").IsNumber() && e.Get("texCoord").GetNumberAsInt() == 0))
-    usesOtherTexCoords_ = true;
-  return t;
-}
-
-template <typename Info>
-int GltfImporter::textureFor(const Info& info, bool srgb, const std::string& material, const char* slot) {
-  if (info.index < 0) return -1;
-  if (size_t(info.index) >= model_.textures.size()) {
-    fail("material " + inQuotes(material) + " uses texture " + std::to_string(info.index) + " as its " +
-         slot + " texture, but the file has " + std::to_string(model_.textures.size()) + " textures");
-  }
-  if (info.texCoord != 0) usesOtherTexCoords_ = true;
-  const int image = model_.textures[size_t(info.index)].source;
-  if (image < 0) {
-    warn("material " + inQuotes(material) + ": its " + slot + " texture " + std::to_string(info.index) +
-         " has no PNG or JPEG source (an image extension we do not support?); a neutral texture is used");
-    return -1;
-  }
-  if (size_t(image) >= model_.images.size()) {
-    fail("texture " + std::to_string(info.index) + " refers to image " + std::to_string(image) +
-         ", but the file has " + std::to_string(model_.images.size()) + " images");
-  }
-  if (auto known = textureIndex_.find({image, srgb}); known != textureIndex_.end()) return known->second;
-
-  const DecodedImage& decoded = decodeImage(image);
-  if (!decoded.failure.empty()) {
-    warn("material " + inQuotes(material) + ": " + slot + " image " + inQuotes(imageName(image)) +
-         " could not be loaded (" + decoded.failure + "); a neutral texture is used instead");
-    return -1;
-  }
-  Texture texture;
-  texture.name = imageName(image);
-  texture.width = decoded.width;
-  texture.height = decoded.height;
-  texture.rgba = decoded.rgba;
-  texture.srgb = srgb;
-  scene_.textures.push_back(std::move(texture));
-  const int index = int(scene_.textures.size() - 1);
-  textureIndex_[{image, srgb}] = index;
-  return index;
-}
-
-const GltfImporter::DecodedImage& GltfImporter::decodeImage(int index) {
-  DecodedImage& decoded = images_[size_t(index)];
-  if (decoded.attempted) return decoded;
-  decoded.attempted = true;
-
-  const tinygltf::Image& image = model_.images[size_t(index)];
-  const unsigned char* bytes = image.image.data();
-  size_t size = image.image.size();
-  if (image.bufferView >= 0) {  // in range: tinygltf checked it; checkBufferViews() checked the view
-    const tinygltf::BufferView& view = model_.bufferViews[size_t(image.bufferView)];
-    bytes = model_.buffers[size_t(view.buffer)].data.data() + view.byteOffset;
-    size = view.byteLength;
-  }
-  if (size == 0) {
-    decoded.failure = image.uri.empty() ? "it has no data" : "the file is missing or unreadable";
-    return decoded;
-  }
-  int width = 0;
-  int height = 0;
-  int channels = 0;
-  if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels)) {
-    decoded.failure = std::string("not a decodable PNG or JPEG: ") + stbi_failure_reason();
-    return decoded;
-  }
-  if (width > kMaxTextureSide || height > kMaxTextureSide) {
-    decoded.failure = std::to_string(width) + "x" + std::to_string(height) + " is larger than the " +
-                      std::to_string(kMaxTextureSide) + " pixels per side we accept";
-    return decoded;
-  }
-  stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
-  if (pixels == nullptr) {
-    decoded.failure = std::string("decoding failed: ") + stbi_failure_reason();
-    return decoded;
-  }
-  decoded.width = uint32_t(width);
-  decoded.height = uint32_t(height);
-  decoded.rgba.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
-  stbi_image_free(pixels);
-  return decoded;
-}
-
-std::string GltfImporter::imageName(int index) const {
-  const tinygltf::Image& image = model_.images[size_t(index)];
-  if (!image.uri.empty()) return image.uri;
-  if (!image.name.empty()) return "embedded image " + image.name;
-  return "embedded image " + std::to_string(index);
 }
 
 Mesh GltfImporter::convertMesh(int index) {
@@ -636,8 +381,7 @@ void GltfImporter::placeNodes() {
     visited[size_t(index)] = true;
     const tinygltf::Node& node = model_.nodes[size_t(index)];
     const glm::dmat4 world = parentWorld * localTransform(node, index);
-    gltf_detail::checkFiniteMatrix(glm::mat4(world), file_,
-                                   "node " + std::to_string(index) + "'s world transform");
+    checkFiniteMatrix(glm::mat4(world), file_, "node " + std::to_string(index) + "'s world transform");
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model_.meshes.size()) {
         fail("node " + std::to_string(index) + " uses mesh " + std::to_string(node.mesh) +
@@ -819,10 +563,12 @@ void GltfImporter::warnAboutIgnoredData() {
   if (!model_.animations.empty()) warn("animations are ignored; the scene is drawn in its rest pose");
 }
 
-}  // namespace
+}  // namespace lll::gltf_detail
+
+namespace lll {
 
 Scene loadGltf(const std::filesystem::path& file, LoadReport* report) {
-  GltfImporter importer(file);
+  gltf_detail::GltfImporter importer(file);
   Scene scene = importer.run();
   if (report != nullptr) {
     for (std::string& warning : importer.takeWarnings()) report->warnings.push_back(std::move(warning));

@@ -1,0 +1,100 @@
+#pragma once
+// Private to the glTF loader: the importer, whose work is split between gltf_loader.cpp (the file,
+// its extensions, meshes, nodes, lights and cameras) and gltf_materials.cpp (materials, their
+// textures and images). tiny_gltf.h comes in for its declarations (gltf_accessors.h); its
+// implementation is gltf_loader.cpp's.
+#include "scene/gltf_accessors.h"
+#include "scene/gltf_numbers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/errors.h"
+#include "scene/scene.h"
+
+namespace lll::gltf_detail {
+
+inline std::string inQuotes(const std::string& name) {
+  return "'" + name + "'";
+}
+
+class GltfImporter {
+ public:
+  explicit GltfImporter(const std::filesystem::path& file) : path_(file), file_(file.string()) {}
+
+  Scene run();
+
+  std::vector<std::string> takeWarnings() { return std::move(warnings_); }
+
+ private:
+  struct DecodedImage {
+    bool attempted = false;
+    std::string failure;  // why it could not be used; empty once decoded
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<uint8_t> rgba;
+  };
+
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(file_ + ": " + what); }
+  void warn(const std::string& what) { warnings_.push_back(file_ + ": " + what); }
+
+  void parse();
+  void checkVersionAndExtensions();
+  void checkBufferViews() const { gltf_detail::checkBufferViews(model_, file_); }
+  void checkFinite(const std::vector<float>& values, const std::string& what) const {
+    const auto bad = std::find_if(values.begin(), values.end(), [](float x) { return !std::isfinite(x); });
+    if (bad != values.end())
+      fail(what + " has a component that is infinite or NaN (" + std::to_string(*bad) + " at component " +
+           std::to_string(bad - values.begin()) + ")");
+  }
+  template <typename T>
+  std::vector<T> readAccessor(int index, const std::string& what, int type, Components allowed) const {
+    return gltf_detail::readAccessor<T>(model_, file_, index, what, type, allowed);
+  }
+
+  Material convertMaterial(const tinygltf::Material& in, int index);
+  TextureTransform textureTransform(const tinygltf::ExtensionMap& extensions, const std::string& what);
+  template <typename Info>
+  int textureFor(const Info& info, bool srgb, const std::string& material, const char* slot);
+  const DecodedImage& decodeImage(int index);
+  std::string imageName(int index) const;
+
+  Mesh convertMesh(int index);
+  void convertPrimitive(const tinygltf::Primitive& primitive, const std::string& where, Mesh& mesh);
+  std::vector<uint32_t> toTriangleList(int mode, const std::vector<uint32_t>& indices,
+                                       const std::string& where);
+  uint32_t materialFor(int material, const std::string& where);
+
+  void placeNodes();
+  void placeMesh(uint32_t mesh, const glm::mat4& world, int node);
+  glm::dmat4 localTransform(const tinygltf::Node& node, int index) const;
+  void addLight(const tinygltf::Node& node, int nodeIndex, const glm::dmat4& world);
+  void addCamera(int cameraIndex, int nodeIndex, const glm::dmat4& world);
+  void addDirectionalLight(const tinygltf::Light& in, const std::string& name, const glm::dmat4& world);
+  void warnAboutIgnoredData();
+
+  std::filesystem::path path_;
+  std::string file_;
+  tinygltf::Model model_;
+  Scene scene_;
+  std::vector<std::string> warnings_;
+  gltf_detail::NumberReader numbers_{file_, warnings_};
+  std::vector<DecodedImage> images_;                  // per glTF image, decoded on first use
+  std::map<std::pair<int, bool>, int> textureIndex_;  // (glTF image, srgb) -> Scene::textures
+  std::optional<uint32_t> defaultMaterial_;
+  std::map<uint32_t, Bounds> meshBounds_;        // object-space bounds of each placed mesh
+  std::map<uint32_t, uint32_t> reversedMeshes_;  // a mesh's reversed copy, for mirroring nodes
+  std::set<std::string> ignoredAttributes_;
+  bool hasMorphTargets_ = false;
+  bool usesOtherTexCoords_ = false;
+};
+
+}  // namespace lll::gltf_detail

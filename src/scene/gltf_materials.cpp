@@ -1,0 +1,189 @@
+// glTF materials for the loader (scene/gltf_importer.h): factors checked and clamped, textures
+// and their KHR_texture_transform, images decoded on first use with stb_image, within a size bound.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scene/gltf_importer.h"
+#include "scene/lights.h"
+
+namespace lll::gltf_detail {
+namespace {
+
+// Beyond what any GPU we target samples; stops a forged image header from asking for gigabytes.
+constexpr int kMaxTextureSide = 16384;
+
+}  // namespace
+
+Material GltfImporter::convertMaterial(const tinygltf::Material& in, int index) {
+  Material out;
+  out.name = in.name.empty() ? "material " + std::to_string(index) : in.name;
+  const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
+  const std::string name = "material " + inQuotes(out.name);
+  out.baseColorFactor = glm::make_vec4(
+      numbers_.clampedArray(pbr.baseColorFactor, 4, 0.0, 1.0, name + " baseColorFactor").data());
+  // Emissive factors above 1 are common in files older than KHR_materials_emissive_strength.
+  out.emissiveFactor = glm::make_vec3(
+      numbers_.clampedArray(in.emissiveFactor, 3, 0.0, kMaxEmissiveStrength, name + " emissiveFactor")
+          .data());
+  out.metallic = numbers_.clamped(pbr.metallicFactor, 0.0, 1.0, name + " metallicFactor");
+  out.roughness = numbers_.clamped(pbr.roughnessFactor, 0.0, 1.0, name + " roughnessFactor");
+  out.normalScale = numbers_.finite(in.normalTexture.scale, name + " normalTexture scale");
+  out.occlusionStrength =
+      numbers_.clamped(in.occlusionTexture.strength, 0.0, 1.0, name + " occlusion strength");
+  out.alphaCutoff = numbers_.atLeast(in.alphaCutoff, 0.0, name + " alphaCutoff");
+  out.doubleSided = in.doubleSided;
+  if (in.alphaMode == "OPAQUE") {
+    out.alphaMode = AlphaMode::Opaque;
+  } else if (in.alphaMode == "MASK") {
+    out.alphaMode = AlphaMode::Mask;
+  } else if (in.alphaMode == "BLEND") {
+    out.alphaMode = AlphaMode::Blend;
+  } else {
+    fail("material " + inQuotes(out.name) + " has alphaMode '" + in.alphaMode +
+         "'; glTF allows OPAQUE, MASK or BLEND");
+  }
+  if (auto strength = in.extensions.find("KHR_materials_emissive_strength");
+      strength != in.extensions.end()) {
+    const tinygltf::Value& value = strength->second.Get("emissiveStrength");
+    if (value.IsNumber())
+      out.emissiveStrength = numbers_.atLeast(value.GetNumberAsDouble(), 0.0, name + " emissiveStrength");
+  }
+  const double emission =
+      double(std::max({out.emissiveFactor.r, out.emissiveFactor.g, out.emissiveFactor.b})) *
+      double(out.emissiveStrength);
+  if (emission > double(kMaxEmissiveStrength))
+    fail(name + " emits " + std::to_string(emission) + " (emissiveFactor x emissiveStrength), above the " +
+         std::to_string(kMaxEmissiveStrength) + " the renderer's 32-bit shading takes without overflow");
+  out.baseColorTexture = textureFor(pbr.baseColorTexture, true, out.name, "base colour");
+  out.metallicRoughnessTexture =
+      textureFor(pbr.metallicRoughnessTexture, false, out.name, "metallic-roughness");
+  out.normalTexture = textureFor(in.normalTexture, false, out.name, "normal");
+  out.occlusionTexture = textureFor(in.occlusionTexture, false, out.name, "occlusion");
+  out.emissiveTexture = textureFor(in.emissiveTexture, true, out.name, "emissive");
+  out.transforms[kBaseColorSlot] = textureTransform(pbr.baseColorTexture.extensions, name + " base colour");
+  out.transforms[kMetallicRoughnessSlot] =
+      textureTransform(pbr.metallicRoughnessTexture.extensions, name + " metallic-roughness");
+  out.transforms[kNormalSlot] = textureTransform(in.normalTexture.extensions, name + " normal");
+  out.transforms[kEmissiveSlot] = textureTransform(in.emissiveTexture.extensions, name + " emissive");
+  out.transforms[kOcclusionSlot] = textureTransform(in.occlusionTexture.extensions, name + " occlusion");
+  return out;
+}
+
+// A texture's KHR_texture_transform (identity without one); `what` names the texture.
+TextureTransform GltfImporter::textureTransform(const tinygltf::ExtensionMap& extensions,
+                                                const std::string& what) {
+  TextureTransform t;
+  const auto found = extensions.find("KHR_texture_transform");
+  if (found == extensions.end()) return t;
+  const tinygltf::Value& e = found->second;
+  const std::string name = what + " texture's KHR_texture_transform";
+  const auto pair = [&](const char* field, glm::vec2 fallback) {
+    if (!e.Has(field)) return fallback;
+    const tinygltf::Value& v = e.Get(field);
+    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+      fail(name + "'s " + field + " is not two numbers");
+    return glm::vec2(numbers_.finite(v.Get(0).GetNumberAsDouble(), name + " " + field + "[0]"),
+                     numbers_.finite(v.Get(1).GetNumberAsDouble(), name + " " + field + "[1]"));
+  };
+  t.offset = pair("offset", glm::vec2(0.0f));
+  t.scale = pair("scale", glm::vec2(1.0f));
+  if (e.Has("rotation")) {
+    if (!e.Get("rotation").IsNumber()) fail(name + " has a rotation that is not a number");
+    t.rotation = numbers_.finite(e.Get("rotation").GetNumberAsDouble(), name + " rotation");
+  }
+  // Its texCoord replaces the texture's own; only TEXCOORD_0 is read (warned about at the end).
+  if (e.Has("texCoord") && !(e.Get("texCoord").IsNumber() && e.Get("texCoord").GetNumberAsInt() == 0))
+    usesOtherTexCoords_ = true;
+  return t;
+}
+
+template <typename Info>
+int GltfImporter::textureFor(const Info& info, bool srgb, const std::string& material, const char* slot) {
+  if (info.index < 0) return -1;
+  if (size_t(info.index) >= model_.textures.size()) {
+    fail("material " + inQuotes(material) + " uses texture " + std::to_string(info.index) + " as its " +
+         slot + " texture, but the file has " + std::to_string(model_.textures.size()) + " textures");
+  }
+  if (info.texCoord != 0) usesOtherTexCoords_ = true;
+  const int image = model_.textures[size_t(info.index)].source;
+  if (image < 0) {
+    warn("material " + inQuotes(material) + ": its " + slot + " texture " + std::to_string(info.index) +
+         " has no PNG or JPEG source (an image extension we do not support?); a neutral texture is used");
+    return -1;
+  }
+  if (size_t(image) >= model_.images.size()) {
+    fail("texture " + std::to_string(info.index) + " refers to image " + std::to_string(image) +
+         ", but the file has " + std::to_string(model_.images.size()) + " images");
+  }
+  if (auto known = textureIndex_.find({image, srgb}); known != textureIndex_.end()) return known->second;
+
+  const DecodedImage& decoded = decodeImage(image);
+  if (!decoded.failure.empty()) {
+    warn("material " + inQuotes(material) + ": " + slot + " image " + inQuotes(imageName(image)) +
+         " could not be loaded (" + decoded.failure + "); a neutral texture is used instead");
+    return -1;
+  }
+  Texture texture;
+  texture.name = imageName(image);
+  texture.width = decoded.width;
+  texture.height = decoded.height;
+  texture.rgba = decoded.rgba;
+  texture.srgb = srgb;
+  scene_.textures.push_back(std::move(texture));
+  const int index = int(scene_.textures.size() - 1);
+  textureIndex_[{image, srgb}] = index;
+  return index;
+}
+
+const GltfImporter::DecodedImage& GltfImporter::decodeImage(int index) {
+  DecodedImage& decoded = images_[size_t(index)];
+  if (decoded.attempted) return decoded;
+  decoded.attempted = true;
+
+  const tinygltf::Image& image = model_.images[size_t(index)];
+  const unsigned char* bytes = image.image.data();
+  size_t size = image.image.size();
+  if (image.bufferView >= 0) {  // in range: tinygltf checked it; checkBufferViews() checked the view
+    const tinygltf::BufferView& view = model_.bufferViews[size_t(image.bufferView)];
+    bytes = model_.buffers[size_t(view.buffer)].data.data() + view.byteOffset;
+    size = view.byteLength;
+  }
+  if (size == 0) {
+    decoded.failure = image.uri.empty() ? "it has no data" : "the file is missing or unreadable";
+    return decoded;
+  }
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels)) {
+    decoded.failure = std::string("not a decodable PNG or JPEG: ") + stbi_failure_reason();
+    return decoded;
+  }
+  if (width > kMaxTextureSide || height > kMaxTextureSide) {
+    decoded.failure = std::to_string(width) + "x" + std::to_string(height) + " is larger than the " +
+                      std::to_string(kMaxTextureSide) + " pixels per side we accept";
+    return decoded;
+  }
+  stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
+  if (pixels == nullptr) {
+    decoded.failure = std::string("decoding failed: ") + stbi_failure_reason();
+    return decoded;
+  }
+  decoded.width = uint32_t(width);
+  decoded.height = uint32_t(height);
+  decoded.rgba.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
+  stbi_image_free(pixels);
+  return decoded;
+}
+
+std::string GltfImporter::imageName(int index) const {
+  const tinygltf::Image& image = model_.images[size_t(index)];
+  if (!image.uri.empty()) return image.uri;
+  if (!image.name.empty()) return "embedded image " + image.name;
+  return "embedded image " + std::to_string(index);
+}
+
+}  // namespace lll::gltf_detail
