@@ -11,23 +11,39 @@ layout(set = 1, binding = 2) uniform sampler2D normalTexture;
 layout(set = 1, binding = 3) uniform sampler2D emissiveTexture;
 layout(set = 1, binding = 4) uniform sampler2D occlusionTexture;
 
-float materialAlpha(GpuMaterial m, vec2 uv) {
-  return m.baseColorFactor.a * texture(baseColorTexture, textureCoordinates(m, 0u, uv)).a;
+// Texture `slot` of material `m` at the fragment's TEXCOORD_0 `uv`, whose derivatives are dx, dy.
+// Without a texture transform, the implicit derivatives of uv itself, an input every invocation of
+// the quad holds. With one, the transformed coordinates' derivatives are the transform of uv's,
+// given explicitly: nothing derived from the material buffer may feed an implicit derivative,
+// since a helper invocation's loads are not defined (lavapipe's read 0, and the levels of detail at
+// triangle edges came out wrong).
+vec4 sampleSlot(sampler2D s, GpuMaterial m, uint slot, vec2 uv, vec2 dx, vec2 dy) {
+  if (!hasTextureTransform(m)) return texture(s, uv);
+  return textureGrad(s, textureCoordinates(m, slot, uv), textureCoordinatesDerivative(m, slot, dx),
+                     textureCoordinatesDerivative(m, slot, dy));
 }
 
-// Derivatives and implicit-LOD samples are taken first, before any branch: both are undefined in
-// control flow that differs across a 2x2 quad (and the texture transforms are applied without
-// one: common/texture_transform.glsl). The derivative tangent frame follows the normal texture's
-// coordinates (KHR_texture_transform turns its u and v with it).
+float materialAlpha(GpuMaterial m, vec2 uv) {
+  vec2 dx = dFdx(uv), dy = dFdy(uv);
+  return m.baseColorFactor.a * sampleSlot(baseColorTexture, m, 0u, uv, dx, dy).a;
+}
+
+// Derivatives are taken first, before any branch: they are undefined in control flow that differs
+// across a 2x2 quad. The derivative tangent frame follows the normal texture's coordinates
+// (KHR_texture_transform turns its u and v with it).
 Surface sampleSurface(GpuMaterial m, vec3 position, vec3 normal, vec4 tangent, vec2 uv, bool frontFacing) {
-  vec2 normalUv = textureCoordinates(m, 2u, uv);
-  SurfaceDerivatives d = SurfaceDerivatives(dFdx(position), dFdy(position), dFdx(normalUv), dFdy(normalUv));
+  vec2 dx = dFdx(uv), dy = dFdy(uv);
+  SurfaceDerivatives d = SurfaceDerivatives(dFdx(position), dFdy(position), dx, dy);
   MaterialSamples t;
-  t.baseColor = texture(baseColorTexture, textureCoordinates(m, 0u, uv));
-  t.metallicRoughness = texture(metallicRoughnessTexture, textureCoordinates(m, 1u, uv));
-  t.normal = texture(normalTexture, normalUv).xyz;
-  t.emissive = texture(emissiveTexture, textureCoordinates(m, 3u, uv)).rgb;
-  t.occlusion = texture(occlusionTexture, textureCoordinates(m, 4u, uv)).r;
+  t.baseColor = sampleSlot(baseColorTexture, m, 0u, uv, dx, dy);
+  t.metallicRoughness = sampleSlot(metallicRoughnessTexture, m, 1u, uv, dx, dy);
+  t.normal = sampleSlot(normalTexture, m, 2u, uv, dx, dy).xyz;
+  t.emissive = sampleSlot(emissiveTexture, m, 3u, uv, dx, dy).rgb;
+  t.occlusion = sampleSlot(occlusionTexture, m, 4u, uv, dx, dy).r;
+  if (hasTextureTransform(m)) {
+    d.duvx = textureCoordinatesDerivative(m, 2u, dx);
+    d.duvy = textureCoordinatesDerivative(m, 2u, dy);
+  }
   return assembleSurface(m, t, position, normal, tangent, d, frontFacing);
 }
 

@@ -1,9 +1,9 @@
 // KHR_texture_transform: where a material's texture `slot` (0 base colour, 1 metallic-roughness,
 // 2 normal, 3 emissive, 4 occlusion) is sampled for the mesh's TEXCOORD_0 `uv`, and how its
-// derivatives turn with it. GpuMaterial (shared/gpu_types.h) holds the transforms, the identity
-// for a texture without one, so a fragment shader applies them unconditionally: inside a branch,
-// even one every fragment of the draw takes, lavapipe leaves the helper invocations of a 2x2 quad
-// out, and a texture's implicit level of detail at a triangle's edge then comes from garbage.
+// derivatives turn with it. GpuMaterial (shared/gpu_types.h) holds the transforms (the identity
+// for a texture without one). A fragment shader samples a transformed texture with explicit
+// gradients (common/material.glsl's sampleSlot): values loaded from a buffer are not defined in a
+// quad's helper invocations, so they must not feed implicit derivatives.
 #ifndef LLL_TEXTURE_TRANSFORM_GLSL
 #define LLL_TEXTURE_TRANSFORM_GLSL
 #include "shared/gpu_types.h"

@@ -17,6 +17,12 @@ layout(location = 0) out uint outId;
 
 void main() {
   GpuMaterial m = materials[visibility.ids.y];
-  if (m.baseColorFactor.a * texture(baseColorTexture, textureCoordinates(m, 0u, inUv)).a < m.alpha.x) discard;
+  // As material.glsl's sampleSlot: implicit derivatives only of the input itself.
+  vec2 dx = dFdx(inUv), dy = dFdy(inUv);
+  vec4 texel = hasTextureTransform(m) ? textureGrad(baseColorTexture, textureCoordinates(m, 0u, inUv),
+                                                    textureCoordinatesDerivative(m, 0u, dx),
+                                                    textureCoordinatesDerivative(m, 0u, dy))
+                                      : texture(baseColorTexture, inUv);
+  if (m.baseColorFactor.a * texel.a < m.alpha.x) discard;
   outId = (inRecord << kTriangleBits) | uint(gl_PrimitiveID);
 }
