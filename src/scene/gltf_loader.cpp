@@ -15,6 +15,10 @@
 #define TINYGLTF_NO_STB_IMAGE_WRITE  // stb_image_write belongs to the image output code
 #define STB_IMAGE_IMPLEMENTATION
 #include <tiny_gltf.h>
+// A unity build compiles the sources after this one in the same translation unit: gltf_materials.cpp
+// includes stb_image.h, which must not bring its implementation a second time.
+#undef TINYGLTF_IMPLEMENTATION
+#undef STB_IMAGE_IMPLEMENTATION
 
 #include <fmt/format.h>
 

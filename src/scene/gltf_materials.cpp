@@ -1,6 +1,7 @@
 // glTF materials for the loader (scene/gltf_importer.h): factors checked and clamped, textures
 // and their KHR_texture_transform, images decoded on first use with stb_image, within a size bound.
 #include <fmt/format.h>
+#include <stb_image.h>  // its implementation is in gltf_loader.cpp, with tiny_gltf's
 
 #include <algorithm>
 #include <cmath>
