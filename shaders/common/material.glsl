@@ -11,18 +11,6 @@ layout(set = 1, binding = 2) uniform sampler2D normalTexture;
 layout(set = 1, binding = 3) uniform sampler2D emissiveTexture;
 layout(set = 1, binding = 4) uniform sampler2D occlusionTexture;
 
-// Texture `slot` of material `m` at the fragment's TEXCOORD_0 `uv`, whose derivatives are dx, dy.
-// Without a texture transform, the implicit derivatives of uv itself, an input every invocation of
-// the quad holds. With one, the transformed coordinates' derivatives are the transform of uv's,
-// given explicitly: nothing derived from the material buffer may feed an implicit derivative,
-// since a helper invocation's loads are not defined (lavapipe's read 0, and the levels of detail at
-// triangle edges came out wrong).
-vec4 sampleSlot(sampler2D s, GpuMaterial m, uint slot, vec2 uv, vec2 dx, vec2 dy) {
-  if (!hasTextureTransform(m)) return texture(s, uv);
-  return textureGrad(s, textureCoordinates(m, slot, uv), textureCoordinatesDerivative(m, slot, dx),
-                     textureCoordinatesDerivative(m, slot, dy));
-}
-
 float materialAlpha(GpuMaterial m, vec2 uv) {
   vec2 dx = dFdx(uv), dy = dFdy(uv);
   return m.baseColorFactor.a * sampleSlot(baseColorTexture, m, 0u, uv, dx, dy).a;

@@ -17,12 +17,7 @@ layout(location = 0) out uint outId;
 
 void main() {
   GpuMaterial m = materials[visibility.ids.y];
-  // As material.glsl's sampleSlot: implicit derivatives only of the input itself.
-  vec2 dx = dFdx(inUv), dy = dFdy(inUv);
-  vec4 texel = hasTextureTransform(m) ? textureGrad(baseColorTexture, textureCoordinates(m, 0u, inUv),
-                                                    textureCoordinatesDerivative(m, 0u, dx),
-                                                    textureCoordinatesDerivative(m, 0u, dy))
-                                      : texture(baseColorTexture, inUv);
+  vec4 texel = sampleSlot(baseColorTexture, m, 0u, inUv, dFdx(inUv), dFdy(inUv));
   if (m.baseColorFactor.a * texel.a < m.alpha.x) discard;
   outId = (inRecord << kTriangleBits) | uint(gl_PrimitiveID);
 }

@@ -24,14 +24,9 @@ struct RayScene::State {
 
   float alphaAt(uint32_t triangle, float u, float v) const {
     const Material& m = scene->materials[triangleMaterial[triangle]];
-    float alpha = m.baseColorFactor.a;
-    if (m.baseColorTexture >= 0) {
-      const glm::vec2* c = &cornerUv[3 * size_t(triangle)];
-      alpha *= sampleTexture(scene->textures[size_t(m.baseColorTexture)],
-                             m.transforms[kBaseColorSlot].apply((1.0f - u - v) * c[0] + u * c[1] + v * c[2]))
-                   .a;
-    }
-    return alpha;
+    const glm::vec2* c = &cornerUv[3 * size_t(triangle)];
+    return m.baseColorFactor.a *
+           sampleMaterialTexture(*scene, m, kBaseColorSlot, (1.0f - u - v) * c[0] + u * c[1] + v * c[2]).a;
   }
 
   ~State() {
@@ -60,6 +55,12 @@ float decodeSrgb(uint8_t value) {
 }
 
 }  // namespace
+
+glm::vec4 sampleMaterialTexture(const Scene& scene, const Material& m, TextureSlot slot, glm::vec2 uv) {
+  const int texture = m.texture(slot);
+  return texture >= 0 ? sampleTexture(scene.textures[size_t(texture)], m.transforms[slot].apply(uv))
+                      : glm::vec4(1.0f);
+}
 
 glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv) {
   if (texture.width == 0 || texture.height == 0) return glm::vec4(1.0f);
@@ -213,34 +214,20 @@ MaterialSample RayScene::materialAt(const RayHit& hit) const {
   const Scene& scene = *state_->scene;
   const Material& m = scene.materials[hit.material];
   MaterialSample r;
-  r.baseColor = m.baseColorFactor;
-  if (m.baseColorTexture >= 0)
-    r.baseColor *=
-        sampleTexture(scene.textures[size_t(m.baseColorTexture)], m.transforms[kBaseColorSlot].apply(hit.uv));
-  glm::vec4 metallicRoughness(1.0f);
-  if (m.metallicRoughnessTexture >= 0)
-    metallicRoughness = sampleTexture(scene.textures[size_t(m.metallicRoughnessTexture)],
-                                      m.transforms[kMetallicRoughnessSlot].apply(hit.uv));
+  r.baseColor = m.baseColorFactor * sampleMaterialTexture(scene, m, kBaseColorSlot, hit.uv);
+  const glm::vec4 metallicRoughness = sampleMaterialTexture(scene, m, kMetallicRoughnessSlot, hit.uv);
   r.metallic = glm::clamp(m.metallic * metallicRoughness.b, 0.0f, 1.0f);
   r.roughness = glm::clamp(m.roughness * metallicRoughness.g, 0.0f, 1.0f);
-  r.emissive = m.emissiveFactor * m.emissiveStrength;
-  if (m.emissiveTexture >= 0)
-    r.emissive *= glm::vec3(
-        sampleTexture(scene.textures[size_t(m.emissiveTexture)], m.transforms[kEmissiveSlot].apply(hit.uv)));
+  r.emissive = m.emissiveFactor * m.emissiveStrength *
+               glm::vec3(sampleMaterialTexture(scene, m, kEmissiveSlot, hit.uv));
   return r;
 }
 
 SurfaceResponse RayScene::surfaceAt(const RayHit& hit) const {
-  const Material& m = state_->scene->materials[hit.material];
-  glm::vec4 base = m.baseColorFactor;
-  if (m.baseColorTexture >= 0)
-    base *= sampleTexture(state_->scene->textures[size_t(m.baseColorTexture)],
-                          m.transforms[kBaseColorSlot].apply(hit.uv));
-  float metallic = m.metallic;
-  if (m.metallicRoughnessTexture >= 0)
-    metallic *= sampleTexture(state_->scene->textures[size_t(m.metallicRoughnessTexture)],
-                              m.transforms[kMetallicRoughnessSlot].apply(hit.uv))
-                    .b;
+  const Scene& scene = *state_->scene;
+  const Material& m = scene.materials[hit.material];
+  const glm::vec4 base = m.baseColorFactor * sampleMaterialTexture(scene, m, kBaseColorSlot, hit.uv);
+  const float metallic = m.metallic * sampleMaterialTexture(scene, m, kMetallicRoughnessSlot, hit.uv).b;
   SurfaceResponse r;
   r.albedo = glm::clamp(glm::vec3(base) * (1.0f - glm::clamp(metallic, 0.0f, 1.0f)), 0.0f, 1.0f);
   r.coverage = m.alphaMode == AlphaMode::Blend ? glm::clamp(base.a, 0.0f, 1.0f) : 1.0f;

@@ -80,5 +80,8 @@ class RayScene {
 // Linear RGBA of a texture at `uv`, bilinear with repeat wrapping (glTF's default sampler);
 // sRGB-encoded textures are decoded.
 glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv);
+// Material `m`'s texture of `slot` at TEXCOORD_0 `uv` through its KHR_texture_transform; white
+// where the material has none (as the renderer's stand-ins).
+glm::vec4 sampleMaterialTexture(const Scene& scene, const Material& m, TextureSlot slot, glm::vec2 uv);
 
 }  // namespace lll::gi

@@ -16,7 +16,7 @@ namespace lll {
 
 namespace {
 
-constexpr uint32_t kTexturesPerMaterial = 5;
+constexpr uint32_t kTexturesPerMaterial = kTextureSlots;
 
 // The inverse transpose of the model's 3x3, which keeps normals perpendicular under non-uniform
 // scales: its cofactor matrix over the determinant. A singular transform (a scale of 0 flattens
@@ -316,13 +316,11 @@ void GpuScene::createMaterialSets() {
 GpuScene::TextureSlots GpuScene::textureSlots(const Material& material) const {
   const uint32_t white = uint32_t(scene_.textures.size());
   const uint32_t flatNormal = white + 1;
-  const int given[kTexturesPerMaterial] = {material.baseColorTexture, material.metallicRoughnessTexture,
-                                           material.normalTexture, material.emissiveTexture,
-                                           material.occlusionTexture};
   TextureSlots slots{};
   for (uint32_t i = 0; i < kTexturesPerMaterial; ++i) {
-    const bool valid = given[i] >= 0 && size_t(given[i]) < scene_.textures.size();
-    slots[i] = valid ? uint32_t(given[i]) : (i == 2 ? flatNormal : white);
+    const int given = material.texture(TextureSlot(i));
+    const bool valid = given >= 0 && size_t(given) < scene_.textures.size();
+    slots[i] = valid ? uint32_t(given) : (i == kNormalSlot ? flatNormal : white);
   }
   return slots;
 }

@@ -38,8 +38,8 @@ struct MovePush {
   glm::uvec4 range;   // x the first moving light, y how many
 };
 
-}  // namespace
-
+// The GPU's form of a motion (shared/gpu_types.h): the centre, the speeds in turns a second split
+// for exact products with the time, the phases in turns.
 gpu::GpuLightMotion toGpuMotion(const LightMotion& m) {
   gpu::GpuLightMotion g{};
   g.centerRadius = glm::vec4(orbitCenter(m), m.radius);
@@ -47,6 +47,8 @@ gpu::GpuLightMotion toGpuMotion(const LightMotion& m) {
   g.bob = glm::vec4(splitRate(m.bobFrequency), turns(m.bobPhase), m.bobAmplitude);
   return g;
 }
+
+}  // namespace
 
 MovingLights::MovingLights(Context& context, const LightAnimation& animation)
     : context_(context),

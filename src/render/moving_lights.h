@@ -18,10 +18,6 @@ namespace lll {
 
 class FrameGraph;
 
-// The GPU's form of a motion (shared/gpu_types.h): the centre, the speeds in turns a second split
-// for exact products with the time, the phases in turns.
-gpu::GpuLightMotion toGpuMotion(const LightMotion& motion);
-
 class MovingLights {
  public:
   MovingLights(Context& context, const LightAnimation& animation);

@@ -63,7 +63,9 @@ class GltfImporter {
   Material convertMaterial(const tinygltf::Material& in, int index);
   TextureTransform textureTransform(const tinygltf::ExtensionMap& extensions, const std::string& what);
   template <typename Info>
-  int textureFor(const Info& info, bool srgb, const std::string& material, const char* slot);
+  // The texture a material's `slot` names (-1: none, or a neutral one), and its transform.
+  int textureFor(const Info& info, bool srgb, const std::string& material, const char* slot,
+                 TextureTransform& transform);
   const DecodedImage& decodeImage(int index);
   std::string imageName(int index) const;
 
@@ -95,6 +97,7 @@ class GltfImporter {
   std::set<std::string> ignoredAttributes_;
   bool hasMorphTargets_ = false;
   bool usesOtherTexCoords_ = false;
+  bool quantized_ = false;  // the file uses KHR_mesh_quantization: integer attributes are allowed
 };
 
 }  // namespace lll::gltf_detail

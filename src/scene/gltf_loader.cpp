@@ -156,6 +156,8 @@ void GltfImporter::checkVersionAndExtensions() {
            "without mesh compression).");
     }
   }
+  quantized_ = std::find(model_.extensionsUsed.begin(), model_.extensionsUsed.end(),
+                         "KHR_mesh_quantization") != model_.extensionsUsed.end();
   std::set<std::string> ignored;
   for (const std::string& extension : model_.extensionsUsed) {
     if (!kHandledExtensions.contains(extension)) ignored.insert(extension);
@@ -195,11 +197,9 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
   }
   // KHR_mesh_quantization: integer attributes, dequantized here (the node's transform usually
   // scales them back to metres).
-  const bool quantized = std::find(model_.extensionsUsed.begin(), model_.extensionsUsed.end(),
-                                   "KHR_mesh_quantization") != model_.extensionsUsed.end();
   const std::vector<float> positions =
       readAccessor<float>(position->second, where + " POSITION", TINYGLTF_TYPE_VEC3,
-                          quantized ? Components::QuantizedPosition : Components::Float);
+                          quantized_ ? Components::QuantizedPosition : Components::Float);
   const size_t vertexCount = positions.size() / 3;
   checkFinite(positions, where + " POSITION");
   std::vector<float> normals;
@@ -208,14 +208,14 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
   for (const auto& [attribute, accessor] : primitive.attributes) {
     if (attribute == "NORMAL") {
       normals = readAccessor<float>(accessor, where + " NORMAL", TINYGLTF_TYPE_VEC3,
-                                    quantized ? Components::QuantizedDirection : Components::Float);
+                                    quantized_ ? Components::QuantizedDirection : Components::Float);
     } else if (attribute == "TANGENT") {
       tangents = readAccessor<float>(accessor, where + " TANGENT", TINYGLTF_TYPE_VEC4,
-                                     quantized ? Components::QuantizedDirection : Components::Float);
+                                     quantized_ ? Components::QuantizedDirection : Components::Float);
     } else if (attribute == "TEXCOORD_0") {
       uvs = readAccessor<float>(
           accessor, where + " TEXCOORD_0", TINYGLTF_TYPE_VEC2,
-          quantized ? Components::QuantizedTexCoord : Components::FloatOrNormalizedUnsigned);
+          quantized_ ? Components::QuantizedTexCoord : Components::FloatOrNormalizedUnsigned);
     } else if (attribute != "POSITION") {
       ignoredAttributes_.insert(attribute);
     }

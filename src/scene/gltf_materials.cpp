@@ -58,18 +58,15 @@ Material GltfImporter::convertMaterial(const tinygltf::Material& in, int index) 
   if (emission > double(kMaxEmissiveStrength))
     fail(name + " emits " + std::to_string(emission) + " (emissiveFactor x emissiveStrength), above the " +
          std::to_string(kMaxEmissiveStrength) + " the renderer's 32-bit shading takes without overflow");
-  out.baseColorTexture = textureFor(pbr.baseColorTexture, true, out.name, "base colour");
-  out.metallicRoughnessTexture =
-      textureFor(pbr.metallicRoughnessTexture, false, out.name, "metallic-roughness");
-  out.normalTexture = textureFor(in.normalTexture, false, out.name, "normal");
-  out.occlusionTexture = textureFor(in.occlusionTexture, false, out.name, "occlusion");
-  out.emissiveTexture = textureFor(in.emissiveTexture, true, out.name, "emissive");
-  out.transforms[kBaseColorSlot] = textureTransform(pbr.baseColorTexture.extensions, name + " base colour");
-  out.transforms[kMetallicRoughnessSlot] =
-      textureTransform(pbr.metallicRoughnessTexture.extensions, name + " metallic-roughness");
-  out.transforms[kNormalSlot] = textureTransform(in.normalTexture.extensions, name + " normal");
-  out.transforms[kEmissiveSlot] = textureTransform(in.emissiveTexture.extensions, name + " emissive");
-  out.transforms[kOcclusionSlot] = textureTransform(in.occlusionTexture.extensions, name + " occlusion");
+  out.baseColorTexture =
+      textureFor(pbr.baseColorTexture, true, out.name, "base colour", out.transforms[kBaseColorSlot]);
+  out.metallicRoughnessTexture = textureFor(pbr.metallicRoughnessTexture, false, out.name,
+                                            "metallic-roughness", out.transforms[kMetallicRoughnessSlot]);
+  out.normalTexture = textureFor(in.normalTexture, false, out.name, "normal", out.transforms[kNormalSlot]);
+  out.occlusionTexture =
+      textureFor(in.occlusionTexture, false, out.name, "occlusion", out.transforms[kOcclusionSlot]);
+  out.emissiveTexture =
+      textureFor(in.emissiveTexture, true, out.name, "emissive", out.transforms[kEmissiveSlot]);
   return out;
 }
 
@@ -102,8 +99,10 @@ TextureTransform GltfImporter::textureTransform(const tinygltf::ExtensionMap& ex
 }
 
 template <typename Info>
-int GltfImporter::textureFor(const Info& info, bool srgb, const std::string& material, const char* slot) {
+int GltfImporter::textureFor(const Info& info, bool srgb, const std::string& material, const char* slot,
+                             TextureTransform& transform) {
   if (info.index < 0) return -1;
+  transform = textureTransform(info.extensions, "material " + inQuotes(material) + " " + slot);
   if (size_t(info.index) >= model_.textures.size()) {
     fail("material " + inQuotes(material) + " uses texture " + std::to_string(info.index) + " as its " +
          slot + " texture, but the file has " + std::to_string(model_.textures.size()) + " textures");

@@ -48,7 +48,9 @@ struct TextureTransform {
     const float c = std::cos(rotation), s = std::sin(rotation);
     return glm::mat2(glm::vec2(c * scale.x, -s * scale.x), glm::vec2(s * scale.y, c * scale.y));
   }
-  glm::vec2 apply(glm::vec2 uv) const { return linear() * uv + offset; }
+  glm::vec2 apply(glm::vec2 uv) const {
+    return rotation == 0.0f ? scale * uv + offset : linear() * uv + offset;
+  }
 };
 
 // A material's texture slots, in the order of Material::transforms and GpuMaterial's arrays.
@@ -81,6 +83,13 @@ struct Material {
   int occlusionTexture = -1;
   // KHR_texture_transform of each slot (TextureSlot order).
   std::array<TextureTransform, kTextureSlots> transforms{};
+
+  // The texture of `slot` (an index into Scene::textures, -1 when absent).
+  int texture(TextureSlot slot) const {
+    const int slots[kTextureSlots] = {baseColorTexture, metallicRoughnessTexture, normalTexture,
+                                      emissiveTexture, occlusionTexture};
+    return slots[slot];
+  }
 };
 
 // A contiguous run of triangles with one material. vertexOffset is added to every index.
