@@ -67,9 +67,9 @@ TEST_F(CliTest, IndexOutOfRange) {
 
 TEST_F(CliTest, UnsupportedRequiredExtension) {
   QuadGltf quad;
-  quad.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
-  quad.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
-  expectBadInput(render(quad.write(dir_, "draco").string()), {"draco.gltf", "KHR_draco_mesh_compression"});
+  quad.doc["extensionsUsed"] = {"KHR_texture_basisu"};
+  quad.doc["extensionsRequired"] = {"KHR_texture_basisu"};
+  expectBadInput(render(quad.write(dir_, "basisu").string()), {"basisu.gltf", "KHR_texture_basisu"});
 }
 
 TEST_F(CliTest, MissingTextureImageWarnsAndRenders) {

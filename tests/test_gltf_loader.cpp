@@ -592,6 +592,85 @@ TEST_F(GltfLoaderTest, MeshoptCompressedCave) {
   broken("expansion", "more than meshoptimizer", [](json& e) { e["count"] = 1 << 28; });
 }
 
+// KHR_draco_mesh_compression: assets/cave-draco/cave.glb (draco_transcoder with Blender's default
+// quantization: 14-bit positions, 10-bit normals) decodes to the cave's primitives, each with its
+// triangles and every vertex within its 14-bit grid of the original's (the meshes named as there); broken
+// extension values are InputErrors naming them.
+TEST_F(GltfLoaderTest, DracoCompressedCave) {
+  const fs::path glb = fs::path(LLL_ASSETS_DIR) / "cave-draco" / "cave.glb";
+  LoadReport report;
+  const Scene draco = loadGltf(glb, &report);
+  for (const std::string& warning : report.warnings) ADD_FAILURE() << "unexpected warning: " << warning;
+  const Scene cave = loadGltf(LLL_ASSETS_DIR "/cave/cave.gltf");
+  ASSERT_EQ(draco.meshes.size(), cave.meshes.size());
+  EXPECT_EQ(draco.triangleCount(), cave.triangleCount());
+  const auto corners = [](const Scene& scene, const Primitive& p) {
+    std::vector<glm::vec3> out;
+    for (uint32_t i = 0; i < p.indexCount; ++i)
+      out.push_back(scene.vertices[p.vertexOffset + scene.indices[p.firstIndex + i]].position);
+    return out;
+  };
+  for (const Mesh& original : cave.meshes) {  // the transcoder reorders the meshes
+    const auto found = std::find_if(draco.meshes.begin(), draco.meshes.end(),
+                                    [&](const Mesh& m) { return m.name == original.name; });
+    ASSERT_NE(found, draco.meshes.end()) << original.name;
+    const std::string& m = original.name;
+    ASSERT_EQ(found->primitives.size(), original.primitives.size()) << m;
+    for (size_t p = 0; p < original.primitives.size(); ++p) {
+      const std::vector<glm::vec3> a = corners(draco, found->primitives[p]);
+      const std::vector<glm::vec3> b = corners(cave, original.primitives[p]);
+      ASSERT_EQ(a.size(), b.size()) << "mesh " << m << " primitive " << p;
+      glm::vec3 lo(INFINITY), hi(-INFINITY);
+      for (const glm::vec3& v : b) lo = glm::min(lo, v), hi = glm::max(hi, v);
+      const float step = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / 16383.0f;
+      float worst = 0.0f;
+      for (const glm::vec3& v : a) {
+        float nearest = INFINITY;
+        for (const glm::vec3& w : b) nearest = std::min(nearest, glm::distance(v, w));
+        worst = std::max(worst, nearest);
+      }
+      EXPECT_LE(worst, step) << "mesh " << m << " primitive " << p;
+    }
+  }
+
+  std::ifstream in(glb, std::ios::binary);
+  const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  uint32_t jsonLength = 0, binLength = 0;
+  std::memcpy(&jsonLength, bytes.data() + 12, 4);
+  std::memcpy(&binLength, bytes.data() + 20 + jsonLength, 4);
+  const json doc = json::parse(bytes.begin() + 20, bytes.begin() + 20 + jsonLength);
+  writeBytes(dir_ / "cave.bin", bytes.data() + 28 + jsonLength, binLength);
+  const auto written = [&](json d, const std::string& name) {
+    d["buffers"][0]["uri"] = "cave.bin";
+    writeText(dir_ / (name + ".gltf"), d.dump());
+    return dir_ / (name + ".gltf");
+  };
+  const Scene text = loadGltf(written(doc, "cave"));
+  EXPECT_EQ(text.indices, draco.indices);
+  const json::json_pointer primitive("/meshes/0/primitives/0");
+  const auto broken = [&](const std::string& name, const std::string& detail, const auto& edit) {
+    json d = doc;
+    edit(d, d[primitive]["extensions"]["KHR_draco_mesh_compression"]);
+    expectInputError(written(d, name), detail);
+  };
+  const int view = doc[primitive]["extensions"]["KHR_draco_mesh_compression"]["bufferView"];
+  broken("truncated", "does not decode", [&](json& d, json&) {
+    d["bufferViews"][view]["byteLength"] = d["bufferViews"][view]["byteLength"].get<int>() / 2;
+  });
+  broken("notdraco", "not Draco data", [&](json& d, json&) {  // its "DRACO" header skipped
+    d["bufferViews"][view]["byteOffset"] = d["bufferViews"][view].value("byteOffset", 0) + 1;
+    d["bufferViews"][view]["byteLength"] = d["bufferViews"][view]["byteLength"].get<int>() - 1;
+  });
+  broken("view", "names bufferView 999", [](json&, json& e) { e["bufferView"] = 999; });
+  broken("attribute", "Draco attribute 7", [](json&, json& e) { e["attributes"]["NORMAL"] = 7; });
+  broken("negative", "not a non-negative integer", [](json&, json& e) { e["attributes"]["NORMAL"] = -1; });
+  broken("components", "components", [&](json& d, json&) {
+    d["accessors"][d[primitive]["attributes"]["NORMAL"].get<int>()]["type"] = "VEC2";
+  });
+  broken("fan", "mode 6", [&](json& d, json&) { d[primitive]["mode"] = 6; });
+  broken("noview", "needs a bufferView", [](json&, json& e) { e.erase("bufferView"); });
+}
+
 TEST(GltfAssets, CaveHasABlendedMaterial) {
   const Scene scene = loadGltf(LLL_ASSETS_DIR "/cave/cave.gltf");
   EXPECT_TRUE(std::any_of(scene.materials.begin(), scene.materials.end(),

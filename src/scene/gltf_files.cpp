@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <string_view>
 
 namespace lll::gltf_detail {
@@ -112,6 +113,49 @@ std::string oneLine(std::string text) {
     }
   }
   return text;
+}
+
+namespace {
+
+uint32_t read32(const std::vector<unsigned char>& bytes, size_t at) {
+  return uint32_t(bytes[at]) | uint32_t(bytes[at + 1]) << 8 | uint32_t(bytes[at + 2]) << 16 |
+         uint32_t(bytes[at + 3]) << 24;
+}
+
+void put32(std::vector<unsigned char>& out, uint32_t v) {
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
+}
+
+}  // namespace
+
+std::vector<unsigned char> withJsonEdited(const std::vector<unsigned char>& bytes, bool binary,
+                                          const std::string& marker,
+                                          const std::function<bool(nlohmann::json&)>& edit) {
+  size_t begin = 0, size = bytes.size();
+  if (binary) {
+    if (bytes.size() < 20) return bytes;  // tinygltf says what is wrong with it
+    begin = 20;
+    size = std::min<size_t>(read32(bytes, 12), bytes.size() - 20);
+  }
+  const std::string text(reinterpret_cast<const char*>(bytes.data() + begin), size);
+  if (text.find(marker) == std::string::npos) return bytes;
+  nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+  if (doc.is_discarded() || !edit(doc)) return bytes;
+  std::string json = doc.dump();
+  if (!binary) return {json.begin(), json.end()};
+  // The .glb again: header, the new JSON chunk (padded with spaces), then every chunk after the
+  // old one as it was.
+  while (json.size() % 4 != 0) json += ' ';
+  const size_t rest = begin + size;
+  std::vector<unsigned char> out(bytes.begin(), bytes.begin() + 12);
+  put32(out, uint32_t(json.size()));
+  put32(out, 0x4E4F534A);  // "JSON"
+  out.insert(out.end(), json.begin(), json.end());
+  const size_t restBegin = std::min(bytes.size(), (rest + 3) / 4 * 4);
+  out.insert(out.end(), bytes.begin() + std::ptrdiff_t(restBegin), bytes.end());
+  const uint32_t total = uint32_t(out.size());
+  std::memcpy(out.data() + 8, &total, 4);  // little-endian, as the .glb header
+  return out;
 }
 
 }  // namespace lll::gltf_detail

@@ -4,6 +4,8 @@
 // folder only, nothing written), and cheap checks on the JSON before tinygltf parses it.
 #include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,13 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
 bool looksLikeJsonObject(const std::vector<unsigned char>& bytes);
 // False when the JSON nests deeper than kMaxJsonNesting. Counts only brackets outside strings.
 bool jsonNestingWithinLimit(const unsigned char* text, size_t size);
+// The glTF's bytes (JSON, or a .glb) with its JSON rewritten by `edit`, where the JSON mentions
+// `marker` and `edit` returns true (it changed something); the bytes unchanged otherwise, and where
+// the JSON does not parse (tinygltf then says what is wrong with it). For what tinygltf would refuse
+// in files that an extension makes valid (data-less buffers and accessors).
+std::vector<unsigned char> withJsonEdited(const std::vector<unsigned char>& bytes, bool binary,
+                                          const std::string& marker,
+                                          const std::function<bool(nlohmann::json&)>& edit);
 // tinygltf's error text on one line, in printable ASCII (parse errors quote the raw bytes they met).
 std::string oneLine(std::string text);
 

@@ -5,6 +5,7 @@
 
 // Before the implementation macros: it includes tiny_gltf.h, whose implementation must come once.
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_draco.h"
 #include "scene/gltf_files.h"
 #include "scene/gltf_importer.h"
 #include "scene/gltf_meshopt.h"
@@ -44,9 +45,9 @@ namespace lll::gltf_detail {
 namespace {
 // Extensions we implement, and those a file may require that only refine the look when ignored
 // (IOR nudges dielectric reflectance), which get a warning when used.
-const std::set<std::string> kHandledExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                                  "KHR_mesh_quantization", "EXT_meshopt_compression",
-                                                  "KHR_texture_transform"};
+const std::set<std::string> kHandledExtensions = {
+    "KHR_lights_punctual",     "KHR_materials_emissive_strength", "KHR_mesh_quantization",
+    "EXT_meshopt_compression", "KHR_draco_mesh_compression",      "KHR_texture_transform"};
 const std::set<std::string> kIgnorableRequiredExtensions = {"KHR_materials_ior"};
 
 // tinygltf's image callback. We only keep the encoded bytes and decode later, for the images a
@@ -82,6 +83,7 @@ Scene GltfImporter::run() {
   parse();
   checkVersionAndExtensions();
   decodeMeshoptBufferViews(model_, file_);
+  decodeDracoPrimitives(model_, file_);
   checkBufferViews();
   images_.resize(model_.images.size());
   for (size_t i = 0; i < model_.materials.size(); ++i) {
@@ -118,7 +120,8 @@ void GltfImporter::parse() {
          " levels deep; no valid glTF needs that, so the file is corrupt or not glTF");
   }
   checkFieldTypes(reinterpret_cast<const char*>(bytes.data() + jsonBegin), jsonSize, file_);
-  bytes = withMeshoptFallbacksStubbed(bytes, binary);
+  bytes = withJsonEdited(bytes, binary, kMeshoptExtension, stubMeshoptFallbacks);
+  bytes = withJsonEdited(bytes, binary, kDracoExtension, dropDracoIndices);
 
   FileAccess access{std::filesystem::absolute(path_).parent_path().string()};
   tinygltf::TinyGLTF gltf;

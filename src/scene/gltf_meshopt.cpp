@@ -9,12 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/errors.h"
+#include "scene/gltf_numbers.h"
 
 namespace lll::gltf_detail {
 
 namespace {
 
-constexpr const char* kExtension = "EXT_meshopt_compression";
+constexpr const char* kExtension = kMeshoptExtension;
 // The most bytes one bufferView may decode to: what a glTF buffer may hold (gltf_files.cpp reads
 // files up to this size too).
 constexpr uint64_t kMaxDecodedBytes = std::numeric_limits<int32_t>::max();
@@ -28,27 +29,6 @@ constexpr const char* kStubUri = "data:application/octet-stream;base64,AAAAAA=="
   throw InputError(file + ": " + what);
 }
 
-uint32_t read32(const std::vector<unsigned char>& bytes, size_t at) {
-  return uint32_t(bytes[at]) | uint32_t(bytes[at + 1]) << 8 | uint32_t(bytes[at + 2]) << 16 |
-         uint32_t(bytes[at + 3]) << 24;
-}
-
-void put32(std::vector<unsigned char>& out, uint32_t v) {
-  for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
-}
-
-// A non-negative integer member of an extension object, or `fallback` where it is absent.
-uint64_t unsignedMember(const tinygltf::Value& object, const char* name, uint64_t fallback,
-                        const std::string& file, const std::string& where) {
-  if (!object.Has(name)) return fallback;
-  const tinygltf::Value& v = object.Get(name);
-  if (!v.IsNumber()) fail(file, where + "'s " + name + " is not a number");
-  const double d = v.GetNumberAsDouble();
-  if (!(d >= 0.0 && d <= 9007199254740992.0) || d != double(uint64_t(d)))
-    fail(file, where + "'s " + name + " is " + std::to_string(d) + ", not a non-negative integer");
-  return uint64_t(d);
-}
-
 std::string stringMember(const tinygltf::Value& object, const char* name, const std::string& fallback,
                          const std::string& file, const std::string& where) {
   if (!object.Has(name)) return fallback;
@@ -59,18 +39,8 @@ std::string stringMember(const tinygltf::Value& object, const char* name, const 
 
 }  // namespace
 
-std::vector<unsigned char> withMeshoptFallbacksStubbed(const std::vector<unsigned char>& bytes, bool binary) {
-  size_t begin = 0, size = bytes.size();
-  if (binary) {
-    if (bytes.size() < 20) return bytes;  // tinygltf says what is wrong with it
-    begin = 20;
-    size = std::min<size_t>(read32(bytes, 12), bytes.size() - 20);
-  }
-  const std::string text(reinterpret_cast<const char*>(bytes.data() + begin), size);
-  if (text.find(kExtension) == std::string::npos) return bytes;
-  nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
-  if (doc.is_discarded() || !doc.is_object() || !doc.contains("buffers") || !doc["buffers"].is_array())
-    return bytes;  // tinygltf reports the broken JSON
+bool stubMeshoptFallbacks(nlohmann::json& doc) {
+  if (!doc.is_object() || !doc.contains("buffers") || !doc["buffers"].is_array()) return false;
   bool stubbed = false;
   for (nlohmann::json& buffer : doc["buffers"]) {
     if (!buffer.is_object()) continue;
@@ -85,22 +55,7 @@ std::vector<unsigned char> withMeshoptFallbacksStubbed(const std::vector<unsigne
     buffer["byteLength"] = 4;
     stubbed = true;
   }
-  if (!stubbed) return bytes;
-  std::string json = doc.dump();
-  if (!binary) return {json.begin(), json.end()};
-  // The .glb again: header, the new JSON chunk (padded with spaces), then every chunk after the
-  // old one as it was.
-  while (json.size() % 4 != 0) json += ' ';
-  const size_t rest = begin + size;
-  std::vector<unsigned char> out(bytes.begin(), bytes.begin() + 12);
-  put32(out, uint32_t(json.size()));
-  put32(out, 0x4E4F534A);  // "JSON"
-  out.insert(out.end(), json.begin(), json.end());
-  const size_t restBegin = std::min(bytes.size(), (rest + 3) / 4 * 4);
-  out.insert(out.end(), bytes.begin() + std::ptrdiff_t(restBegin), bytes.end());
-  const uint32_t total = uint32_t(out.size());
-  std::memcpy(out.data() + 8, &total, 4);  // little-endian, as the .glb header
-  return out;
+  return stubbed;
 }
 
 void decodeMeshoptBufferViews(tinygltf::Model& model, const std::string& file) {

@@ -8,15 +8,16 @@
 #define TINYGLTF_NO_STB_IMAGE_WRITE  // as gltf_accessors.h
 #include <tiny_gltf.h>
 
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
 namespace lll::gltf_detail {
 
-// The glTF's bytes (JSON, or a .glb) with every buffer the extension marks as a fallback given a
-// 4-byte data URI in place of its missing data; the bytes unchanged where the JSON does not mention
-// the extension.
-std::vector<unsigned char> withMeshoptFallbacksStubbed(const std::vector<unsigned char>& bytes, bool binary);
+// The extension's name, and the edit of the glTF's JSON (gltf_files.h: withJsonEdited) that gives
+// every buffer it marks as a fallback a 4-byte data URI in place of its missing data.
+inline constexpr const char* kMeshoptExtension = "EXT_meshopt_compression";
+bool stubMeshoptFallbacks(nlohmann::json& doc);
 
 // Decodes every bufferView compressed with EXT_meshopt_compression into a new buffer of `model`
 // and points the bufferView at it.

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "scene/errors.h"
+#include "scene/gltf_accessors.h"  // tiny_gltf.h as the loader includes it
 
 namespace lll::gltf_detail {
 
@@ -48,6 +49,17 @@ void checkFiniteMatrix(const glm::mat4& m, const std::string& file, const std::s
             fmt::format("{}: {} is not finite as 32-bit floats (element [{}][{}] is {}); a "
                         "scale or translation is out of range",
                         file, what, column, row, m[column][row]));
+}
+
+uint64_t unsignedMember(const tinygltf::Value& object, const char* name, uint64_t fallback,
+                        const std::string& file, const std::string& where) {
+  if (!object.Has(name)) return fallback;
+  const tinygltf::Value& v = object.Get(name);
+  if (!v.IsNumber()) throw InputError(fmt::format("{}: {}'s {} is not a number", file, where, name));
+  const double d = v.GetNumberAsDouble();
+  if (!(d >= 0.0 && d <= 9007199254740992.0) || d != double(uint64_t(d)))
+    throw InputError(fmt::format("{}: {}'s {} is {}, not a non-negative integer", file, where, name, d));
+  return uint64_t(d);
 }
 
 }  // namespace lll::gltf_detail

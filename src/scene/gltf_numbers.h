@@ -2,9 +2,14 @@
 // Private to the glTF loader: glTF's numbers (JSON doubles) turned into the floats the renderer
 // uses. A value finite as a double can be infinite as a float (1e308) or round to zero (1e-300),
 // and either one makes NaN pixels, so each conversion checks the float it produces.
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
+
+namespace tinygltf {
+class Value;
+}
 
 namespace lll::gltf_detail {
 
@@ -33,5 +38,10 @@ class NumberReader {
 // Throws InputError unless every element of `m` is finite: the float matrix, not the double one
 // it was computed in (a node scale of 1e39 is finite only as a double).
 void checkFiniteMatrix(const glm::mat4& m, const std::string& file, const std::string& what);
+
+// A non-negative integer member `name` of an extension's JSON object, or `fallback` where it is
+// absent; InputError "<file>: <where>'s <name> ..." when it is not one.
+uint64_t unsignedMember(const tinygltf::Value& object, const char* name, uint64_t fallback,
+                        const std::string& file, const std::string& where);
 
 }  // namespace lll::gltf_detail
