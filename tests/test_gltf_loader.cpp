@@ -210,6 +210,50 @@ TEST_F(GltfLoaderTest, QuantizedAttributesWithKhrMeshQuantization) {
   expectInputError(b.writeGltf(dir_, "unsigned-normal"), "NORMAL");
 }
 
+// glTF's TEXCOORD_1 and COLOR_0 reach the vertices: the second set as given (floats or normalized
+// integers), colours as RGB (alpha 1) or RGBA in floats, normalized bytes or shorts, clamped into
+// [0, 1]; a texture's texCoord 1 is kept per slot; COLOR_0 of another type is an InputError.
+TEST_F(GltfLoaderTest, SecondTexCoordsAndVertexColorsAreRead) {
+  GltfBuilder b = quadScene();
+  json& attributes = b.doc["meshes"][0]["primitives"][0]["attributes"];
+  attributes["TEXCOORD_1"] =
+      b.addAccessor<uint16_t>({0, 0, 65535, 0, 65535, 32768, 0, 65535}, kUnsignedShort, "VEC2", true);
+  attributes["COLOR_0"] =
+      b.addAccessor<uint8_t>({255, 0, 0, 0, 255, 0, 0, 0, 255, 51, 102, 153}, kUnsignedByte, "VEC3", true);
+  writeBytes(dir_ / "checker.png", kPng2x2.data(), kPng2x2.size());
+  b.doc["images"] = json::array({{{"uri", "checker.png"}}});
+  b.doc["textures"] = json::array({{{"source", 0}}});
+  b.doc["materials"][0]["occlusionTexture"] = {{"index", 0}, {"texCoord", 1}};
+  b.doc["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
+  LoadReport report;
+  Scene scene = loadGltf(b.writeGltf(dir_, "sets"), &report);
+  EXPECT_FALSE(anyWarningContains(report, "TEXCOORD_1"));
+  EXPECT_FALSE(anyWarningContains(report, "COLOR_0"));
+  EXPECT_FALSE(anyWarningContains(report, "texCoord"));
+  ASSERT_EQ(scene.vertices.size(), 4u);
+  EXPECT_EQ(scene.vertices[2].uv1, glm::vec2(1.0f, 32768.0f / 65535.0f));
+  EXPECT_EQ(scene.vertices[3].uv1, glm::vec2(0.0f, 1.0f));
+  EXPECT_EQ(scene.vertices[0].rgba(), glm::vec4(1, 0, 0, 1));
+  const glm::vec4 last = scene.vertices[3].rgba();  // half floats: within 1/2048
+  expectVec3Near(glm::vec3(last), glm::vec3(0.2f, 0.4f, 0.6f), 5e-4f);
+  EXPECT_EQ(last.a, 1.0f);
+  EXPECT_EQ(scene.materials[0].texCoords[kOcclusionSlot], 1);
+  EXPECT_EQ(scene.materials[0].texCoords[kBaseColorSlot], 0);
+
+  attributes["COLOR_0"] =
+      b.addAccessor<float>({0.5f, 0.25f, 0.125f, 0.75f, 2, -1, 0, 1, 0, 0, 0, 0, 1, 1, 1, 0}, kFloat, "VEC4");
+  scene = loadGltf(b.writeGltf(dir_, "rgba"));
+  EXPECT_EQ(scene.vertices[0].rgba(), glm::vec4(0.5f, 0.25f, 0.125f, 0.75f));
+  EXPECT_EQ(scene.vertices[1].rgba(), glm::vec4(1, 0, 0, 1));  // clamped into [0, 1]
+  attributes["COLOR_0"] = b.addAccessor<uint16_t>(
+      {65535, 0, 0, 65535, 0, 65535, 0, 0, 0, 0, 65535, 65535, 0, 0, 0, 0}, kUnsignedShort, "VEC4", true);
+  EXPECT_EQ(loadGltf(b.writeGltf(dir_, "shorts")).vertices[2].rgba(), glm::vec4(0, 0, 1, 1));
+  attributes["COLOR_0"] = b.addAccessor<float>({1, 1, 1, 1, 1, 1, 1, 1}, kFloat, "VEC2");
+  expectInputError(b.writeGltf(dir_, "vec2"), "COLOR_0");
+  attributes["COLOR_0"] = b.addAccessor<float>({1, 1, 1, 1, 1, 1, 1, 1, 1}, kFloat, "VEC3");
+  expectInputError(b.writeGltf(dir_, "short"), "different count");
+}
+
 // KHR_texture_transform on a material's textures: offset, rotation and scale read per texture
 // (the identity where a texture has none), a texCoord in it counted like the texture's own, and
 // values of the wrong shape or not finite as 32-bit floats refused naming the texture.
@@ -240,10 +284,17 @@ TEST_F(GltfLoaderTest, TextureTransformsAreRead) {
 
   json& extension = b.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]
                          ["KHR_texture_transform"];
+  // Its texCoord replaces the texture's: set 1 is read, a later one warned about.
   extension["texCoord"] = 1;
+  LoadReport second;
+  EXPECT_EQ(loadGltf(b.writeGltf(dir_, "texcoord1"), &second).materials[0].texCoords[kBaseColorSlot], 1);
+  EXPECT_FALSE(anyWarningContains(second, "texCoord"));
+  extension["texCoord"] = 2;
   LoadReport other;
-  loadGltf(b.writeGltf(dir_, "texcoord"), &other);
+  EXPECT_EQ(loadGltf(b.writeGltf(dir_, "texcoord2"), &other).materials[0].texCoords[kBaseColorSlot], 0);
   EXPECT_TRUE(anyWarningContains(other, "texCoord"));
+  extension["texCoord"] = -1;
+  expectInputError(b.writeGltf(dir_, "texcoordneg"), "texCoord is not a non-negative integer");
   extension.erase("texCoord");
   extension["offset"] = {1};
   expectInputError(b.writeGltf(dir_, "short"), "KHR_texture_transform's offset is not two numbers");

@@ -1,10 +1,12 @@
-// KHR_texture_transform (scene.h's TextureTransform, shaders/common/texture_transform.glsl): a
-// material whose five textures share a transform (offset, rotation, scale) draws exactly what the
-// same material draws with the transform baked into the mesh's UVs, through every way a surface
-// is built: fragment shading (forward and lll on the geometry passes), the visibility buffer's
-// compute rebuild (hardware and compute rasterizer), deferred's G-buffer, glass, and an
-// alpha-masked material's coverage (the masked depth and visibility passes). And the transform
-// matters: without it the image is another.
+// KHR_texture_transform (scene.h's TextureTransform, shaders/common/texture_transform.glsl), glTF's
+// TEXCOORD_1 and COLOR_0: a material whose five textures share a transform (offset, rotation,
+// scale) draws exactly what the same material draws with the transform baked into the mesh's UVs;
+// textures that read TEXCOORD_1 (holding a transform baked in) draw what the transform draws on
+// TEXCOORD_0; vertex colours draw what the same colours draw as base colour factors. Each through
+// every way a surface is built: fragment shading (forward, lll and pre-pass on the geometry
+// passes), the visibility buffer's compute rebuild (hardware and compute rasterizer), deferred's
+// G-buffer, glass, and an alpha-masked material's coverage (the masked depth and visibility
+// passes). And each matters: without it the image is another.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -33,18 +35,36 @@ Texture makeTexture(const std::string& name, uint32_t size, bool srgb, F texel) 
   return t;
 }
 
-// A quad from `origin` along `u` and `v` (its normal u x v), UVs from `uv0` over `uvSize`, with
-// the tangent along u.
+// How transformScene's textured, masked and glass quads read their textures and colours.
+struct SceneVariant {
+  // TEXCOORD_0 with the materials' transforms on `transformed` slots (bits of TextureSlot), all
+  // slots' transforms baked into TEXCOORD_0 (`baked`), or the transforms baked into TEXCOORD_1,
+  // which the `transformed` slots read (`secondSet`).
+  uint32_t transformed = 0;
+  bool baked = false;
+  bool secondSet = false;
+  // A colour for the three quads (alpha too), as COLOR_0 of their vertices or, without
+  // `inVertices`, multiplied into their base colour factors; the masked material's cutoff.
+  glm::vec4 color{1.0f};
+  bool inVertices = false;
+  float maskCutoff = 0.5f;
+};
+
+// A quad from `origin` along `u` and `v` (its normal u x v), UVs from `uv0` over `uvSize` (through
+// `bake` into TEXCOORD_0, or into TEXCOORD_1 with `second`), with the tangent along u.
 void addQuad(Scene& scene, uint32_t material, glm::vec3 origin, glm::vec3 u, glm::vec3 v, glm::vec2 uv0,
-             glm::vec2 uvSize, const TextureTransform& bake) {
+             glm::vec2 uvSize, const TextureTransform& bake, bool second = false,
+             glm::vec4 color = glm::vec4(1.0f)) {
   const uint32_t first = uint32_t(scene.vertices.size());
   const glm::vec3 n = glm::normalize(glm::cross(u, v));
   for (const glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)}) {
     Vertex vertex;
     vertex.position = origin + c.x * u + c.y * v;
     vertex.normal = n;
-    vertex.uv = bake.apply(uv0 + c * uvSize);
+    vertex.uv = second ? uv0 + c * uvSize : bake.apply(uv0 + c * uvSize);
+    if (second) vertex.uv1 = bake.apply(uv0 + c * uvSize);
     vertex.tangent = glm::vec4(glm::normalize(u), 1.0f);
+    vertex.setColor(color);
     scene.vertices.push_back(vertex);
   }
   Mesh mesh;
@@ -55,11 +75,10 @@ void addQuad(Scene& scene, uint32_t material, glm::vec3 origin, glm::vec3 u, glm
   scene.instances.push_back({uint32_t(scene.meshes.size() - 1), glm::mat4(1.0f)});
 }
 
-// Textured, masked and glass quads over a floor. `transformed`: the materials carry the
-// transforms; otherwise they are baked into the UVs.
-Scene transformScene(bool transformed) {
+// Textured, masked and glass quads over a floor.
+Scene transformScene(const SceneVariant& variant) {
   Scene scene;
-  scene.name = transformed ? "transformed" : "baked";
+  scene.name = "transforms";
   const auto pattern = [](uint32_t x, uint32_t y) {
     return glm::u8vec4(40 + 13 * x, 60 + 11 * y, ((x ^ y) & 1) ? 220 : 50, 255);
   };
@@ -100,26 +119,40 @@ Scene transformScene(bool transformed) {
   Material masked;
   masked.baseColorTexture = 4;
   masked.alphaMode = AlphaMode::Mask;
+  masked.alphaCutoff = variant.maskCutoff;
   masked.doubleSided = true;
   masked.metallic = 0.0f;
   Material glass = textured;
   glass.baseColorFactor.a = 0.5f;
   glass.alphaMode = AlphaMode::Blend;
-  if (transformed) {
-    textured.transforms.fill(all);
-    glass.transforms.fill(all);
-    masked.transforms[kBaseColorSlot] = mask;
+  for (uint32_t slot = 0; slot < kTextureSlots; ++slot) {
+    if ((variant.transformed & (1u << slot)) == 0) continue;
+    if (variant.secondSet) {
+      textured.texCoords[slot] = glass.texCoords[slot] = 1;
+    } else {
+      textured.transforms[slot] = glass.transforms[slot] = all;
+    }
   }
+  if (variant.transformed & (1u << kBaseColorSlot)) {
+    if (variant.secondSet)
+      masked.texCoords[kBaseColorSlot] = 1;
+    else
+      masked.transforms[kBaseColorSlot] = mask;
+  }
+  const glm::vec4 vertexColor = variant.inVertices ? variant.color : glm::vec4(1.0f);
+  if (!variant.inVertices)
+    for (Material* m : {&textured, &masked, &glass}) m->baseColorFactor *= variant.color;
   scene.materials = {floor, textured, masked, glass};
   const TextureTransform none;
+  const bool bakes = variant.baked || variant.secondSet;
   addQuad(scene, 0, glm::vec3(-4, 0, 4), glm::vec3(8, 0, 0), glm::vec3(0, 0, -8), glm::vec2(0), glm::vec2(1),
           none);
   addQuad(scene, 1, glm::vec3(-2.2f, 0.1f, -0.5f), glm::vec3(2, 0, 0.3f), glm::vec3(0, 2, 0), glm::vec2(0.1f),
-          glm::vec2(1.3f), transformed ? none : all);
+          glm::vec2(1.3f), bakes ? all : none, variant.secondSet, vertexColor);
   addQuad(scene, 2, glm::vec3(0.3f, 0.1f, 0.2f), glm::vec3(1.8f, 0, -0.4f), glm::vec3(0, 1.8f, 0),
-          glm::vec2(-0.2f, 0.3f), glm::vec2(1.0f), transformed ? none : mask);
+          glm::vec2(-0.2f, 0.3f), glm::vec2(1.0f), bakes ? mask : none, variant.secondSet, vertexColor);
   addQuad(scene, 3, glm::vec3(-1.0f, 0.2f, 1.2f), glm::vec3(2.2f, 0, 0), glm::vec3(0, 1.2f, 0.2f),
-          glm::vec2(0.5f), glm::vec2(0.8f), transformed ? none : all);
+          glm::vec2(0.5f), glm::vec2(0.8f), bakes ? all : none, variant.secondSet, vertexColor);
   for (int i = 0; i < 3; ++i) {
     Light light;
     light.position = glm::vec3(-2.5f + 2.5f * float(i), 2.4f, 2.0f);
@@ -136,39 +169,82 @@ Scene transformScene(bool transformed) {
   return scene;
 }
 
-TEST(TextureTransform, DrawsWhatTheTransformBakedIntoTheUvsDraws) {
-  const Scene transformed = transformScene(true), baked = transformScene(false);
-  struct Path {
-    const char* name;
-    const char* technique;
-    const char* surfaces;
-    const char* raster;
-  };
-  for (const Path& p : {Path{"forward", "forward", "gbuffer", "hardware"},
-                        Path{"forward visibility", "forward", "visibility", "hardware"},
-                        Path{"lll visibility", "lll", "visibility", "hardware"},
-                        Path{"lll compute raster", "lll", "visibility", "compute"},
-                        Path{"lll fragment", "lll", "gbuffer", "hardware"},
-                        Path{"deferred", "deferred", "visibility", "hardware"},
-                        Path{"tiled", "tiled", "visibility", "hardware"}}) {
+constexpr uint32_t kAllSlots = (1u << kTextureSlots) - 1;
+
+struct Path {
+  const char* name;
+  const char* technique;
+  const char* surfaces;
+  const char* raster;
+};
+constexpr Path kPaths[] = {{"forward", "forward", "gbuffer", "hardware"},
+                           {"forward visibility", "forward", "visibility", "hardware"},
+                           {"lll visibility", "lll", "visibility", "hardware"},
+                           {"lll compute raster", "lll", "visibility", "compute"},
+                           {"lll fragment", "lll", "gbuffer", "hardware"},
+                           {"deferred", "deferred", "visibility", "hardware"},
+                           {"prepass", "prepass", "gbuffer", "hardware"},
+                           {"tiled", "tiled", "visibility", "hardware"}};
+
+// `a` and `b` draw the same image through every path (the last bits: the same texture
+// coordinates or colours, one computed in a shader and one on the CPU).
+void expectSameThroughEveryPath(const Scene& a, const Scene& b, const std::string& what) {
+  for (const Path& p : kPaths) {
     RenderSettings settings;
     settings.width = 160;
     settings.height = 90;
     settings.technique = p.technique;
     settings.surfaces = p.surfaces;
     settings.raster = p.raster;
-    const test::Rendered a = test::render(transformed, settings), b = test::render(baked, settings);
-    // The same texture coordinates, one computed in the shader and one on the CPU: the last bits.
-    test::expectWithinBound(a.ldr, b.ldr, test::kSameImage, std::string("transformed vs baked, ") + p.name);
-    EXPECT_GT(test::shareAboveBlack(b.ldr), 0.4) << p.name;  // the upper half is sky
+    const test::Rendered x = test::render(a, settings), y = test::render(b, settings);
+    test::expectWithinBound(x.ldr, y.ldr, test::kSameImage, what + ", " + p.name);
+    EXPECT_GT(test::shareAboveBlack(y.ldr), 0.4) << p.name;  // the upper half is sky
   }
-  // Without the transforms (the baked scene's materials on its original UVs) the image is another.
-  Scene ignored = transformScene(true);
-  for (Material& m : ignored.materials) m.transforms.fill(TextureTransform{});
+}
+
+double psnrOfDefaultRender(const Scene& a, const Scene& b) {
   RenderSettings settings;
   settings.width = 160;
   settings.height = 90;
-  EXPECT_LT(test::psnr(test::render(ignored, settings).ldr, test::render(baked, settings).ldr), 30.0);
+  return test::psnr(test::render(a, settings).ldr, test::render(b, settings).ldr);
+}
+
+TEST(TextureTransform, DrawsWhatTheTransformBakedIntoTheUvsDraws) {
+  const Scene transformed = transformScene({.transformed = kAllSlots});
+  const Scene baked = transformScene({.baked = true});
+  expectSameThroughEveryPath(transformed, baked, "transformed vs baked");
+  // Without the transforms (the baked scene's materials on its original UVs) the image is another.
+  EXPECT_LT(psnrOfDefaultRender(transformScene({}), baked), 30.0);
+}
+
+// glTF's TEXCOORD_1: the base colour, normal and occlusion textures read the second set (in which
+// the transform is baked), the others the first, as a lightmapped asset's occlusion would.
+TEST(TextureCoordinates, SecondSetDrawsWhatItsCoordinatesDraw) {
+  const uint32_t slots = 1u << kBaseColorSlot | 1u << kNormalSlot | 1u << kOcclusionSlot;
+  const Scene second = transformScene({.transformed = slots, .secondSet = true});
+  const Scene transformed = transformScene({.transformed = slots});
+  expectSameThroughEveryPath(second, transformed, "TEXCOORD_1 vs transformed TEXCOORD_0");
+  // Reading TEXCOORD_0 instead draws another image.
+  Scene first = second;
+  for (Material& m : first.materials) m.texCoords.fill(0);
+  EXPECT_LT(psnrOfDefaultRender(first, transformed), 30.0);
+}
+
+// glTF's COLOR_0 multiplies the base colour, its alpha the coverage: glass's blend and the masked
+// material's cutoff (0.8 against the colour's alpha 0.75 cuts the whole quad out).
+TEST(VertexColors, DrawWhatTheSameBaseColorFactorsDraw) {
+  // Exact in half floats; green 0 makes the pair (red, green) a denormal as a 32-bit float.
+  const glm::vec4 color(0.875f, 0.0f, 0.25f, 0.75f);
+  const Scene vertices = transformScene({.color = color, .inVertices = true, .maskCutoff = 0.8f});
+  const Scene factors = transformScene({.color = color, .maskCutoff = 0.8f});
+  expectSameThroughEveryPath(vertices, factors, "COLOR_0 vs base colour factors");
+  EXPECT_LT(psnrOfDefaultRender(transformScene({.maskCutoff = 0.8f}), factors), 30.0);
+  // The masked quad's coverage alone: white vertices keep it (alpha 1 passes 0.8).
+  EXPECT_LT(psnrOfDefaultRender(
+                transformScene(
+                    {.color = glm::vec4(glm::vec3(color), 1.0f), .inVertices = true, .maskCutoff = 0.8f}),
+                factors),
+            40.0);
 }
 
 // glTF's matrix: Translation x Rotation x Scale, with the rotation turning u towards -v.

@@ -4,5 +4,5 @@
 
 void main() {
   GpuMaterial m = materials[draw.ids.x];
-  if (materialAlpha(m, inUv) < m.alpha.x) discard;
+  if (materialAlpha(m, inUv, inUv1, inColor.a) < m.alpha.x) discard;
 }

@@ -10,6 +10,8 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec4 inTangent;
+layout(location = 4) in vec2 inUv1;
+layout(location = 5) in vec4 inColor;  // half floats (lll::Vertex::color)
 layout(location = 8) in mat4 inModel;
 layout(location = 12) in mat3 inNormalMatrix;
 
@@ -17,6 +19,8 @@ layout(location = 0) out vec3 outWorldPosition;
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec2 outUv;
 layout(location = 3) out vec4 outTangent;
+layout(location = 4) out vec2 outUv1;
+layout(location = 5) out vec4 outColor;
 
 invariant gl_Position;
 
@@ -25,6 +29,8 @@ void main() {
   outWorldPosition = world.xyz;
   outNormal = inNormalMatrix * inNormal;
   outUv = inUv;
+  outUv1 = inUv1;
+  outColor = inColor;
   // Tangents follow the surface (the model matrix, not the normal matrix); a mirroring transform
   // flips the bitangent's handedness.
   mat3 linear = mat3(inModel);

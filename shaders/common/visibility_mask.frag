@@ -13,11 +13,14 @@ layout(push_constant) uniform VisibilityBlock {
 
 layout(location = 0) flat in uint inRecord;
 layout(location = 1) in vec2 inUv;
+layout(location = 2) in vec2 inUv1;
+layout(location = 3) in float inAlpha;
 layout(location = 0) out uint outId;
 
 void main() {
   GpuMaterial m = materials[visibility.ids.y];
-  vec4 texel = sampleSlot(baseColorTexture, m, 0u, inUv, dFdx(inUv), dFdy(inUv));
-  if (m.baseColorFactor.a * texel.a < m.alpha.x) discard;
+  TexCoordSets c = TexCoordSets(inUv, dFdx(inUv), dFdy(inUv), inUv1, dFdx(inUv1), dFdy(inUv1));
+  vec4 texel = sampleSlot(baseColorTexture, m, 0u, c);
+  if (m.baseColorFactor.a * inAlpha * texel.a < m.alpha.x) discard;
   outId = (inRecord << kTriangleBits) | uint(gl_PrimitiveID);
 }

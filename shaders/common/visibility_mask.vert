@@ -5,6 +5,8 @@
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;
+layout(location = 4) in vec2 inUv1;
+layout(location = 5) in vec4 inColor;
 layout(location = 8) in mat4 inModel;
 
 layout(push_constant) uniform VisibilityBlock {
@@ -13,6 +15,8 @@ layout(push_constant) uniform VisibilityBlock {
 
 layout(location = 0) flat out uint outRecord;
 layout(location = 1) out vec2 outUv;
+layout(location = 2) out vec2 outUv1;
+layout(location = 3) out float outAlpha;
 
 invariant gl_Position;
 
@@ -20,5 +24,7 @@ void main() {
   vec4 world = inModel * vec4(inPosition, 1.0);
   outRecord = visibility.ids.x + uint(gl_InstanceIndex - gl_BaseInstance);
   outUv = inUv;
+  outUv1 = inUv1;
+  outAlpha = inColor.a;
   gl_Position = frame.viewProj * world;
 }

@@ -31,9 +31,11 @@ layout(std430, set = 0, binding = 16) readonly buffer SurfaceRecordBlock {
 layout(std430, set = 0, binding = 17) readonly buffer InstanceBlock {
   MeshInstance meshInstances[];
 };
-// lll::Vertex: position xyz, normal xyz, uv, tangent xyzw (12 floats).
+// lll::Vertex: position xyz, normal xyz, uv, tangent xyzw, uv1 (floats), colour as four half
+// floats: 16 words, read as bits (a pair of halves can be a denormal float, which a float load
+// might flush).
 layout(std430, set = 0, binding = 18) readonly buffer VertexBlock {
-  float vertexData[];
+  uint vertexData[];
 };
 layout(std430, set = 0, binding = 19) readonly buffer IndexBlock {
   uint sceneIndices[];
@@ -43,20 +45,36 @@ layout(set = 1, binding = 0) uniform sampler2D sceneTextures[kTextureCount];
 
 const uint kVisibilityGroupSize = 8u;
 
+// Whether any vertex of the scene has TEXCOORD_1 that a material reads, or a colour (COLOR_0)
+// other than white (VisibilityBuffer::surfaceConstants): a pass that sets them false neither
+// fetches nor interpolates them.
+layout(constant_id = 23) const bool kSceneHasSecondTexCoords = true;
+layout(constant_id = 24) const bool kSceneHasVertexColors = true;
+
 struct TriangleVertex {
   vec3 position;
   vec3 normal;
   vec2 uv;
   vec4 tangent;
+  vec2 uv1;
+  vec4 color;
 };
 
+float vertexFloat(uint word) {
+  return uintBitsToFloat(vertexData[word]);
+}
+
 TriangleVertex fetchVertex(uint index) {
-  uint b = index * 12u;
+  uint b = index * 16u;
   TriangleVertex v;
-  v.position = vec3(vertexData[b], vertexData[b + 1u], vertexData[b + 2u]);
-  v.normal = vec3(vertexData[b + 3u], vertexData[b + 4u], vertexData[b + 5u]);
-  v.uv = vec2(vertexData[b + 6u], vertexData[b + 7u]);
-  v.tangent = vec4(vertexData[b + 8u], vertexData[b + 9u], vertexData[b + 10u], vertexData[b + 11u]);
+  v.position = vec3(vertexFloat(b), vertexFloat(b + 1u), vertexFloat(b + 2u));
+  v.normal = vec3(vertexFloat(b + 3u), vertexFloat(b + 4u), vertexFloat(b + 5u));
+  v.uv = vec2(vertexFloat(b + 6u), vertexFloat(b + 7u));
+  v.tangent = vec4(vertexFloat(b + 8u), vertexFloat(b + 9u), vertexFloat(b + 10u), vertexFloat(b + 11u));
+  v.uv1 = kSceneHasSecondTexCoords ? vec2(vertexFloat(b + 12u), vertexFloat(b + 13u)) : vec2(0.0);
+  v.color = kSceneHasVertexColors
+                ? vec4(unpackHalf2x16(vertexData[b + 14u]), unpackHalf2x16(vertexData[b + 15u]))
+                : vec4(1.0);
   return v;
 }
 
@@ -83,6 +101,8 @@ struct SurfaceGeometry {
   vec4 tangent;
   vec2 uv;
   SurfaceDerivatives d;
+  vec2 uv1, duv1x, duv1y;  // TEXCOORD_1 and its derivatives
+  vec4 color;              // COLOR_0
   bool frontFacing;
   float viewDepth;
 };
@@ -115,6 +135,11 @@ SurfaceGeometry surfaceGeometry(uvec2 pixel, SurfaceRecord record, uint triangle
   g.d.duvx = dbx.x * du1 + dbx.y * du2;
   g.d.duvy = dby.x * du1 + dby.y * du2;
   g.uv = v0.uv + b.x * du1 + b.y * du2;
+  vec2 dv1 = v1.uv1 - v0.uv1, dv2 = v2.uv1 - v0.uv1;
+  g.duv1x = dbx.x * dv1 + dbx.y * dv2;
+  g.duv1y = dby.x * dv1 + dby.y * dv2;
+  g.uv1 = v0.uv1 + b.x * dv1 + b.y * dv2;
+  g.color = v0.color + b.x * (v1.color - v0.color) + b.y * (v2.color - v0.color);
   float w0 = 1.0 - b.x - b.y;
   mat3 normalMatrix =
       mat3(instance.normalMatrix[0].xyz, instance.normalMatrix[1].xyz, instance.normalMatrix[2].xyz);
@@ -147,10 +172,17 @@ vec4 sampleTextureTable(uint index, vec2 uv, SurfaceDerivatives d) {
   return textureLod(TEXTURE_TABLE(index), uv, lod);
 }
 
-// Texture `slot` of material `m` (texture table entry `index`) at the surface's TEXCOORD_0 `uv`,
-// through its KHR_texture_transform (explicit gradients: the test of the material's flag costs no
-// helper invocation here).
-vec4 sampleMaterialTexture(GpuMaterial m, uint slot, uint index, vec2 uv, SurfaceDerivatives d) {
+// Texture `slot` of material `m` (texture table entry `index`) at the surface's texture coordinates
+// (`g`: its TEXCOORD_0 or TEXCOORD_1), through its KHR_texture_transform (explicit gradients: the
+// tests of the material's flags cost no helper invocation here).
+vec4 sampleMaterialTexture(GpuMaterial m, uint slot, uint index, SurfaceGeometry g) {
+  bool second = kSceneHasSecondTexCoords && usesSecondTexCoord(m, slot);
+  vec2 uv = second ? g.uv1 : g.uv;
+  SurfaceDerivatives d = g.d;
+  if (second) {
+    d.duvx = g.duv1x;
+    d.duvy = g.duv1y;
+  }
   if (hasTextureTransform(m)) {
     uv = textureCoordinates(m, slot, uv);
     d.duvx = textureCoordinatesDerivative(m, slot, d.duvx);
@@ -160,12 +192,12 @@ vec4 sampleMaterialTexture(GpuMaterial m, uint slot, uint index, vec2 uv, Surfac
 }
 
 // The five textures of material `m` at the surface.
-void sampleMaterial(GpuMaterial m, vec2 uv, SurfaceDerivatives d, inout MaterialSamples t) {
-  t.baseColor = sampleMaterialTexture(m, 0u, m.textures.x, uv, d);
-  t.metallicRoughness = sampleMaterialTexture(m, 1u, m.textures.y, uv, d);
-  t.normal = sampleMaterialTexture(m, 2u, m.textures.z, uv, d).xyz;
-  t.emissive = sampleMaterialTexture(m, 3u, m.textures.w, uv, d).rgb;
-  t.occlusion = sampleMaterialTexture(m, 4u, m.flags.w, uv, d).r;
+void sampleMaterial(GpuMaterial m, SurfaceGeometry g, inout MaterialSamples t) {
+  t.baseColor = sampleMaterialTexture(m, 0u, m.textures.x, g);
+  t.metallicRoughness = sampleMaterialTexture(m, 1u, m.textures.y, g);
+  t.normal = sampleMaterialTexture(m, 2u, m.textures.z, g).xyz;
+  t.emissive = sampleMaterialTexture(m, 3u, m.textures.w, g).rgb;
+  t.occlusion = sampleMaterialTexture(m, 4u, m.flags.w, g).r;
 }
 
 // The surface at `pixel`, or false where the visibility pass drew nothing (or `inside` is false:
@@ -181,6 +213,8 @@ bool rebuildSurface(uvec2 pixel, bool inside, out Surface s, out float viewDepth
   g.tangent = vec4(0.0);
   g.uv = vec2(0.0);
   g.d = SurfaceDerivatives(vec3(0.0), vec3(0.0), vec2(0.0), vec2(0.0));
+  g.uv1 = g.duv1x = g.duv1y = vec2(0.0);
+  g.color = vec4(1.0);
   g.frontFacing = true;
   g.viewDepth = 0.0;
   if (covered) {
@@ -188,7 +222,6 @@ bool rebuildSurface(uvec2 pixel, bool inside, out Surface s, out float viewDepth
     g = surfaceGeometry(pixel, record, id & ((1u << kTriangleBits) - 1u));
   }
   viewDepth = g.viewDepth;
-  vec2 uv = g.uv;
   SurfaceDerivatives d = g.d;
 
   // Levels of detail come from the rays' derivatives: in compute there are no quads.
@@ -200,7 +233,7 @@ bool rebuildSurface(uvec2 pixel, bool inside, out Surface s, out float viewDepth
   t.emissive = vec3(1.0);
   t.occlusion = 1.0;
 #ifdef LLL_NONUNIFORM_TEXTURES
-  if (covered) sampleMaterial(m, uv, d, t);
+  if (covered) sampleMaterial(m, g, t);
 #else
   // Without non-uniform indexing (lavapipe), a loop over the materials the workgroup sees: each
   // round takes the smallest material not yet done, so the texture index is the same for the
@@ -217,16 +250,21 @@ bool rebuildSurface(uvec2 pixel, bool inside, out Surface s, out float viewDepth
     barrier();
     if (chosen == 0xFFFFFFFFu) break;
     if (mine == chosen) {
-      sampleMaterial(materials[chosen], uv, d, t);
+      sampleMaterial(materials[chosen], g, t);
       mine = 0xFFFFFFFFu;
     }
   }
 #endif
   // The derivative tangent frame follows the normal texture's coordinates (material.glsl).
+  if (kSceneHasSecondTexCoords && usesSecondTexCoord(m, 2u)) {
+    d.duvx = g.duv1x;
+    d.duvy = g.duv1y;
+  }
   if (hasTextureTransform(m)) {
     d.duvx = textureCoordinatesDerivative(m, 2u, d.duvx);
     d.duvy = textureCoordinatesDerivative(m, 2u, d.duvy);
   }
+  t.baseColor *= g.color;
   s = assembleSurface(m, t, g.position, g.normal, g.tangent, d, g.frontFacing);
   return covered;
 }

@@ -45,6 +45,9 @@ LLL_CONST(uint, kNoSurface, 0xFFFFFFFFu);
 LLL_CONST(uint, kMaterialNormalTexture, 1u);
 // GpuMaterial.flags.z: some texture of the material has a KHR_texture_transform.
 LLL_CONST(uint, kMaterialTextureTransform, 256u);
+// GpuMaterial.flags.z: bit kMaterialSecondTexCoord << slot (common/texture_transform.glsl's slots)
+// where that texture reads TEXCOORD_1.
+LLL_CONST(uint, kMaterialSecondTexCoord, 512u);
 
 // FrameUniforms.display.x: how the tonemap pass treats the HDR image.
 LLL_CONST(uint, kDisplayFilmic, 0u);

@@ -19,14 +19,17 @@ struct RayScene::State {
   RTCScene rtcScene = nullptr;
   std::vector<uint32_t> triangleMaterial;  // per triangle
   std::vector<glm::vec2> cornerUv;         // 3 per triangle
+  std::vector<glm::vec2> cornerUv1;        // 3 per triangle
+  std::vector<glm::vec4> cornerColor;      // 3 per triangle
   std::vector<glm::vec3> cornerNormal;     // 3 per triangle, world space
   std::vector<float> materialCutoff;       // per material: the mask cutoff, or -1 when not masked
 
   float alphaAt(uint32_t triangle, float u, float v) const {
     const Material& m = scene->materials[triangleMaterial[triangle]];
-    const glm::vec2* c = &cornerUv[3 * size_t(triangle)];
-    return m.baseColorFactor.a *
-           sampleMaterialTexture(*scene, m, kBaseColorSlot, (1.0f - u - v) * c[0] + u * c[1] + v * c[2]).a;
+    const size_t first = 3 * size_t(triangle);
+    const auto at = [&](const auto* c) { return (1.0f - u - v) * c[0] + u * c[1] + v * c[2]; };
+    return m.baseColorFactor.a * at(&cornerColor[first]).a *
+           sampleMaterialTexture(*scene, m, kBaseColorSlot, at(&cornerUv[first]), at(&cornerUv1[first])).a;
   }
 
   ~State() {
@@ -56,9 +59,11 @@ float decodeSrgb(uint8_t value) {
 
 }  // namespace
 
-glm::vec4 sampleMaterialTexture(const Scene& scene, const Material& m, TextureSlot slot, glm::vec2 uv) {
+glm::vec4 sampleMaterialTexture(const Scene& scene, const Material& m, TextureSlot slot, glm::vec2 uv,
+                                glm::vec2 uv1) {
   const int texture = m.texture(slot);
-  return texture >= 0 ? sampleTexture(scene.textures[size_t(texture)], m.transforms[slot].apply(uv))
+  return texture >= 0 ? sampleTexture(scene.textures[size_t(texture)],
+                                      m.transforms[slot].apply(m.texCoords[slot] == 1 ? uv1 : uv))
                       : glm::vec4(1.0f);
 }
 
@@ -109,6 +114,8 @@ RayScene::RayScene(const Scene& scene, Keep keep) : state_(std::make_unique<Stat
           indices.push_back(uint32_t(positions.size()));
           positions.push_back(glm::vec3(instance.transform * glm::vec4(v.position, 1.0f)));
           s.cornerUv.push_back(v.uv);
+          s.cornerUv1.push_back(v.uv1);
+          s.cornerColor.push_back(v.rgba());
           s.cornerNormal.push_back(normalMatrix * v.normal);
         }
         s.triangleMaterial.push_back(p.material);
@@ -186,8 +193,13 @@ std::optional<RayHit> RayScene::intersect(const glm::vec3& origin, const glm::ve
   hit.normal = glm::dot(n, direction) > 0.0f ? -n : n;
   const uint32_t triangle = rh.hit.primID;
   hit.material = state_->triangleMaterial[triangle];
-  const glm::vec2* c = &state_->cornerUv[3 * size_t(triangle)];
-  hit.uv = (1.0f - rh.hit.u - rh.hit.v) * c[0] + rh.hit.u * c[1] + rh.hit.v * c[2];
+  const size_t first = 3 * size_t(triangle);
+  const auto at = [&](const auto* c) {
+    return (1.0f - rh.hit.u - rh.hit.v) * c[0] + rh.hit.u * c[1] + rh.hit.v * c[2];
+  };
+  hit.uv = at(&state_->cornerUv[first]);
+  hit.uv1 = at(&state_->cornerUv1[first]);
+  hit.color = at(&state_->cornerColor[first]);
   const glm::vec3* cn = &state_->cornerNormal[3 * size_t(triangle)];
   const glm::vec3 shading = (1.0f - rh.hit.u - rh.hit.v) * cn[0] + rh.hit.u * cn[1] + rh.hit.v * cn[2];
   const float shadingLength = glm::length(shading);
@@ -214,20 +226,24 @@ MaterialSample RayScene::materialAt(const RayHit& hit) const {
   const Scene& scene = *state_->scene;
   const Material& m = scene.materials[hit.material];
   MaterialSample r;
-  r.baseColor = m.baseColorFactor * sampleMaterialTexture(scene, m, kBaseColorSlot, hit.uv);
-  const glm::vec4 metallicRoughness = sampleMaterialTexture(scene, m, kMetallicRoughnessSlot, hit.uv);
+  r.baseColor =
+      m.baseColorFactor * hit.color * sampleMaterialTexture(scene, m, kBaseColorSlot, hit.uv, hit.uv1);
+  const glm::vec4 metallicRoughness =
+      sampleMaterialTexture(scene, m, kMetallicRoughnessSlot, hit.uv, hit.uv1);
   r.metallic = glm::clamp(m.metallic * metallicRoughness.b, 0.0f, 1.0f);
   r.roughness = glm::clamp(m.roughness * metallicRoughness.g, 0.0f, 1.0f);
   r.emissive = m.emissiveFactor * m.emissiveStrength *
-               glm::vec3(sampleMaterialTexture(scene, m, kEmissiveSlot, hit.uv));
+               glm::vec3(sampleMaterialTexture(scene, m, kEmissiveSlot, hit.uv, hit.uv1));
   return r;
 }
 
 SurfaceResponse RayScene::surfaceAt(const RayHit& hit) const {
   const Scene& scene = *state_->scene;
   const Material& m = scene.materials[hit.material];
-  const glm::vec4 base = m.baseColorFactor * sampleMaterialTexture(scene, m, kBaseColorSlot, hit.uv);
-  const float metallic = m.metallic * sampleMaterialTexture(scene, m, kMetallicRoughnessSlot, hit.uv).b;
+  const glm::vec4 base =
+      m.baseColorFactor * hit.color * sampleMaterialTexture(scene, m, kBaseColorSlot, hit.uv, hit.uv1);
+  const float metallic =
+      m.metallic * sampleMaterialTexture(scene, m, kMetallicRoughnessSlot, hit.uv, hit.uv1).b;
   SurfaceResponse r;
   r.albedo = glm::clamp(glm::vec3(base) * (1.0f - glm::clamp(metallic, 0.0f, 1.0f)), 0.0f, 1.0f);
   r.coverage = m.alphaMode == AlphaMode::Blend ? glm::clamp(base.a, 0.0f, 1.0f) : 1.0f;

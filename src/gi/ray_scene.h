@@ -18,6 +18,8 @@ struct RayHit {
   glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit geometric normal, turned to face the ray's origin
   uint32_t material = 0;               // index into Scene::materials
   glm::vec2 uv{0.0f};                  // TEXCOORD_0 at the hit
+  glm::vec2 uv1{0.0f};                 // TEXCOORD_1
+  glm::vec4 color{1.0f};               // COLOR_0, multiplying the base colour
   // The interpolated vertex normal, on the geometric normal's side: the normal the renderer shades
   // with where a material has no normal map (the geometric normal where the mesh's is degenerate).
   glm::vec3 shadingNormal{0.0f, 0.0f, 1.0f};
@@ -80,8 +82,10 @@ class RayScene {
 // Linear RGBA of a texture at `uv`, bilinear with repeat wrapping (glTF's default sampler);
 // sRGB-encoded textures are decoded.
 glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv);
-// Material `m`'s texture of `slot` at TEXCOORD_0 `uv` through its KHR_texture_transform; white
-// where the material has none (as the renderer's stand-ins).
-glm::vec4 sampleMaterialTexture(const Scene& scene, const Material& m, TextureSlot slot, glm::vec2 uv);
+// Material `m`'s texture of `slot` at TEXCOORD_0 `uv` or TEXCOORD_1 `uv1` (the slot's
+// Material::texCoords) through its KHR_texture_transform; white where the material has none (as
+// the renderer's stand-ins).
+glm::vec4 sampleMaterialTexture(const Scene& scene, const Material& m, TextureSlot slot, glm::vec2 uv,
+                                glm::vec2 uv1);
 
 }  // namespace lll::gi

@@ -226,6 +226,8 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
       {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
       {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
+      {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv1)},
+      {5, 0, VK_FORMAT_R16G16B16A16_SFLOAT, offsetof(Vertex, color)},
   };
   // Mesh passes add the frame's instances in draw order at binding 1, one gpu::MeshInstance per
   // instance: the model matrix at locations 8-11, the normal matrix at 12-14.

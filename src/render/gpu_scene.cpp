@@ -161,7 +161,14 @@ void GpuScene::uploadGeometry() {
   indices_.upload(std::span<const uint32_t>(scene_.indices));
   std::vector<glm::vec3> positions;
   positions.reserve(scene_.vertices.size());
-  for (const Vertex& v : scene_.vertices) positions.push_back(v.position);
+  const glm::uvec2 white(Vertex::kWhiteHalf2);
+  for (const Vertex& v : scene_.vertices) {
+    positions.push_back(v.position);
+    vertexColors_ |= v.color != white;
+  }
+  for (const Material& m : scene_.materials)
+    for (uint32_t slot = 0; slot < kTextureSlots; ++slot)
+      secondTexCoords_ |= m.texCoords[slot] == 1 && m.texture(TextureSlot(slot)) >= 0;
   positions_ = Buffer(context_, positions.size() * sizeof(glm::vec3),
                       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                       MemoryUse::Device, "positions");
@@ -226,6 +233,7 @@ void GpuScene::uploadMaterials() {
     for (uint32_t slot = 0; slot < kTextureSlots; ++slot) {
       const TextureTransform& t = m.transforms[slot];
       if (!t.identity()) textures |= gpu::kMaterialTextureTransform;
+      if (m.texCoords[slot] == 1) textures |= gpu::kMaterialSecondTexCoord << slot;
       const glm::mat2 linear = t.linear();
       g.uvMatrix[slot] = glm::vec4(linear[0], linear[1]);
       g.uvOffset[slot / 2][2 * (slot % 2)] = t.offset.x;

@@ -61,6 +61,11 @@ class GpuScene {
   // Whether local lights cast shadows this run (--shadows all): set by the renderer before any pass
   // specializes its light evaluation on it (lightTypeConstants, render/frame.h).
   bool shadowedLights() const { return shadowedLights_; }
+  // Whether a material reads TEXCOORD_1 for one of its textures, and whether a vertex has a
+  // colour other than white (glTF's COLOR_0): the visibility surface rebuild specializes on them
+  // (VisibilityBuffer::surfaceConstants).
+  bool secondTexCoords() const { return secondTexCoords_; }
+  bool vertexColors() const { return vertexColors_; }
   void setShadowedLights(bool on) { shadowedLights_ = on; }
 
   // Geometry for passes that fetch it themselves: the visibility pass's position-only stream
@@ -139,6 +144,8 @@ class GpuScene {
   uint32_t firstTrailingVpl_ = 0;
   bool vplsTrail_ = true;
   bool shadowedLights_ = false;
+  bool secondTexCoords_ = false;
+  bool vertexColors_ = false;
   std::vector<Image> textures_;  // scene textures, then neutral white, neutral normal, black
   std::vector<DrawItem> draws_;  // grouped by material
   std::vector<std::vector<uint32_t>> meshInstances_;  // the instances of each mesh

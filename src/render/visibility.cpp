@@ -17,6 +17,8 @@ namespace {
 constexpr uint32_t kTriangleBitsConstant = 20;
 constexpr uint32_t kTextureCountConstant = 21;
 constexpr uint32_t kComputedLevelOfDetailConstant = 22;
+constexpr uint32_t kSecondTexCoordsConstant = 23;
+constexpr uint32_t kVertexColorsConstant = 24;
 
 bool masked(const GpuScene& scene, const DrawItem& d) {
   return scene.scene().materials[d.material].alphaMode == AlphaMode::Mask;
@@ -233,7 +235,9 @@ void VisibilityBuffer::bindSurfaceData(DescriptorWriter& writer, const FrameCont
 SpecializationConstants VisibilityBuffer::surfaceConstants(const GpuScene& scene) const {
   return {{kTriangleBitsConstant, triangleBits_},
           {kTextureCountConstant, scene.textureCount()},
-          {kComputedLevelOfDetailConstant, context_.isCpuDevice() ? 1u : 0u}};
+          {kComputedLevelOfDetailConstant, context_.isCpuDevice() ? 1u : 0u},
+          {kSecondTexCoordsConstant, scene.secondTexCoords() ? 1u : 0u},
+          {kVertexColorsConstant, scene.vertexColors() ? 1u : 0u}};
 }
 
 std::string VisibilityBuffer::surfaceShader(const std::string& shader) const {

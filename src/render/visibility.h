@@ -42,7 +42,8 @@ class VisibilityBuffer {
 
   // What common/visibility_surface.glsl reads, at its bindings (16 to 20).
   void bindSurfaceData(DescriptorWriter& writer, const FrameContext& frame) const;
-  // Its specialization constants (the id layout, the texture table's length).
+  // Its specialization constants (the id layout, the texture table's length, whether the scene's
+  // vertices have TEXCOORD_1 that a material reads and colours).
   SpecializationConstants surfaceConstants(const GpuScene& scene) const;
   // The variant of `shader` (a name ending in ".comp" that includes visibility_surface.glsl) this
   // device runs: "<name>_nonuniform.comp" where it indexes the texture table non-uniformly, which

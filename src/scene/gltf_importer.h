@@ -61,11 +61,13 @@ class GltfImporter {
   }
 
   Material convertMaterial(const tinygltf::Material& in, int index);
-  TextureTransform textureTransform(const tinygltf::ExtensionMap& extensions, const std::string& what);
+  // A texture's KHR_texture_transform; its texCoord, where it gives one, replaces `texCoord`.
+  TextureTransform textureTransform(const tinygltf::ExtensionMap& extensions, const std::string& what,
+                                    int& texCoord);
+  // The texture that `info` names for `material`'s `slot` (-1: none, or a neutral one), with the
+  // slot's transform and texture coordinates set in `material`; `name` names the slot in messages.
   template <typename Info>
-  // The texture a material's `slot` names (-1: none, or a neutral one), and its transform.
-  int textureFor(const Info& info, bool srgb, const std::string& material, const char* slot,
-                 TextureTransform& transform);
+  int textureFor(const Info& info, bool srgb, const char* name, TextureSlot slot, Material& material);
   const DecodedImage& decodeImage(int index);
   std::string imageName(int index) const;
 

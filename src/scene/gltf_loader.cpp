@@ -207,7 +207,9 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
   checkFinite(positions, where + " POSITION");
   std::vector<float> normals;
   std::vector<float> uvs;
+  std::vector<float> uvs1;
   std::vector<float> tangents;
+  std::vector<float> colors;  // RGBA, alpha 1 where the file gives RGB
   for (const auto& [attribute, accessor] : primitive.attributes) {
     if (attribute == "NORMAL") {
       normals = readAccessor<float>(accessor, where + " NORMAL", TINYGLTF_TYPE_VEC3,
@@ -219,12 +221,31 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
       uvs = readAccessor<float>(
           accessor, where + " TEXCOORD_0", TINYGLTF_TYPE_VEC2,
           quantized_ ? Components::QuantizedTexCoord : Components::FloatOrNormalizedUnsigned);
+    } else if (attribute == "TEXCOORD_1") {
+      uvs1 = readAccessor<float>(
+          accessor, where + " TEXCOORD_1", TINYGLTF_TYPE_VEC2,
+          quantized_ ? Components::QuantizedTexCoord : Components::FloatOrNormalizedUnsigned);
+    } else if (attribute == "COLOR_0") {
+      const bool rgb = accessor >= 0 && size_t(accessor) < model_.accessors.size() &&
+                       model_.accessors[size_t(accessor)].type == TINYGLTF_TYPE_VEC3;
+      colors =
+          readAccessor<float>(accessor, where + " COLOR_0", rgb ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4,
+                              Components::FloatOrNormalizedUnsigned);
+      checkFinite(colors, where + " COLOR_0");
+      if (rgb) {
+        std::vector<float> rgba;
+        rgba.reserve(colors.size() / 3 * 4);
+        for (size_t i = 0; i + 2 < colors.size(); i += 3)
+          rgba.insert(rgba.end(), {colors[i], colors[i + 1], colors[i + 2], 1.0f});
+        colors = std::move(rgba);
+      }
     } else if (attribute != "POSITION") {
       ignoredAttributes_.insert(attribute);
     }
   }
   checkFinite(normals, where + " NORMAL");
   checkFinite(uvs, where + " TEXCOORD_0");
+  checkFinite(uvs1, where + " TEXCOORD_1");
   if (hasZeroNormal(normals)) {
     // glTF requires unit normals; an accessor with no bufferView reads as all zeros. Without a
     // usable normal the triangle's own one is what glTF prescribes when NORMAL is absent.
@@ -232,9 +253,11 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
     normals.clear();
   }
   if ((!normals.empty() && normals.size() / 3 != vertexCount) ||
-      (!uvs.empty() && uvs.size() / 2 != vertexCount) ||
+      (!uvs.empty() && uvs.size() / 2 != vertexCount) || (!uvs1.empty() && uvs1.size() / 2 != vertexCount) ||
+      (!colors.empty() && colors.size() / 4 != vertexCount) ||
       (!tangents.empty() && tangents.size() / 4 != vertexCount)) {
-    fail(where + " has NORMAL, TANGENT or TEXCOORD_0 with a different count than POSITION (" +
+    fail(where +
+         " has NORMAL, TANGENT, TEXCOORD_0, TEXCOORD_1 or COLOR_0 with a different count than POSITION (" +
          std::to_string(vertexCount) + "); all attributes of a primitive must have the same count");
   }
   // glTF: tangents are ignored where normals are not given (flat shading builds its own frame).
@@ -286,6 +309,9 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
     if (!normals.empty()) v.normal = glm::make_vec3(&normals[size_t(i) * 3]);
     if (!uvs.empty()) v.uv = glm::make_vec2(&uvs[size_t(i) * 2]);
     if (!tangents.empty()) v.tangent = glm::make_vec4(&tangents[size_t(i) * 4]);
+    if (!uvs1.empty()) v.uv1 = glm::make_vec2(&uvs1[size_t(i) * 2]);
+    // glTF colours lie in [0, 1]; half floats hold them to 1/2048.
+    if (!colors.empty()) v.setColor(glm::clamp(glm::make_vec4(&colors[size_t(i) * 4]), 0.0f, 1.0f));
     return v;
   };
   if (!normals.empty()) {
@@ -561,10 +587,10 @@ void GltfImporter::addCamera(int cameraIndex, int nodeIndex, const glm::dmat4& w
 void GltfImporter::warnAboutIgnoredData() {
   if (!ignoredAttributes_.empty()) {
     warn("vertex attribute(s) " + describeList(ignoredAttributes_) +
-         " are ignored; only POSITION, NORMAL, TANGENT and TEXCOORD_0 are used");
+         " are ignored; only POSITION, NORMAL, TANGENT, TEXCOORD_0, TEXCOORD_1 and COLOR_0 are used");
   }
   if (usesOtherTexCoords_)
-    warn("some textures use a texCoord other than 0; TEXCOORD_0 is used for all of them");
+    warn("some textures use a texCoord other than 0 and 1; TEXCOORD_0 is used for them");
   if (hasMorphTargets_) warn("morph targets are ignored; meshes are drawn in their base shape");
   if (!model_.skins.empty()) warn("skins are ignored; skinned meshes are drawn in their bind pose");
   if (!model_.animations.empty()) warn("animations are ignored; the scene is drawn in its rest pose");

@@ -58,21 +58,18 @@ Material GltfImporter::convertMaterial(const tinygltf::Material& in, int index) 
   if (emission > double(kMaxEmissiveStrength))
     fail(name + " emits " + std::to_string(emission) + " (emissiveFactor x emissiveStrength), above the " +
          std::to_string(kMaxEmissiveStrength) + " the renderer's 32-bit shading takes without overflow");
-  out.baseColorTexture =
-      textureFor(pbr.baseColorTexture, true, out.name, "base colour", out.transforms[kBaseColorSlot]);
-  out.metallicRoughnessTexture = textureFor(pbr.metallicRoughnessTexture, false, out.name,
-                                            "metallic-roughness", out.transforms[kMetallicRoughnessSlot]);
-  out.normalTexture = textureFor(in.normalTexture, false, out.name, "normal", out.transforms[kNormalSlot]);
-  out.occlusionTexture =
-      textureFor(in.occlusionTexture, false, out.name, "occlusion", out.transforms[kOcclusionSlot]);
-  out.emissiveTexture =
-      textureFor(in.emissiveTexture, true, out.name, "emissive", out.transforms[kEmissiveSlot]);
+  out.baseColorTexture = textureFor(pbr.baseColorTexture, true, "base colour", kBaseColorSlot, out);
+  out.metallicRoughnessTexture =
+      textureFor(pbr.metallicRoughnessTexture, false, "metallic-roughness", kMetallicRoughnessSlot, out);
+  out.normalTexture = textureFor(in.normalTexture, false, "normal", kNormalSlot, out);
+  out.occlusionTexture = textureFor(in.occlusionTexture, false, "occlusion", kOcclusionSlot, out);
+  out.emissiveTexture = textureFor(in.emissiveTexture, true, "emissive", kEmissiveSlot, out);
   return out;
 }
 
 // A texture's KHR_texture_transform (identity without one); `what` names the texture.
 TextureTransform GltfImporter::textureTransform(const tinygltf::ExtensionMap& extensions,
-                                                const std::string& what) {
+                                                const std::string& what, int& texCoord) {
   TextureTransform t;
   const auto found = extensions.find("KHR_texture_transform");
   if (found == extensions.end()) return t;
@@ -92,22 +89,36 @@ TextureTransform GltfImporter::textureTransform(const tinygltf::ExtensionMap& ex
     if (!e.Get("rotation").IsNumber()) fail(name + " has a rotation that is not a number");
     t.rotation = numbers_.finite(e.Get("rotation").GetNumberAsDouble(), name + " rotation");
   }
-  // Its texCoord replaces the texture's own; only TEXCOORD_0 is read (warned about at the end).
-  if (e.Has("texCoord") && !(e.Get("texCoord").IsNumber() && e.Get("texCoord").GetNumberAsInt() == 0))
-    usesOtherTexCoords_ = true;
+  // Its texCoord replaces the texture's own.
+  if (e.Has("texCoord")) {
+    const tinygltf::Value& v = e.Get("texCoord");
+    const double d = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
+    if (!(d >= 0.0 && d <= 1e9) || d != std::floor(d))
+      fail(name + "'s texCoord is not a non-negative integer");
+    texCoord = int(d);
+  }
   return t;
 }
 
 template <typename Info>
-int GltfImporter::textureFor(const Info& info, bool srgb, const std::string& material, const char* slot,
-                             TextureTransform& transform) {
+int GltfImporter::textureFor(const Info& info, bool srgb, const char* slot, TextureSlot slotIndex,
+                             Material& out) {
   if (info.index < 0) return -1;
-  transform = textureTransform(info.extensions, "material " + inQuotes(material) + " " + slot);
+  const std::string& material = out.name;
+  int texCoord = info.texCoord;
+  out.transforms[slotIndex] =
+      textureTransform(info.extensions, "material " + inQuotes(material) + " " + slot, texCoord);
+  // TEXCOORD_0 and TEXCOORD_1 are kept (a primitive without the set reads zeros, as without
+  // TEXCOORD_0); a later set is read as TEXCOORD_0, warned about at the end.
+  if (texCoord < 0)
+    fail("material " + inQuotes(material) + "'s " + slot + " texture has texCoord " +
+         std::to_string(texCoord) + "; glTF's texture coordinate sets start at 0");
+  if (texCoord == 1) out.texCoords[slotIndex] = 1;
+  if (texCoord > 1) usesOtherTexCoords_ = true;
   if (size_t(info.index) >= model_.textures.size()) {
     fail("material " + inQuotes(material) + " uses texture " + std::to_string(info.index) + " as its " +
          slot + " texture, but the file has " + std::to_string(model_.textures.size()) + " textures");
   }
-  if (info.texCoord != 0) usesOtherTexCoords_ = true;
   const int image = model_.textures[size_t(info.index)].source;
   if (image < 0) {
     warn("material " + inQuotes(material) + ": its " + slot + " texture " + std::to_string(info.index) +
