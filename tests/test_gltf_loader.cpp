@@ -254,6 +254,45 @@ TEST_F(GltfLoaderTest, SecondTexCoordsAndVertexColorsAreRead) {
   expectInputError(b.writeGltf(dir_, "short"), "different count");
 }
 
+// glTF's samplers reach each texture: wrap modes, magnification and minification filters (mipmapped
+// or not); one image under two samplers is two textures; an undefined filter is trilinear; values
+// glTF does not define are InputErrors naming the sampler.
+TEST_F(GltfLoaderTest, SamplersAreRead) {
+  GltfBuilder b = quadScene();
+  writeBytes(dir_ / "checker.png", kPng2x2.data(), kPng2x2.size());
+  b.doc["images"] = json::array({{{"uri", "checker.png"}}});
+  b.doc["samplers"] = json::array(
+      {{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}, {"minFilter", 9984}}, {{"minFilter", 9729}}});
+  b.doc["textures"] = json::array({{{"source", 0}, {"sampler", 0}}, {{"source", 0}, {"sampler", 1}}, {{"source", 0}}});
+  b.doc["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
+  b.doc["materials"][0]["emissiveTexture"] = {{"index", 1}};
+  b.doc["materials"][0]["occlusionTexture"] = {{"index", 2}};
+  const Scene scene = loadGltf(b.writeGltf(dir_, "samplers"));
+  const Material& m = scene.materials[0];
+  ASSERT_EQ(scene.textures.size(), 3u);  // base colour, emissive and occlusion: three samplers
+  const TextureSampler& first = scene.textures[size_t(m.baseColorTexture)].sampler;
+  EXPECT_EQ(first.wrapU, TextureWrap::ClampToEdge);
+  EXPECT_EQ(first.wrapV, TextureWrap::MirroredRepeat);
+  EXPECT_EQ(first.magnify, TextureFilter::Nearest);
+  EXPECT_EQ(first.minify, TextureFilter::Nearest);
+  EXPECT_EQ(first.mip, MipFilter::Nearest);
+  const TextureSampler& second = scene.textures[size_t(m.emissiveTexture)].sampler;
+  EXPECT_EQ(second.wrapU, TextureWrap::Repeat);
+  EXPECT_EQ(second.minify, TextureFilter::Linear);
+  EXPECT_EQ(second.mip, MipFilter::None);
+  EXPECT_EQ(scene.textures[size_t(m.occlusionTexture)].sampler, TextureSampler{});
+
+  b.doc["samplers"][1]["wrapT"] = 1234;
+  expectInputError(b.writeGltf(dir_, "wrap"), "sampler 1 has wrapT 1234");
+  b.doc["samplers"][1] = {{"magFilter", 9984}};
+  expectInputError(b.writeGltf(dir_, "mag"), "sampler 1 has magFilter 9984");
+  b.doc["samplers"][1] = {{"minFilter", 42}};
+  expectInputError(b.writeGltf(dir_, "min"), "sampler 1 has minFilter 42");
+  b.doc["samplers"][1] = json::object();
+  b.doc["textures"][1]["sampler"] = 7;
+  expectInputError(b.writeGltf(dir_, "missing"), "sampler 7");
+}
+
 // KHR_texture_transform on a material's textures: offset, rotation and scale read per texture
 // (the identity where a texture has none), a texCoord in it counted like the texture's own, and
 // values of the wrong shape or not finite as 32-bit floats refused naming the texture.

@@ -70,20 +70,29 @@ glm::vec4 sampleMaterialTexture(const Scene& scene, const Material& m, TextureSl
 glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv) {
   if (texture.width == 0 || texture.height == 0) return glm::vec4(1.0f);
   const float x = uv.x * float(texture.width) - 0.5f, y = uv.y * float(texture.height) - 0.5f;
-  const float fx = std::floor(x), fy = std::floor(y);
-  const float tx = x - fx, ty = y - fy;
-  auto wrap = [](float i, uint32_t n) {
+  // Texel i of a row or column of n, as the sampler's wrap mode addresses it.
+  auto wrap = [](float i, uint32_t n, TextureWrap mode) {
     const int64_t m = int64_t(n);
-    const int64_t k = int64_t(std::fmod(double(i), double(m)));
-    return uint32_t(k < 0 ? k + m : k);
+    if (mode == TextureWrap::ClampToEdge) return uint32_t(std::clamp<double>(i, 0.0, double(m - 1)));
+    const int64_t period = mode == TextureWrap::MirroredRepeat ? 2 * m : m;
+    int64_t k = int64_t(std::fmod(double(i), double(period)));
+    if (k < 0) k += period;
+    return uint32_t(k < m ? k : period - 1 - k);
   };
   auto texel = [&](float ix, float iy) {
-    const size_t at = (size_t(wrap(iy, texture.height)) * texture.width + wrap(ix, texture.width)) * 4;
+    const size_t at = (size_t(wrap(iy, texture.height, texture.sampler.wrapV)) * texture.width +
+                       wrap(ix, texture.width, texture.sampler.wrapU)) *
+                      4;
     const uint8_t* p = &texture.rgba[at];
     if (texture.srgb)
       return glm::vec4(decodeSrgb(p[0]), decodeSrgb(p[1]), decodeSrgb(p[2]), float(p[3]) / 255.0f);
     return glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
   };
+  // The base level, magnified: the sampler's magnification filter.
+  if (texture.sampler.magnify == TextureFilter::Nearest)
+    return texel(std::floor(x + 0.5f), std::floor(y + 0.5f));
+  const float fx = std::floor(x), fy = std::floor(y);
+  const float tx = x - fx, ty = y - fy;
   return glm::mix(glm::mix(texel(fx, fy), texel(fx + 1, fy), tx),
                   glm::mix(texel(fx, fy + 1), texel(fx + 1, fy + 1), tx), ty);
 }

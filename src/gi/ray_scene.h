@@ -79,8 +79,8 @@ class RayScene {
   double surfaceArea_ = 0.0;
 };
 
-// Linear RGBA of a texture at `uv`, bilinear with repeat wrapping (glTF's default sampler);
-// sRGB-encoded textures are decoded.
+// Linear RGBA of a texture's base level at `uv`, wrapped and filtered (bilinear or nearest) as its
+// sampler magnifies; sRGB-encoded textures are decoded.
 glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv);
 // Material `m`'s texture of `slot` at TEXCOORD_0 `uv` or TEXCOORD_1 `uv1` (the slot's
 // Material::texCoords) through its KHR_texture_transform; white where the material has none (as

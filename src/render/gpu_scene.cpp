@@ -54,6 +54,36 @@ uint32_t mipLevelsFor(uint32_t width, uint32_t height) {
 }
 
 // Uploads RGBA8 pixels and fills the mip chain by successive linear blits.
+VkSamplerAddressMode addressMode(TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::ClampToEdge:
+      return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case TextureWrap::MirroredRepeat:
+      return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    case TextureWrap::Repeat:
+      break;
+  }
+  return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+VkSampler createSampler(Context& context, const TextureSampler& sampler) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = sampler.magnify == TextureFilter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+  info.minFilter = sampler.minify == TextureFilter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+  info.mipmapMode =
+      sampler.mip == MipFilter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = addressMode(sampler.wrapU);
+  info.addressModeV = addressMode(sampler.wrapV);
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  // Without mip levels: the base level only, still choosing the minification filter where the
+  // texture shrinks (Vulkan's equivalent of OpenGL's non-mipmapped filters: maxLod 0.25 with
+  // nearest mip selection).
+  info.maxLod = sampler.mip == MipFilter::None ? 0.25f : VK_LOD_CLAMP_NONE;
+  VkSampler out = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &out));
+  return out;
+}
+
 Image makeTexture(Context& context, const Texture& texture) {
   // lavapipe (Mesa 22.3) crashes in LLVM compiling textureLod of an 8-bit UNORM texture through a
   // sampler array indexed at run time (the visibility path's table, common/visibility_surface.glsl;
@@ -148,7 +178,7 @@ GpuScene::~GpuScene() {
   vkDestroyDescriptorPool(device, descriptorPool_, nullptr);
   vkDestroyDescriptorSetLayout(device, materialSetLayout_, nullptr);
   vkDestroyDescriptorSetLayout(device, textureTableLayout_, nullptr);
-  vkDestroySampler(device, sampler_, nullptr);
+  for (VkSampler sampler : samplers_) vkDestroySampler(device, sampler, nullptr);
 }
 
 void GpuScene::uploadGeometry() {
@@ -269,12 +299,17 @@ void GpuScene::uploadTextures() {
   for (const Texture& texture : scene_.textures) textures_.push_back(makeTexture(context_, texture));
   textures_.push_back(makeTexture(context_, solidTexture("white", 255, 255, 255, 255)));
   textures_.push_back(makeTexture(context_, solidTexture("flat-normal", 128, 128, 255, 255)));
-  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = info.minFilter = VK_FILTER_LINEAR;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
-  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  info.maxLod = VK_LOD_CLAMP_NONE;
-  VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &sampler_));
+  // One Vulkan sampler for each distinct glTF sampler; the stand-ins take the default.
+  for (size_t i = 0; i < textures_.size(); ++i) {
+    const TextureSampler wanted = i < scene_.textures.size() ? scene_.textures[i].sampler : TextureSampler{};
+    auto known = std::find(samplerKinds_.begin(), samplerKinds_.end(), wanted);
+    if (known == samplerKinds_.end()) {
+      samplers_.push_back(createSampler(context_, wanted));
+      samplerKinds_.push_back(wanted);
+      known = samplerKinds_.end() - 1;
+    }
+    textureSamplers_.push_back(samplers_[size_t(known - samplerKinds_.begin())]);
+  }
 }
 
 void GpuScene::createMaterialSets() {
@@ -309,7 +344,8 @@ void GpuScene::createMaterialSets() {
     VkDescriptorImageInfo images[kTexturesPerMaterial];
     VkWriteDescriptorSet writes[kTexturesPerMaterial];
     for (uint32_t i = 0; i < kTexturesPerMaterial; ++i) {
-      images[i] = {sampler_, textures_[slots[i]].view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+      images[i] = {textureSamplers_[slots[i]], textures_[slots[i]].view(),
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
       writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
       writes[i].dstSet = materialSets_[m];
       writes[i].dstBinding = i;
@@ -358,8 +394,8 @@ void GpuScene::createTextureTable() {
   allocInfo.pSetLayouts = &textureTableLayout_;
   VK_CHECK(vkAllocateDescriptorSets(context_.device(), &allocInfo, &textureTable_));
   std::vector<VkDescriptorImageInfo> images;
-  for (const Image& texture : textures_)
-    images.push_back({sampler_, texture.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+  for (size_t i = 0; i < textures_.size(); ++i)
+    images.push_back({textureSamplers_[i], textures_[i].view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   write.dstSet = textureTable_;
   write.dstBinding = 0;

@@ -156,7 +156,10 @@ class GpuScene {
   std::vector<uint32_t> meshVisible_;
   std::vector<DrawRun> blendRuns_;  // this frame: blended draws, back to front
   uint32_t visibleInstances_ = 0;
-  VkSampler sampler_ = VK_NULL_HANDLE;
+  // The distinct samplers of the scene's textures (glTF's samplers), and each texture's.
+  std::vector<VkSampler> samplers_;
+  std::vector<TextureSampler> samplerKinds_;  // samplers_[i] is samplerKinds_[i]
+  std::vector<VkSampler> textureSamplers_;    // per entry of textures_
   VkDescriptorSetLayout materialSetLayout_ = VK_NULL_HANDLE;
   VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
   std::vector<VkDescriptorSet> materialSets_;

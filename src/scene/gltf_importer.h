@@ -14,6 +14,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -68,6 +69,8 @@ class GltfImporter {
   // slot's transform and texture coordinates set in `material`; `name` names the slot in messages.
   template <typename Info>
   int textureFor(const Info& info, bool srgb, const char* name, TextureSlot slot, Material& material);
+  // glTF sampler `index` (-1: the default) as the renderer's.
+  TextureSampler textureSampler(int index);
   const DecodedImage& decodeImage(int index);
   std::string imageName(int index) const;
 
@@ -91,8 +94,9 @@ class GltfImporter {
   Scene scene_;
   std::vector<std::string> warnings_;
   gltf_detail::NumberReader numbers_{file_, warnings_};
-  std::vector<DecodedImage> images_;                  // per glTF image, decoded on first use
-  std::map<std::pair<int, bool>, int> textureIndex_;  // (glTF image, srgb) -> Scene::textures
+  std::vector<DecodedImage> images_;  // per glTF image, decoded on first use
+  // (glTF image, srgb, glTF sampler) -> Scene::textures
+  std::map<std::tuple<int, bool, int>, int> textureIndex_;
   std::optional<uint32_t> defaultMaterial_;
   std::map<uint32_t, Bounds> meshBounds_;        // object-space bounds of each placed mesh
   std::map<uint32_t, uint32_t> reversedMeshes_;  // a mesh's reversed copy, for mirroring nodes

@@ -129,7 +129,10 @@ int GltfImporter::textureFor(const Info& info, bool srgb, const char* slot, Text
     fail("texture " + std::to_string(info.index) + " refers to image " + std::to_string(image) +
          ", but the file has " + std::to_string(model_.images.size()) + " images");
   }
-  if (auto known = textureIndex_.find({image, srgb}); known != textureIndex_.end()) return known->second;
+  const int samplerIndex = model_.textures[size_t(info.index)].sampler;
+  const TextureSampler sampler = textureSampler(samplerIndex);
+  if (auto known = textureIndex_.find({image, srgb, samplerIndex}); known != textureIndex_.end())
+    return known->second;
 
   const DecodedImage& decoded = decodeImage(image);
   if (!decoded.failure.empty()) {
@@ -143,10 +146,68 @@ int GltfImporter::textureFor(const Info& info, bool srgb, const char* slot, Text
   texture.height = decoded.height;
   texture.rgba = decoded.rgba;
   texture.srgb = srgb;
+  texture.sampler = sampler;
   scene_.textures.push_back(std::move(texture));
   const int index = int(scene_.textures.size() - 1);
-  textureIndex_[{image, srgb}] = index;
+  textureIndex_[{image, srgb, samplerIndex}] = index;
   return index;
+}
+
+TextureSampler GltfImporter::textureSampler(int index) {
+  TextureSampler out;
+  if (index < 0) return out;
+  if (size_t(index) >= model_.samplers.size())
+    fail("a texture refers to sampler " + std::to_string(index) + ", but the file has " +
+         std::to_string(model_.samplers.size()) + " samplers");
+  const tinygltf::Sampler& in = model_.samplers[size_t(index)];
+  const std::string where = "sampler " + std::to_string(index);
+  const auto wrap = [&](int value, const char* field) {
+    switch (value) {
+      case TINYGLTF_TEXTURE_WRAP_REPEAT:
+        return TextureWrap::Repeat;
+      case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+        return TextureWrap::ClampToEdge;
+      case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+        return TextureWrap::MirroredRepeat;
+      default:
+        fail(where + " has " + field + " " + std::to_string(value) +
+             "; glTF allows 33071 (clamp to edge), 33648 (mirrored repeat) and 10497 (repeat)");
+    }
+  };
+  out.wrapU = wrap(in.wrapS, "wrapS");
+  out.wrapV = wrap(in.wrapT, "wrapT");
+  if (in.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) {
+    out.magnify = TextureFilter::Nearest;
+  } else if (in.magFilter != -1 && in.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR) {
+    fail(where + " has magFilter " + std::to_string(in.magFilter) +
+         "; glTF allows 9728 (nearest) and 9729 (linear)");
+  }
+  // minFilter: 9728 + (0 nearest, 1 linear), or 9984 + (nearest or linear texel) + 2 (linear mip).
+  switch (in.minFilter) {
+    case -1:
+      break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST:
+      out.minify = TextureFilter::Nearest, out.mip = MipFilter::None;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR:
+      out.mip = MipFilter::None;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+      out.minify = TextureFilter::Nearest, out.mip = MipFilter::Nearest;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+      out.mip = MipFilter::Nearest;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+      out.minify = TextureFilter::Nearest;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
+      break;
+    default:
+      fail(where + " has minFilter " + std::to_string(in.minFilter) +
+           "; glTF allows 9728, 9729 and 9984 to 9987 (nearest, linear, and their mipmapped forms)");
+  }
+  return out;
 }
 
 const GltfImporter::DecodedImage& GltfImporter::decodeImage(int index) {

@@ -133,6 +133,10 @@ const Fields kCamera = {
     {"name", Kind::String}, {"type", Kind::String}, {"perspective", Kind::Object, &kPerspective}};
 const Fields kImage = {{"uri", Kind::String}, {"bufferView", Kind::Integer}, {"mimeType", Kind::String}};
 const Fields kTexture = {{"sampler", Kind::Integer}, {"source", Kind::Integer}};
+const Fields kSampler = {{"magFilter", Kind::Integer},
+                         {"minFilter", Kind::Integer},
+                         {"wrapS", Kind::Integer},
+                         {"wrapT", Kind::Integer}};
 const Fields kPrimitive = {{"attributes", Kind::IntegerValues},
                            {"indices", Kind::Integer},
                            {"material", Kind::Integer},
@@ -160,6 +164,7 @@ const Fields kRoot = {{"accessors", Kind::Objects, &kAccessor},
                       {"nodes", Kind::Objects, &kNode},
                       {"scene", Kind::Integer},
                       {"scenes", Kind::Objects, &kScene},
+                      {"samplers", Kind::Objects, &kSampler},
                       {"textures", Kind::Objects, &kTexture},
                       {"extensions", Kind::Object, &kRootExtensions}};
 

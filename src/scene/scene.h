@@ -5,6 +5,7 @@
 // layer uploads it; techniques only read it.
 #include <array>
 #include <cmath>
+#include <compare>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
@@ -34,6 +35,24 @@ static_assert(sizeof(Vertex) == 64);
 
 enum class AlphaMode : uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
 
+// glTF's sampler of a texture: how coordinates outside [0, 1] wrap and how texels are filtered
+// when the texture is magnified and minified. The default is glTF's repeat with trilinear
+// filtering (the renderer's choice where a file leaves filters undefined).
+enum class TextureWrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
+enum class TextureFilter : uint8_t { Linear, Nearest };
+// How a minified texture's mip levels are used: blended between the two nearest, the nearest one,
+// or none (the base level only, glTF's NEAREST and LINEAR minification filters).
+enum class MipFilter : uint8_t { Linear, Nearest, None };
+struct TextureSampler {
+  TextureWrap wrapU = TextureWrap::Repeat;
+  TextureWrap wrapV = TextureWrap::Repeat;
+  TextureFilter magnify = TextureFilter::Linear;
+  TextureFilter minify = TextureFilter::Linear;
+  MipFilter mip = MipFilter::Linear;
+  bool operator==(const TextureSampler&) const = default;
+  auto operator<=>(const TextureSampler&) const = default;
+};
+
 // Decoded 8-bit RGBA pixels; colour textures are sRGB-encoded, data textures linear.
 struct Texture {
   std::string name;  // where it came from, for messages
@@ -41,6 +60,7 @@ struct Texture {
   uint32_t height = 0;
   std::vector<uint8_t> rgba;  // width * height * 4
   bool srgb = false;
+  TextureSampler sampler;
 };
 
 // KHR_texture_transform of one of a material's textures: the texture is sampled at
