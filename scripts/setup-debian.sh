@@ -7,7 +7,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc spirv-tools
   libglm-dev libstb-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libtinyexr-dev gnuplot-nox libspirv-cross-c-shared-dev libembree-dev libtbb-dev
-  libmeshoptimizer-dev libdraco-dev
+  libmeshoptimizer-dev libdraco-dev libwebp-dev
   clang-14 libclang-rt-14-dev
   libglfw3-dev libimgui-dev xvfb xauth
 )

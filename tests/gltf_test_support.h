@@ -37,6 +37,13 @@ inline const std::vector<uint8_t> kPng2x2 = {
     0x24, 0x00, 0x00, 0x00, 0x13, 0x49, 0x44, 0x41, 0x54, 0x78, 0xda, 0x63, 0xf8, 0xcf, 0xc0, 0xf0,
     0x1f, 0x0c, 0x81, 0x34, 0x08, 0x34, 0x00, 0x00, 0x49, 0x49, 0x09, 0x78, 0x9c, 0x51, 0x17, 0x92,
     0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+// A 2 x 2 lossless WebP (EXT_texture_webp) of red, green at half alpha, blue and clear white.
+inline const std::vector<uint8_t> kWebp2x2 = {
+    82,  73,  70,  70,  48, 0,  0,  0,   87,  69, 66,  80,  86,  80,  56,  76,  35,  0, 0,
+    0,   47,  1,   64,  0,  16, 31, 48,  255, 2,  130, 34,  255, 71,  219, 127, 129, 0, 193,
+    185, 115, 193, 141, 42, 65, 77, 219, 6,   44, 126, 147, 142, 136, 254, 199, 1,   0};
+inline const std::vector<uint8_t> kWebp2x2Rgba = {255, 0, 0,   255, 0,   255, 0,   128,
+                                                  0,   0, 255, 255, 255, 255, 255, 0};
 inline const std::vector<uint8_t> kPng2x2Rgba = {255, 0, 0,   255, 0,   255, 0,   255,
                                                  0,   0, 255, 255, 255, 255, 255, 128};
 

@@ -261,9 +261,11 @@ TEST_F(GltfLoaderTest, SamplersAreRead) {
   GltfBuilder b = quadScene();
   writeBytes(dir_ / "checker.png", kPng2x2.data(), kPng2x2.size());
   b.doc["images"] = json::array({{{"uri", "checker.png"}}});
-  b.doc["samplers"] = json::array(
-      {{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}, {"minFilter", 9984}}, {{"minFilter", 9729}}});
-  b.doc["textures"] = json::array({{{"source", 0}, {"sampler", 0}}, {{"source", 0}, {"sampler", 1}}, {{"source", 0}}});
+  b.doc["samplers"] =
+      json::array({{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}, {"minFilter", 9984}},
+                   {{"minFilter", 9729}}});
+  b.doc["textures"] =
+      json::array({{{"source", 0}, {"sampler", 0}}, {{"source", 0}, {"sampler", 1}}, {{"source", 0}}});
   b.doc["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
   b.doc["materials"][0]["emissiveTexture"] = {{"index", 1}};
   b.doc["materials"][0]["occlusionTexture"] = {{"index", 2}};
@@ -291,6 +293,39 @@ TEST_F(GltfLoaderTest, SamplersAreRead) {
   b.doc["samplers"][1] = json::object();
   b.doc["textures"][1]["sampler"] = 7;
   expectInputError(b.writeGltf(dir_, "missing"), "sampler 7");
+}
+
+// EXT_texture_webp: a texture's WebP source is decoded (libwebp) in place of its PNG fallback,
+// required or not; a WebP without a fallback decodes too; a broken one is warned about and a
+// neutral texture stands in, as for a broken PNG.
+TEST_F(GltfLoaderTest, WebpTexturesAreDecoded) {
+  GltfBuilder b = quadScene();
+  writeBytes(dir_ / "checker.png", kPng2x2.data(), kPng2x2.size());
+  writeBytes(dir_ / "colours.webp", kWebp2x2.data(), kWebp2x2.size());
+  b.doc["images"] = json::array({{{"uri", "checker.png"}}, {{"uri", "colours.webp"}}});
+  b.doc["textures"] = json::array({{{"source", 0}, {"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}}});
+  b.doc["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
+  b.doc["extensionsUsed"] = {"EXT_texture_webp"};
+  LoadReport report;
+  Scene scene = loadGltf(b.writeGltf(dir_, "fallback"), &report);
+  for (const std::string& warning : report.warnings) ADD_FAILURE() << "unexpected warning: " << warning;
+  ASSERT_EQ(scene.textures.size(), 1u);
+  EXPECT_EQ(scene.textures[0].width, 2u);
+  EXPECT_EQ(scene.textures[0].rgba, kWebp2x2Rgba);
+
+  b.doc["textures"][0].erase("source");
+  b.doc["extensionsRequired"] = {"EXT_texture_webp"};
+  EXPECT_EQ(loadGltf(b.writeGltf(dir_, "required")).textures[0].rgba, kWebp2x2Rgba);
+
+  std::vector<uint8_t> broken = kWebp2x2;
+  broken.resize(30);
+  writeBytes(dir_ / "colours.webp", broken.data(), broken.size());
+  LoadReport brokenReport;
+  EXPECT_TRUE(loadGltf(b.writeGltf(dir_, "broken"), &brokenReport).textures.empty());
+  EXPECT_TRUE(anyWarningContains(brokenReport, "colours.webp", "WebP"));
+
+  b.doc["textures"][0]["extensions"]["EXT_texture_webp"] = {{"source", "one"}};
+  expectInputError(b.writeGltf(dir_, "nosource"), "EXT_texture_webp has no source");
 }
 
 // KHR_texture_transform on a material's textures: offset, rotation and scale read per texture

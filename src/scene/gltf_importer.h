@@ -69,6 +69,8 @@ class GltfImporter {
   // slot's transform and texture coordinates set in `material`; `name` names the slot in messages.
   template <typename Info>
   int textureFor(const Info& info, bool srgb, const char* name, TextureSlot slot, Material& material);
+  // The image glTF texture `texture` shows: EXT_texture_webp's where it has one, else its source.
+  int textureSource(int texture);
   // glTF sampler `index` (-1: the default) as the renderer's.
   TextureSampler textureSampler(int index);
   const DecodedImage& decodeImage(int index);

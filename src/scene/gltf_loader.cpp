@@ -47,7 +47,8 @@ namespace {
 // (IOR nudges dielectric reflectance), which get a warning when used.
 const std::set<std::string> kHandledExtensions = {
     "KHR_lights_punctual",     "KHR_materials_emissive_strength", "KHR_mesh_quantization",
-    "EXT_meshopt_compression", "KHR_draco_mesh_compression",      "KHR_texture_transform"};
+    "EXT_meshopt_compression", "KHR_draco_mesh_compression",      "KHR_texture_transform",
+    "EXT_texture_webp"};
 const std::set<std::string> kIgnorableRequiredExtensions = {"KHR_materials_ior"};
 
 // tinygltf's image callback. We only keep the encoded bytes and decode later, for the images a
@@ -155,8 +156,8 @@ void GltfImporter::checkVersionAndExtensions() {
   for (const std::string& extension : model_.extensionsRequired) {
     if (!kHandledExtensions.contains(extension) && !kIgnorableRequiredExtensions.contains(extension)) {
       fail("requires the glTF extension " + extension +
-           ", which this renderer does not support. Re-export the scene without it (for example "
-           "without mesh compression).");
+           ", which this renderer does not support. Re-export the scene without it (for example with "
+           "PNG, JPEG or WebP textures in place of KTX2).");
     }
   }
   quantized_ = std::find(model_.extensionsUsed.begin(), model_.extensionsUsed.end(),

@@ -2,9 +2,11 @@
 // and their KHR_texture_transform, images decoded on first use with stb_image, within a size bound.
 #include <fmt/format.h>
 #include <stb_image.h>  // its implementation is in gltf_loader.cpp, with tiny_gltf's
+#include <webp/decode.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scene/gltf_importer.h"
@@ -119,10 +121,11 @@ int GltfImporter::textureFor(const Info& info, bool srgb, const char* slot, Text
     fail("material " + inQuotes(material) + " uses texture " + std::to_string(info.index) + " as its " +
          slot + " texture, but the file has " + std::to_string(model_.textures.size()) + " textures");
   }
-  const int image = model_.textures[size_t(info.index)].source;
+  const int image = textureSource(info.index);
   if (image < 0) {
     warn("material " + inQuotes(material) + ": its " + slot + " texture " + std::to_string(info.index) +
-         " has no PNG or JPEG source (an image extension we do not support?); a neutral texture is used");
+         " has no PNG, JPEG or WebP source (an image extension we do not support?); a neutral texture is "
+         "used");
     return -1;
   }
   if (size_t(image) >= model_.images.size()) {
@@ -151,6 +154,21 @@ int GltfImporter::textureFor(const Info& info, bool srgb, const char* slot, Text
   const int index = int(scene_.textures.size() - 1);
   textureIndex_[{image, srgb, samplerIndex}] = index;
   return index;
+}
+
+int GltfImporter::textureSource(int texture) {
+  const tinygltf::Texture& t = model_.textures[size_t(texture)];
+  // EXT_texture_webp names the WebP image; the core source, where there is one, is the fallback
+  // for viewers without the extension.
+  const auto webp = t.extensions.find("EXT_texture_webp");
+  if (webp == t.extensions.end()) return t.source;
+  const tinygltf::Value& e = webp->second;
+  const double source = e.IsObject() && e.Has("source") && e.Get("source").IsNumber()
+                            ? e.Get("source").GetNumberAsDouble()
+                            : -1.0;
+  if (!(source >= 0.0 && source < 2147483648.0) || source != std::floor(source))
+    fail("texture " + std::to_string(texture) + "'s EXT_texture_webp has no source image index");
+  return int(source);
 }
 
 TextureSampler GltfImporter::textureSampler(int index) {
@@ -230,8 +248,29 @@ const GltfImporter::DecodedImage& GltfImporter::decodeImage(int index) {
   int width = 0;
   int height = 0;
   int channels = 0;
+  // WebP (EXT_texture_webp): "RIFF", the chunk's size, "WEBP".
+  if (size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0) {
+    if (!WebPGetInfo(bytes, size, &width, &height)) {
+      decoded.failure = "not a decodable WebP image (its header is broken)";
+      return decoded;
+    }
+    if (width > kMaxTextureSide || height > kMaxTextureSide) {
+      decoded.failure = std::to_string(width) + "x" + std::to_string(height) + " is larger than the " +
+                        std::to_string(kMaxTextureSide) + " pixels per side we accept";
+      return decoded;
+    }
+    decoded.rgba.resize(size_t(width) * size_t(height) * 4);
+    if (!WebPDecodeRGBAInto(bytes, size, decoded.rgba.data(), decoded.rgba.size(), width * 4)) {
+      decoded.rgba.clear();
+      decoded.failure = "WebP decoding failed: the image data is corrupt";
+      return decoded;
+    }
+    decoded.width = uint32_t(width);
+    decoded.height = uint32_t(height);
+    return decoded;
+  }
   if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels)) {
-    decoded.failure = std::string("not a decodable PNG or JPEG: ") + stbi_failure_reason();
+    decoded.failure = std::string("not a decodable PNG, JPEG or WebP: ") + stbi_failure_reason();
     return decoded;
   }
   if (width > kMaxTextureSide || height > kMaxTextureSide) {
