@@ -794,6 +794,33 @@ TEST_F(GltfLoaderTest, DracoCompressedCave) {
   });
   broken("fan", "mode 6", [&](json& d, json&) { d[primitive]["mode"] = 6; });
   broken("noview", "needs a bufferView", [](json&, json& e) { e.erase("bufferView"); });
+
+  // A header claiming 2^26 triangles and vertices from a few hundred bytes: Draco itself allocated
+  // 1.6 GB for it before finding the data short; its counts are refused first.
+  const json& v = doc["bufferViews"][view];
+  const uint8_t* compressed = bytes.data() + 28 + jsonLength + v.value("byteOffset", 0);
+  std::vector<uint8_t> bomb(compressed,
+                            compressed + 12);  // "DRACO", 2.2, mesh, edgebreaker, flags, traversal
+  for (int field = 0; field < 5; ++field) {    // vertices, faces, attribute data, symbols, splits
+    if (field == 2) {
+      bomb.push_back(1);
+      continue;
+    }
+    const uint32_t value = field == 4 ? 0u : 1u << 26;
+    for (uint32_t rest = value;; rest >>= 7) {
+      bomb.push_back(uint8_t((rest & 0x7F) | (rest >= 0x80 ? 0x80 : 0)));
+      if (rest < 0x80) break;
+    }
+  }
+  bomb.insert(bomb.end(), compressed + 17, compressed + v["byteLength"].get<size_t>());
+  writeBytes(dir_ / "bomb.bin", bomb.data(), bomb.size());
+  json d = doc;
+  d["buffers"][0]["uri"] = "cave.bin";
+  d["buffers"].push_back({{"uri", "bomb.bin"}, {"byteLength", bomb.size()}});
+  d["bufferViews"].push_back({{"buffer", 1}, {"byteLength", bomb.size()}});
+  d[primitive]["extensions"]["KHR_draco_mesh_compression"]["bufferView"] = d["bufferViews"].size() - 1;
+  writeText(dir_ / "bomb.gltf", d.dump());
+  expectInputError(dir_ / "bomb.gltf", "claims 67108864 triangles");
 }
 
 TEST(GltfAssets, CaveHasABlendedMaterial) {

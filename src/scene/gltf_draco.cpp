@@ -27,6 +27,97 @@ constexpr uint64_t kMaxDecodedBytes = std::numeric_limits<int32_t>::max();
   throw InputError(file + ": " + what);
 }
 
+// Draco decodes whatever counts its header claims, allocating for them before it finds that the
+// data does not hold them: 60 bytes claiming 67 million triangles took 1.6 GB here, and the
+// counts go to 1.4 billion. So the counts are read first and bounded by the compressed size.
+// Draco's best case is far below the bound: a regular 700 x 700 grid, all of it predictable, is
+// 27 triangles and 13 vertices a byte at its highest compression level.
+constexpr uint64_t kMaxElementsPerByte = 64;
+
+// A cursor over Draco's bitstream header, every read bounded.
+struct DracoReader {
+  const unsigned char* at;
+  const unsigned char* end;
+  bool ok = true;
+
+  uint64_t byte() {
+    if (at >= end) return ok = false, 0;
+    return *at++;
+  }
+  // Draco's unsigned LEB128 varint (at most 10 bytes).
+  uint64_t varint() {
+    uint64_t value = 0;
+    for (int shift = 0; shift < 70 && ok; shift += 7) {
+      const uint64_t b = byte();
+      value |= (b & 0x7F) << shift;
+      if ((b & 0x80) == 0) return value;
+    }
+    return ok = false, 0;
+  }
+  void skip(uint64_t bytes) {
+    if (bytes > uint64_t(end - at))
+      ok = false, at = end;
+    else
+      at += bytes;
+  }
+  // A metadata block: named entries, then named sub-blocks (to `depth` levels).
+  void skipMetadata(int depth) {
+    if (depth > 32) return void(ok = false);
+    const uint64_t entries = varint();
+    for (uint64_t i = 0; i < entries && ok; ++i) {
+      skip(byte());    // the name
+      skip(varint());  // the value
+    }
+    const uint64_t blocks = varint();
+    for (uint64_t i = 0; i < blocks && ok; ++i) {
+      skip(byte());
+      skipMetadata(depth + 1);
+    }
+  }
+};
+
+// Checks the header of Draco `data` (bitstream 2.2, the one KHR_draco_mesh_compression uses) and
+// that the triangle and vertex counts it claims are within kMaxElementsPerByte of its size.
+void checkDracoHeader(const unsigned char* data, size_t size, const std::string& file,
+                      const std::string& where) {
+  DracoReader r{data, data + size};
+  if (size < 11 || std::memcmp(data, "DRACO", 5) != 0)
+    fail(file, where + " is not Draco data (no DRACO header)");
+  r.skip(5);
+  const uint64_t major = r.byte(), minor = r.byte();
+  if (major != 2 || minor != 2)
+    fail(file, where + " is Draco bitstream " + std::to_string(major) + "." + std::to_string(minor) +
+                   "; the extension uses bitstream 2.2 (re-encode it with a current Draco)");
+  const uint64_t type = r.byte(), method = r.byte();
+  const uint64_t flags = r.byte() | r.byte() << 8;
+  if (type != 1) fail(file, where + " holds a Draco point cloud, not a triangle mesh");
+  if (flags & 0x8000) {  // metadata: per attribute, then the geometry's
+    const uint64_t attributes = r.varint();
+    for (uint64_t i = 0; i < attributes && r.ok; ++i) {
+      r.varint();  // the attribute's id
+      r.skipMetadata(0);
+    }
+    r.skipMetadata(0);
+  }
+  uint64_t faces = 0, vertices = 0;
+  if (method == 0) {  // sequential
+    faces = r.varint();
+    vertices = r.varint();
+  } else if (method == 1) {  // edgebreaker: its traversal's kind, then the counts
+    r.byte();
+    vertices = r.varint();
+    faces = r.varint();
+  } else {
+    fail(file, where + " has Draco encoding method " + std::to_string(method) + "; Draco defines 0 and 1");
+  }
+  if (!r.ok) fail(file, where + " ends inside its Draco header: the compressed data is corrupt");
+  const uint64_t bound = kMaxElementsPerByte * size;
+  if (faces > bound || vertices > bound)
+    fail(file, where + " claims " + std::to_string(faces) + " triangles and " + std::to_string(vertices) +
+                   " vertices from " + std::to_string(size) + " bytes, more than " +
+                   std::to_string(kMaxElementsPerByte) + " a byte, which no Draco mesh compresses to");
+}
+
 // The decoded bytes of one primitive and the accessors that will describe them.
 struct DecodedPrimitive {
   std::vector<unsigned char> bytes;
@@ -76,6 +167,7 @@ DecodedPrimitive decodePrimitive(const tinygltf::Model& model, const tinygltf::P
                    std::to_string(view.byteOffset) + " + " + std::to_string(view.byteLength) + " of buffer " +
                    std::to_string(view.buffer) + ", which has " + std::to_string(source.size()));
 
+  checkDracoHeader(source.data() + view.byteOffset, view.byteLength, file, where);
   draco::DecoderBuffer buffer;
   buffer.Init(reinterpret_cast<const char*>(source.data() + view.byteOffset), view.byteLength);
   const auto type = draco::Decoder::GetEncodedGeometryType(&buffer);
