@@ -653,6 +653,34 @@ TEST(GltfAssets, QuantizedCaveIsTheCave) {
   }
 }
 
+// A .glb as its JSON and its binary chunk, the chunk written to `dir` as <stem>.bin, so that edited
+// copies of the JSON load as .gltf files beside it.
+struct SplitGlb {
+  json doc;
+  std::vector<uint8_t> bin;
+  fs::path dir;
+  std::string binName;
+  fs::path gltf(json d, const std::string& name) const {
+    d["buffers"][0]["uri"] = binName;
+    writeText(dir / (name + ".gltf"), d.dump());
+    return dir / (name + ".gltf");
+  }
+};
+
+SplitGlb splitGlb(const fs::path& glb, const fs::path& dir) {
+  std::ifstream in(glb, std::ios::binary);
+  const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  uint32_t jsonLength = 0, binLength = 0;
+  std::memcpy(&jsonLength, bytes.data() + 12, 4);
+  std::memcpy(&binLength, bytes.data() + 20 + jsonLength, 4);
+  SplitGlb out{json::parse(bytes.begin() + 20, bytes.begin() + 20 + jsonLength),
+               {bytes.begin() + 28 + jsonLength, bytes.begin() + 28 + jsonLength + binLength},
+               dir,
+               glb.stem().string() + ".bin"};
+  writeBytes(dir / out.binName, out.bin.data(), out.bin.size());
+  return out;
+}
+
 // EXT_meshopt_compression (gltfpack -c): assets/cave-meshopt/cave.glb (gltfpack -cc -vpf: vertex
 // and index codecs, EXPONENTIAL positions, OCTAHEDRAL normals) decodes to the cave's triangles and
 // bounds. The same file as .gltf with its binary chunk beside it (its fallback buffer then a JSON
@@ -674,18 +702,9 @@ TEST_F(GltfLoaderTest, MeshoptCompressedCave) {
     EXPECT_NEAR(a.max[axis], b.max[axis], step) << "axis " << axis;
   }
 
-  std::ifstream in(glb, std::ios::binary);
-  const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  uint32_t jsonLength = 0, binLength = 0;
-  std::memcpy(&jsonLength, bytes.data() + 12, 4);
-  std::memcpy(&binLength, bytes.data() + 20 + jsonLength, 4);
-  const json doc = json::parse(bytes.begin() + 20, bytes.begin() + 20 + jsonLength);
-  writeBytes(dir_ / "cave.bin", bytes.data() + 28 + jsonLength, binLength);
-  const auto written = [&](json d, const std::string& name) {
-    d["buffers"][0]["uri"] = "cave.bin";
-    writeText(dir_ / (name + ".gltf"), d.dump());
-    return dir_ / (name + ".gltf");
-  };
+  const SplitGlb split = splitGlb(glb, dir_);
+  const json& doc = split.doc;
+  const auto written = [&](const json& d, const std::string& name) { return split.gltf(d, name); };
   const Scene text = loadGltf(written(doc, "cave"));
   ASSERT_EQ(text.vertices.size(), packed.vertices.size());
   for (size_t i = 0; i < text.vertices.size(); ++i)
@@ -758,18 +777,9 @@ TEST_F(GltfLoaderTest, DracoCompressedCave) {
     }
   }
 
-  std::ifstream in(glb, std::ios::binary);
-  const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  uint32_t jsonLength = 0, binLength = 0;
-  std::memcpy(&jsonLength, bytes.data() + 12, 4);
-  std::memcpy(&binLength, bytes.data() + 20 + jsonLength, 4);
-  const json doc = json::parse(bytes.begin() + 20, bytes.begin() + 20 + jsonLength);
-  writeBytes(dir_ / "cave.bin", bytes.data() + 28 + jsonLength, binLength);
-  const auto written = [&](json d, const std::string& name) {
-    d["buffers"][0]["uri"] = "cave.bin";
-    writeText(dir_ / (name + ".gltf"), d.dump());
-    return dir_ / (name + ".gltf");
-  };
+  const SplitGlb split = splitGlb(glb, dir_);
+  const json& doc = split.doc;
+  const auto written = [&](const json& d, const std::string& name) { return split.gltf(d, name); };
   const Scene text = loadGltf(written(doc, "cave"));
   EXPECT_EQ(text.indices, draco.indices);
   const json::json_pointer primitive("/meshes/0/primitives/0");
@@ -798,7 +808,7 @@ TEST_F(GltfLoaderTest, DracoCompressedCave) {
   // A header claiming 2^26 triangles and vertices from a few hundred bytes: Draco itself allocated
   // 1.6 GB for it before finding the data short; its counts are refused first.
   const json& v = doc["bufferViews"][view];
-  const uint8_t* compressed = bytes.data() + 28 + jsonLength + v.value("byteOffset", 0);
+  const uint8_t* compressed = split.bin.data() + v.value("byteOffset", 0);
   std::vector<uint8_t> bomb(compressed,
                             compressed + 12);  // "DRACO", 2.2, mesh, edgebreaker, flags, traversal
   for (int field = 0; field < 5; ++field) {    // vertices, faces, attribute data, symbols, splits
@@ -815,7 +825,7 @@ TEST_F(GltfLoaderTest, DracoCompressedCave) {
   bomb.insert(bomb.end(), compressed + 17, compressed + v["byteLength"].get<size_t>());
   writeBytes(dir_ / "bomb.bin", bomb.data(), bomb.size());
   json d = doc;
-  d["buffers"][0]["uri"] = "cave.bin";
+  d["buffers"][0]["uri"] = split.binName;
   d["buffers"].push_back({{"uri", "bomb.bin"}, {"byteLength", bomb.size()}});
   d["bufferViews"].push_back({{"buffer", 1}, {"byteLength", bomb.size()}});
   d[primitive]["extensions"]["KHR_draco_mesh_compression"]["bufferView"] = d["bufferViews"].size() - 1;
