@@ -328,6 +328,26 @@ TEST_F(GltfLoaderTest, WebpTexturesAreDecoded) {
   expectInputError(b.writeGltf(dir_, "nosource"), "EXT_texture_webp has no source");
 }
 
+// The images of a scene decode to a bounded number of texels together: past it an image is one
+// that could not be decoded (warned about, a neutral texture in its place); a WebP of one colour
+// is kilobytes at any size.
+TEST_F(GltfLoaderTest, DecodedTexturesAreBoundedTogether) {
+  GltfBuilder b = quadScene();
+  writeBytes(dir_ / "checker.png", kPng2x2.data(), kPng2x2.size());
+  writeBytes(dir_ / "colours.webp", kWebp2x2.data(), kWebp2x2.size());
+  b.doc["images"] = json::array({{{"uri", "checker.png"}}, {{"uri", "colours.webp"}}});
+  b.doc["textures"] = json::array({{{"source", 0}}, {{"source", 1}}});
+  b.doc["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
+  b.doc["materials"][0]["emissiveTexture"] = {{"index", 1}};
+  const fs::path path = b.writeGltf(dir_, "budget");
+  EXPECT_EQ(loadGltf(path, nullptr, 8).textures.size(), 2u);  // 4 + 4 texels
+  LoadReport report;
+  const Scene scene = loadGltf(path, &report, 7);
+  ASSERT_EQ(scene.textures.size(), 1u);
+  EXPECT_EQ(scene.materials[0].emissiveTexture, -1);
+  EXPECT_TRUE(anyWarningContains(report, "colours.webp", "past the 7 texels"));
+}
+
 // KHR_texture_transform on a material's textures: offset, rotation and scale read per texture
 // (the identity where a texture has none), a texCoord in it counted like the texture's own, and
 // values of the wrong shape or not finite as 32-bit floats refused naming the texture.

@@ -29,7 +29,8 @@ inline std::string inQuotes(const std::string& name) {
 
 class GltfImporter {
  public:
-  explicit GltfImporter(const std::filesystem::path& file) : path_(file), file_(file.string()) {}
+  GltfImporter(const std::filesystem::path& file, uint64_t maxTextureTexels)
+      : path_(file), file_(file.string()), maxTextureTexels_(maxTextureTexels) {}
 
   Scene run();
 
@@ -74,6 +75,9 @@ class GltfImporter {
   // glTF sampler `index` (-1: the default) as the renderer's.
   TextureSampler textureSampler(int index);
   const DecodedImage& decodeImage(int index);
+  // False, with `decoded`'s failure set, where a width x height image is past the size we accept
+  // alone or, with the images decoded before, together; otherwise counts it.
+  bool withinTextureBounds(int width, int height, DecodedImage& decoded);
   std::string imageName(int index) const;
 
   Mesh convertMesh(int index);
@@ -97,6 +101,8 @@ class GltfImporter {
   std::vector<std::string> warnings_;
   gltf_detail::NumberReader numbers_{file_, warnings_};
   std::vector<DecodedImage> images_;  // per glTF image, decoded on first use
+  uint64_t decodedTexels_ = 0;        // over images_
+  uint64_t maxTextureTexels_;
   // (glTF image, srgb, glTF sampler) -> Scene::textures
   std::map<std::tuple<int, bool, int>, int> textureIndex_;
   std::optional<uint32_t> defaultMaterial_;

@@ -601,8 +601,8 @@ void GltfImporter::warnAboutIgnoredData() {
 
 namespace lll {
 
-Scene loadGltf(const std::filesystem::path& file, LoadReport* report) {
-  gltf_detail::GltfImporter importer(file);
+Scene loadGltf(const std::filesystem::path& file, LoadReport* report, uint64_t maxTextureTexels) {
+  gltf_detail::GltfImporter importer(file, maxTextureTexels);
   Scene scene = importer.run();
   if (report != nullptr) {
     for (std::string& warning : importer.takeWarnings()) report->warnings.push_back(std::move(warning));

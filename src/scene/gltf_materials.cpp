@@ -228,6 +228,24 @@ TextureSampler GltfImporter::textureSampler(int index) {
   return out;
 }
 
+bool GltfImporter::withinTextureBounds(int width, int height, DecodedImage& decoded) {
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  if (width > kMaxTextureSide || height > kMaxTextureSide) {
+    decoded.failure =
+        size + " is larger than the " + std::to_string(kMaxTextureSide) + " pixels per side we accept";
+    return false;
+  }
+  const uint64_t texels = uint64_t(width) * uint64_t(height);
+  if (decodedTexels_ + texels > maxTextureTexels_) {
+    decoded.failure = size + " would take the scene's decoded textures past the " +
+                      std::to_string(maxTextureTexels_) + " texels (" +
+                      std::to_string((maxTextureTexels_ * 4) >> 20) + " MiB) we accept in all";
+    return false;
+  }
+  decodedTexels_ += texels;
+  return true;
+}
+
 const GltfImporter::DecodedImage& GltfImporter::decodeImage(int index) {
   DecodedImage& decoded = images_[size_t(index)];
   if (decoded.attempted) return decoded;
@@ -254,11 +272,7 @@ const GltfImporter::DecodedImage& GltfImporter::decodeImage(int index) {
       decoded.failure = "not a decodable WebP image (its header is broken)";
       return decoded;
     }
-    if (width > kMaxTextureSide || height > kMaxTextureSide) {
-      decoded.failure = std::to_string(width) + "x" + std::to_string(height) + " is larger than the " +
-                        std::to_string(kMaxTextureSide) + " pixels per side we accept";
-      return decoded;
-    }
+    if (!withinTextureBounds(width, height, decoded)) return decoded;
     decoded.rgba.resize(size_t(width) * size_t(height) * 4);
     if (!WebPDecodeRGBAInto(bytes, size, decoded.rgba.data(), decoded.rgba.size(), width * 4)) {
       decoded.rgba.clear();
@@ -273,11 +287,7 @@ const GltfImporter::DecodedImage& GltfImporter::decodeImage(int index) {
     decoded.failure = std::string("not a decodable PNG, JPEG or WebP: ") + stbi_failure_reason();
     return decoded;
   }
-  if (width > kMaxTextureSide || height > kMaxTextureSide) {
-    decoded.failure = std::to_string(width) + "x" + std::to_string(height) + " is larger than the " +
-                      std::to_string(kMaxTextureSide) + " pixels per side we accept";
-    return decoded;
-  }
+  if (!withinTextureBounds(width, height, decoded)) return decoded;
   stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
   if (pixels == nullptr) {
     decoded.failure = std::string("decoding failed: ") + stbi_failure_reason();
