@@ -69,8 +69,15 @@ const std::vector<uint8_t> kPng = {
     0x1f, 0x0c, 0x81, 0x34, 0x08, 0x34, 0x00, 0x00, 0x49, 0x49, 0x09, 0x78, 0x9c, 0x51, 0x17, 0x92,
     0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
 
-// A quad with normals, UVs, 16-bit indices, a sparse accessor, a textured material with every
-// extension the loader reads, a point and a spot light and a camera.
+// A 2x2 lossless WebP (EXT_texture_webp).
+const std::vector<uint8_t> kWebp = {82, 73,  70, 70,  48, 0,   0,   0,   87,  69,  66,  80,  86,  80,
+                                    56, 76,  35, 0,   0,  0,   47,  1,   64,  0,   16,  31,  48,  255,
+                                    2,  130, 34, 255, 71, 219, 127, 129, 0,   193, 185, 115, 193, 141,
+                                    42, 65,  77, 219, 6,  44,  126, 147, 142, 136, 254, 199, 1,   0};
+
+// A quad with normals, two UV sets, vertex colours, 16-bit indices, a sparse accessor, a textured
+// material with every extension the loader reads (a WebP image, a sampler, a texture transform),
+// a point and a spot light and a camera.
 void writeQuad(const fs::path& dir) {
   std::vector<uint8_t> bin;
   auto append = [&](const void* data, size_t size) {
@@ -82,22 +89,28 @@ void writeQuad(const fs::path& dir) {
   const float positions[] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
   const float normals[] = {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0};
   const float uvs[] = {0, 0, 1, 0, 1, 1, 0, 1};
+  const float uvs1[] = {0, 0, 2, 0, 2, 2, 0, 2};
+  const uint8_t colors[] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 128, 255, 255, 255, 255};
   const uint16_t indices[] = {0, 2, 1, 0, 3, 2};
   const uint8_t sparseIndex[] = {1};
   const float sparseValue[] = {1, 0.2f, -1};
   const size_t p = append(positions, sizeof positions), n = append(normals, sizeof normals),
                u = append(uvs, sizeof uvs), i = append(indices, sizeof indices),
                si = append(sparseIndex, sizeof sparseIndex), sv = append(sparseValue, sizeof sparseValue),
-               png = append(kPng.data(), kPng.size());
+               png = append(kPng.data(), kPng.size()), u1 = append(uvs1, sizeof uvs1),
+               c = append(colors, sizeof colors), webp = append(kWebp.data(), kWebp.size());
   auto view = [](size_t offset, size_t length) {
     return json{{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}};
   };
   json doc = {
       {"asset", {{"version", "2.0"}}},
-      {"extensionsUsed", {"KHR_lights_punctual", "KHR_materials_emissive_strength"}},
+      {"extensionsUsed",
+       {"KHR_lights_punctual", "KHR_materials_emissive_strength", "EXT_texture_webp",
+        "KHR_texture_transform"}},
       {"bufferViews",
        {view(p, sizeof positions), view(n, sizeof normals), view(u, sizeof uvs), view(i, sizeof indices),
-        view(si, sizeof sparseIndex), view(sv, sizeof sparseValue), view(png, kPng.size())}},
+        view(si, sizeof sparseIndex), view(sv, sizeof sparseValue), view(png, kPng.size()),
+        view(u1, sizeof uvs1), view(c, sizeof colors), view(webp, kWebp.size())}},
       {"accessors",
        {{{"bufferView", 0},
          {"componentType", 5126},
@@ -111,9 +124,15 @@ void writeQuad(const fs::path& dir) {
            {"values", {{"bufferView", 5}}}}}},
         {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
         {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
-        {{"bufferView", 3}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}}},
-      {"images", {{{"bufferView", 6}, {"mimeType", "image/png"}}}},
-      {"textures", {{{"source", 0}}}},
+        {{"bufferView", 3}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}},
+        {{"bufferView", 7}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
+        {{"bufferView", 8}, {"componentType", 5121}, {"normalized", true}, {"count", 4}, {"type", "VEC4"}}}},
+      {"images",
+       {{{"bufferView", 6}, {"mimeType", "image/png"}}, {{"bufferView", 9}, {"mimeType", "image/webp"}}}},
+      {"samplers", {{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}, {"minFilter", 9986}}}},
+      {"textures",
+       {{{"source", 0}},
+        {{"source", 0}, {"sampler", 0}, {"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}}}},
       {"materials",
        {{{"name", "tile"},
          {"pbrMetallicRoughness",
@@ -121,6 +140,10 @@ void writeQuad(const fs::path& dir) {
            {"metallicFactor", 0.1},
            {"baseColorTexture", {{"index", 0}}}}},
          {"normalTexture", {{"index", 0}, {"scale", 0.5}}},
+         {"occlusionTexture",
+          {{"index", 1},
+           {"texCoord", 1},
+           {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0}}, {"rotation", 0.3}}}}}}},
          {"emissiveFactor", {0.1, 0, 0}},
          {"alphaMode", "MASK"},
          {"alphaCutoff", 0.3},
@@ -128,7 +151,8 @@ void writeQuad(const fs::path& dir) {
          {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}}}},
       {"meshes",
        {{{"primitives",
-          {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
+          {{{"attributes",
+             {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}, {"TEXCOORD_1", 4}, {"COLOR_0", 5}}},
             {"indices", 3},
             {"material", 0}}}}}}},
       {"extensions",
