@@ -348,6 +348,54 @@ TEST_F(GltfLoaderTest, DecodedTexturesAreBoundedTogether) {
   EXPECT_TRUE(anyWarningContains(report, "colours.webp", "past the 7 texels"));
 }
 
+// glTF morph targets at their default weights (the mesh's, or a node's own, which gets a morphed
+// copy of the mesh): POSITION, NORMAL and TANGENT displacements times the weights, sparse ones too;
+// other target attributes are warned about; weights that do not match the targets are an
+// InputError.
+TEST_F(GltfLoaderTest, MorphTargetsAtTheirDefaultWeights) {
+  GltfBuilder b = quadScene();
+  // Target 0 lifts vertex 2 by 1 in z and tilts its normal; target 1 (sparse) moves vertex 0 in x.
+  const int lift = b.addAccessor<float>({0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0}, kFloat, "VEC3");
+  const int tilt = b.addAccessor<float>({0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0}, kFloat, "VEC3");
+  const uint8_t sparseIndex[] = {0};
+  const float sparseValue[] = {-2, 0, 0};
+  json sparse = {{"bufferView", b.addBufferView(sparseValue, sizeof sparseValue)},
+                 {"componentType", kFloat},
+                 {"count", 4},
+                 {"type", "VEC3"}};
+  sparse.erase("bufferView");
+  sparse["sparse"] = {
+      {"count", 1},
+      {"indices", {{"bufferView", b.addBufferView(sparseIndex, 1)}, {"componentType", kUnsignedByte}}},
+      {"values", {{"bufferView", int(b.doc["bufferViews"].size() - 2)}}}};
+  b.doc["accessors"].push_back(sparse);
+  const int move = int(b.doc["accessors"].size() - 1);
+  json& primitive = b.doc["meshes"][0]["primitives"][0];
+  primitive["targets"] = {{{"POSITION", lift}, {"NORMAL", tilt}, {"TEXCOORD_0", tilt}}, {{"POSITION", move}}};
+  b.doc["meshes"][0]["weights"] = {0.5, 0.25};
+  // A second node shows the mesh at weights of its own.
+  b.doc["nodes"].push_back({{"mesh", 0}, {"weights", {1.0, 0.0}}, {"translation", {3, 0, 0}}});
+  b.doc["scenes"][0]["nodes"] = {0, 1};
+  LoadReport report;
+  const Scene scene = loadGltf(b.writeGltf(dir_, "morph"), &report);
+  EXPECT_TRUE(anyWarningContains(report, "TEXCOORD_0", "morph target"));
+  ASSERT_EQ(scene.meshes.size(), 2u);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  const auto vertex = [&](uint32_t instance, uint32_t i) {
+    const Primitive& p = scene.meshes[scene.instances[instance].mesh].primitives[0];
+    return scene.vertices[p.vertexOffset + i];
+  };
+  expectVec3Near(vertex(0, 2).position, glm::vec3(1, 1, 0.5f));
+  expectVec3Near(vertex(0, 0).position, glm::vec3(-0.5f, 0, 0));  // the sparse target at 0.25
+  expectVec3Near(vertex(0, 2).normal, glm::vec3(0.5f, 0, 1));     // shaders normalize it
+  expectVec3Near(vertex(1, 2).position, glm::vec3(1, 1, 1));
+  expectVec3Near(vertex(1, 0).position, glm::vec3(0, 0, 0));
+  expectVec3Near(vertex(1, 2).normal, glm::vec3(1, 0, 1));
+
+  b.doc["meshes"][0]["weights"] = {0.5};
+  expectInputError(b.writeGltf(dir_, "weights"), "2 morph targets but 1 weights");
+}
+
 // KHR_texture_transform on a material's textures: offset, rotation and scale read per texture
 // (the identity where a texture has none), a texCoord in it counted like the texture's own, and
 // values of the wrong shape or not finite as 32-bit floats refused naming the texture.

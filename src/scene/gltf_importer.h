@@ -80,8 +80,14 @@ class GltfImporter {
   bool withinTextureBounds(int width, int height, DecodedImage& decoded);
   std::string imageName(int index) const;
 
-  Mesh convertMesh(int index);
-  void convertPrimitive(const tinygltf::Primitive& primitive, const std::string& where, Mesh& mesh);
+  // Mesh `index` with its morph targets at `weights`.
+  Mesh convertMesh(int index, const std::vector<double>& weights);
+  void convertPrimitive(const tinygltf::Primitive& primitive, const std::string& where,
+                        const std::vector<double>& weights, Mesh& mesh);
+  void applyMorphTargets(const tinygltf::Primitive& primitive, const std::string& where,
+                         const std::vector<double>& weights, std::vector<float>& positions,
+                         std::vector<float>& normals, std::vector<float>& tangents);
+  uint32_t meshWithWeights(const tinygltf::Node& node);
   std::vector<uint32_t> toTriangleList(int mode, const std::vector<uint32_t>& indices,
                                        const std::string& where);
   uint32_t materialFor(int material, const std::string& where);
@@ -109,7 +115,9 @@ class GltfImporter {
   std::map<uint32_t, Bounds> meshBounds_;        // object-space bounds of each placed mesh
   std::map<uint32_t, uint32_t> reversedMeshes_;  // a mesh's reversed copy, for mirroring nodes
   std::set<std::string> ignoredAttributes_;
-  bool hasMorphTargets_ = false;
+  std::set<std::string> ignoredTargetAttributes_;
+  // A mesh morphed by a node's own weights, by (glTF mesh, weights).
+  std::map<std::pair<int, std::vector<double>>, uint32_t> morphedMeshes_;
   bool usesOtherTexCoords_ = false;
   bool quantized_ = false;  // the file uses KHR_mesh_quantization: integer attributes are allowed
 };

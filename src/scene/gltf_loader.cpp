@@ -90,7 +90,8 @@ Scene GltfImporter::run() {
   for (size_t i = 0; i < model_.materials.size(); ++i) {
     scene_.materials.push_back(convertMaterial(model_.materials[i], int(i)));
   }
-  for (size_t i = 0; i < model_.meshes.size(); ++i) scene_.meshes.push_back(convertMesh(int(i)));
+  for (size_t i = 0; i < model_.meshes.size(); ++i)
+    scene_.meshes.push_back(convertMesh(int(i), model_.meshes[i].weights));
   placeNodes();
   warnAboutIgnoredData();
   return std::move(scene_);
@@ -172,20 +173,21 @@ void GltfImporter::checkVersionAndExtensions() {
   }
 }
 
-Mesh GltfImporter::convertMesh(int index) {
+Mesh GltfImporter::convertMesh(int index, const std::vector<double>& weights) {
   const tinygltf::Mesh& in = model_.meshes[size_t(index)];
   Mesh out;
   out.name = in.name.empty() ? "mesh " + std::to_string(index) : in.name;
   if (in.primitives.empty())
     fail("mesh " + inQuotes(out.name) + " has no primitives; glTF requires at least one");
   for (size_t i = 0; i < in.primitives.size(); ++i) {
-    convertPrimitive(in.primitives[i], "mesh " + inQuotes(out.name) + " primitive " + std::to_string(i), out);
+    convertPrimitive(in.primitives[i], "mesh " + inQuotes(out.name) + " primitive " + std::to_string(i),
+                     weights, out);
   }
   return out;
 }
 
 void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const std::string& where,
-                                    Mesh& mesh) {
+                                    const std::vector<double>& weights, Mesh& mesh) {
   static const char* const kModeNames[] = {"points", "lines", "a line loop", "a line strip"};
   if (primitive.mode >= TINYGLTF_MODE_POINTS && primitive.mode <= TINYGLTF_MODE_LINE_STRIP) {
     warn(where + " draws " + kModeNames[primitive.mode] + "; only triangles are rendered, so it is skipped");
@@ -201,11 +203,10 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
   }
   // KHR_mesh_quantization: integer attributes, dequantized here (the node's transform usually
   // scales them back to metres).
-  const std::vector<float> positions =
+  std::vector<float> positions =
       readAccessor<float>(position->second, where + " POSITION", TINYGLTF_TYPE_VEC3,
                           quantized_ ? Components::QuantizedPosition : Components::Float);
   const size_t vertexCount = positions.size() / 3;
-  checkFinite(positions, where + " POSITION");
   std::vector<float> normals;
   std::vector<float> uvs;
   std::vector<float> uvs1;
@@ -244,6 +245,8 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
       ignoredAttributes_.insert(attribute);
     }
   }
+  applyMorphTargets(primitive, where, weights, positions, normals, tangents);
+  checkFinite(positions, where + " POSITION");
   checkFinite(normals, where + " NORMAL");
   checkFinite(uvs, where + " TEXCOORD_0");
   checkFinite(uvs1, where + " TEXCOORD_1");
@@ -271,7 +274,6 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
            std::to_string(t.y) + ", " + std::to_string(t.z) + ", " + std::to_string(t.w) +
            "); glTF needs a finite xyz and w = 1 or -1 (the bitangent's handedness)");
   }
-  if (!primitive.targets.empty()) hasMorphTargets_ = true;
 
   std::vector<uint32_t> indices;
   if (primitive.indices >= 0) {
@@ -332,6 +334,45 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
     }
   }
   mesh.primitives.push_back(out);
+}
+
+// glTF morph targets at `weights` (a node's, else its mesh's; without any the base shape): each
+// target's POSITION, NORMAL and TANGENT displacements, times its weight, added to the base.
+void GltfImporter::applyMorphTargets(const tinygltf::Primitive& primitive, const std::string& where,
+                                     const std::vector<double>& weights, std::vector<float>& positions,
+                                     std::vector<float>& normals, std::vector<float>& tangents) {
+  if (primitive.targets.empty()) return;
+  if (!weights.empty() && weights.size() != primitive.targets.size())
+    fail(where + " has " + std::to_string(primitive.targets.size()) + " morph targets but " +
+         std::to_string(weights.size()) + " weights; glTF needs one weight per target");
+  for (size_t t = 0; t < primitive.targets.size(); ++t) {
+    const std::string target = where + " morph target " + std::to_string(t);
+    const float weight = t < weights.size() ? numbers_.finite(weights[t], target + "'s weight") : 0.0f;
+    for (const auto& [attribute, accessor] : primitive.targets[t]) {
+      const bool position = attribute == "POSITION";
+      std::vector<float>* base = position                 ? &positions
+                                 : attribute == "NORMAL"  ? &normals
+                                 : attribute == "TANGENT" ? &tangents
+                                                          : nullptr;
+      if (base == nullptr) {
+        ignoredTargetAttributes_.insert(attribute);
+        continue;
+      }
+      if (weight == 0.0f || base->empty()) continue;    // nothing to move, or no base to move
+      const size_t stride = base == &tangents ? 4 : 3;  // a tangent's w (handedness) stays
+      const std::vector<float> delta =
+          readAccessor<float>(accessor, target + " " + attribute, TINYGLTF_TYPE_VEC3,
+                              !quantized_ ? Components::Float
+                              : position  ? Components::QuantizedPosition
+                                          : Components::QuantizedDirection);
+      checkFinite(delta, target + " " + attribute);
+      if (delta.size() / 3 != base->size() / stride)
+        fail(target + "'s " + attribute + " has " + std::to_string(delta.size() / 3) + " elements, but the " +
+             "primitive has " + std::to_string(base->size() / stride) + " vertices");
+      for (size_t i = 0; i < delta.size() / 3; ++i)
+        for (size_t c = 0; c < 3; ++c) (*base)[i * stride + c] += weight * delta[i * 3 + c];
+    }
+  }
 }
 
 std::vector<uint32_t> GltfImporter::toTriangleList(int mode, const std::vector<uint32_t>& indices,
@@ -421,7 +462,7 @@ void GltfImporter::placeNodes() {
         fail("node " + std::to_string(index) + " uses mesh " + std::to_string(node.mesh) +
              ", but the file has " + std::to_string(model_.meshes.size()) + " meshes");
       }
-      placeMesh(uint32_t(node.mesh), glm::mat4(world), index);
+      placeMesh(meshWithWeights(node), glm::mat4(world), index);
     }
     if (node.camera >= 0) addCamera(node.camera, index, world);
     addLight(node, index, world);
@@ -429,6 +470,20 @@ void GltfImporter::placeNodes() {
       stack.emplace_back(*child, world);
     }
   }
+}
+
+// The scene mesh node `node` shows: its glTF mesh, or, where the node gives morph weights of its
+// own, a copy of the mesh morphed by them (one for each distinct set of weights).
+uint32_t GltfImporter::meshWithWeights(const tinygltf::Node& node) {
+  const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
+  if (node.weights.empty() || node.weights == mesh.weights) return uint32_t(node.mesh);
+  const auto key = std::make_pair(node.mesh, node.weights);
+  auto known = morphedMeshes_.find(key);
+  if (known == morphedMeshes_.end()) {
+    scene_.meshes.push_back(convertMesh(node.mesh, node.weights));
+    known = morphedMeshes_.emplace(key, uint32_t(scene_.meshes.size() - 1)).first;
+  }
+  return known->second;
 }
 
 // Every placed vertex must have coordinates whose squares are finite floats (distances, the far
@@ -592,7 +647,9 @@ void GltfImporter::warnAboutIgnoredData() {
   }
   if (usesOtherTexCoords_)
     warn("some textures use a texCoord other than 0 and 1; TEXCOORD_0 is used for them");
-  if (hasMorphTargets_) warn("morph targets are ignored; meshes are drawn in their base shape");
+  if (!ignoredTargetAttributes_.empty())
+    warn("morph target attribute(s) " + describeList(ignoredTargetAttributes_) +
+         " are ignored; only POSITION, NORMAL and TANGENT targets are applied");
   if (!model_.skins.empty()) warn("skins are ignored; skinned meshes are drawn in their bind pose");
   if (!model_.animations.empty()) warn("animations are ignored; the scene is drawn in its rest pose");
 }
