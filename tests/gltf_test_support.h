@@ -79,7 +79,8 @@ struct GltfBuilder {
   template <typename T>
   int addAccessor(const std::vector<T>& values, int componentType, const std::string& type,
                   bool normalized = false) {
-    const size_t components = type == "SCALAR" ? 1 : size_t(type.back() - '0');
+    const size_t side = type == "SCALAR" ? 1 : size_t(type.back() - '0');
+    const size_t components = type.rfind("MAT", 0) == 0 ? side * side : side;
     const int view = addBufferView(values.data(), values.size() * sizeof(T));
     json accessor = {{"bufferView", view},
                      {"componentType", componentType},

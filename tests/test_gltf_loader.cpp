@@ -396,6 +396,55 @@ TEST_F(GltfLoaderTest, MorphTargetsAtTheirDefaultWeights) {
   expectInputError(b.writeGltf(dir_, "weights"), "2 morph targets but 1 weights");
 }
 
+// glTF skins at the rest pose: each vertex moved by its joints' world transforms times their
+// inverse bind matrices, blended by its weights; the skinned mesh's own node transform does not
+// apply. Broken skins are InputErrors naming them.
+TEST_F(GltfLoaderTest, SkinsAtTheRestPose) {
+  GltfBuilder b = quadScene();
+  json& primitive = b.doc["meshes"][0]["primitives"][0];
+  // Vertices 0 and 1 follow joint 0; vertex 2 joint 1; vertex 3 half each.
+  primitive["attributes"]["JOINTS_0"] =
+      b.addAccessor<uint8_t>({0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0}, kUnsignedByte, "VEC4");
+  primitive["attributes"]["WEIGHTS_0"] =
+      b.addAccessor<float>({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0}, kFloat, "VEC4");
+  // Joint 1 was bound at y = 1 and rests 2 further along z: its matrix moves by (0, 0, 2).
+  const int inverseBinds = b.addAccessor<float>(
+      {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1},
+      kFloat, "MAT4");
+  b.doc["nodes"][0]["translation"] = {5, 0, 0};  // ignored: the joints place the skinned mesh
+  b.doc["nodes"][0]["skin"] = 0;
+  b.doc["nodes"].push_back({{"children", {2}}});           // 1: joint 0
+  b.doc["nodes"].push_back({{"translation", {0, 1, 2}}});  // 2: joint 1
+  b.doc["skins"] = json::array({{{"joints", {1, 2}}, {"inverseBindMatrices", inverseBinds}}});
+  b.doc["scenes"][0]["nodes"] = {0, 1};
+  LoadReport report;
+  const Scene scene = loadGltf(b.writeGltf(dir_, "skin"), &report);
+  for (const std::string& warning : report.warnings) ADD_FAILURE() << "unexpected warning: " << warning;
+  ASSERT_EQ(scene.instances.size(), 1u);
+  expectMat4Near(scene.instances[0].transform, glm::mat4(1.0f));
+  const Primitive& p = scene.meshes[scene.instances[0].mesh].primitives[0];
+  const auto position = [&](uint32_t i) { return scene.vertices[p.vertexOffset + i].position; };
+  expectVec3Near(position(0), glm::vec3(0, 0, 0));
+  expectVec3Near(position(1), glm::vec3(1, 0, 0));
+  expectVec3Near(position(2), glm::vec3(1, 1, 2));
+  expectVec3Near(position(3), glm::vec3(0, 1, 1));
+  expectVec3Near(scene.vertices[p.vertexOffset + 2].normal, glm::vec3(0, 0, 1));
+
+  json& joints = primitive["attributes"]["JOINTS_0"];
+  const int goodJoints = joints;
+  joints = b.addAccessor<uint8_t>({0, 0, 0, 0, 0, 0, 0, 0, 7, 0, 0, 0, 0, 1, 0, 0}, kUnsignedByte, "VEC4");
+  expectInputError(b.writeGltf(dir_, "joint"), "JOINTS_0 7 at vertex 2, but its skin has 2 joints");
+  joints = goodJoints;
+  b.doc["scenes"][0]["nodes"] = {0};
+  expectInputError(b.writeGltf(dir_, "outside"), "skin 0's joint 0 is node 1, which is not in the scene");
+  b.doc["scenes"][0]["nodes"] = {0, 1};
+  b.doc["skins"][0]["joints"] = {1};
+  expectInputError(b.writeGltf(dir_, "binds"), "2 inverse bind matrices for 1 joints");
+  b.doc["skins"][0]["joints"] = {1, 2};
+  primitive["attributes"].erase("WEIGHTS_0");
+  expectInputError(b.writeGltf(dir_, "weights"), "only one of JOINTS_0 and WEIGHTS_0");
+}
+
 // KHR_texture_transform on a material's textures: offset, rotation and scale read per texture
 // (the identity where a texture has none), a texCoord in it counted like the texture's own, and
 // values of the wrong shape or not finite as 32-bit floats refused naming the texture.

@@ -81,9 +81,17 @@ class GltfImporter {
   std::string imageName(int index) const;
 
   // Mesh `index` with its morph targets at `weights`.
-  Mesh convertMesh(int index, const std::vector<double>& weights);
+  // Mesh `index` with its morph targets at `weights` and, given `joints` (a skin's joint
+  // matrices), skinned into world space.
+  Mesh convertMesh(int index, const std::vector<double>& weights,
+                   const std::vector<glm::dmat4>* joints = nullptr);
   void convertPrimitive(const tinygltf::Primitive& primitive, const std::string& where,
-                        const std::vector<double>& weights, Mesh& mesh);
+                        const std::vector<double>& weights, const std::vector<glm::dmat4>* joints,
+                        Mesh& mesh);
+  void applySkin(const tinygltf::Primitive& primitive, const std::string& where,
+                 const std::vector<glm::dmat4>& joints, std::vector<float>& positions,
+                 std::vector<float>& normals, std::vector<float>& tangents);
+  void placeSkinnedMesh(int index, const std::vector<glm::dmat4>& worlds, const std::vector<bool>& visited);
   void applyMorphTargets(const tinygltf::Primitive& primitive, const std::string& where,
                          const std::vector<double>& weights, std::vector<float>& positions,
                          std::vector<float>& normals, std::vector<float>& tangents);
@@ -118,6 +126,8 @@ class GltfImporter {
   std::set<std::string> ignoredTargetAttributes_;
   // A mesh morphed by a node's own weights, by (glTF mesh, weights).
   std::map<std::pair<int, std::vector<double>>, uint32_t> morphedMeshes_;
+  // A skinned mesh at its rest pose, by (glTF mesh, morph weights, skin).
+  std::map<std::tuple<int, std::vector<double>, int>, uint32_t> skinnedMeshes_;
   bool usesOtherTexCoords_ = false;
   bool quantized_ = false;  // the file uses KHR_mesh_quantization: integer attributes are allowed
 };

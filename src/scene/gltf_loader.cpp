@@ -173,7 +173,8 @@ void GltfImporter::checkVersionAndExtensions() {
   }
 }
 
-Mesh GltfImporter::convertMesh(int index, const std::vector<double>& weights) {
+Mesh GltfImporter::convertMesh(int index, const std::vector<double>& weights,
+                               const std::vector<glm::dmat4>* joints) {
   const tinygltf::Mesh& in = model_.meshes[size_t(index)];
   Mesh out;
   out.name = in.name.empty() ? "mesh " + std::to_string(index) : in.name;
@@ -181,13 +182,14 @@ Mesh GltfImporter::convertMesh(int index, const std::vector<double>& weights) {
     fail("mesh " + inQuotes(out.name) + " has no primitives; glTF requires at least one");
   for (size_t i = 0; i < in.primitives.size(); ++i) {
     convertPrimitive(in.primitives[i], "mesh " + inQuotes(out.name) + " primitive " + std::to_string(i),
-                     weights, out);
+                     weights, joints, out);
   }
   return out;
 }
 
 void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const std::string& where,
-                                    const std::vector<double>& weights, Mesh& mesh) {
+                                    const std::vector<double>& weights, const std::vector<glm::dmat4>* joints,
+                                    Mesh& mesh) {
   static const char* const kModeNames[] = {"points", "lines", "a line loop", "a line strip"};
   if (primitive.mode >= TINYGLTF_MODE_POINTS && primitive.mode <= TINYGLTF_MODE_LINE_STRIP) {
     warn(where + " draws " + kModeNames[primitive.mode] + "; only triangles are rendered, so it is skipped");
@@ -241,11 +243,13 @@ void GltfImporter::convertPrimitive(const tinygltf::Primitive& primitive, const 
           rgba.insert(rgba.end(), {colors[i], colors[i + 1], colors[i + 2], 1.0f});
         colors = std::move(rgba);
       }
-    } else if (attribute != "POSITION") {
+    } else if (attribute != "POSITION" && attribute.rfind("JOINTS_", 0) != 0 &&
+               attribute.rfind("WEIGHTS_", 0) != 0) {  // those two are read by applySkin
       ignoredAttributes_.insert(attribute);
     }
   }
   applyMorphTargets(primitive, where, weights, positions, normals, tangents);
+  if (joints != nullptr) applySkin(primitive, where, *joints, positions, normals, tangents);
   checkFinite(positions, where + " POSITION");
   checkFinite(normals, where + " NORMAL");
   checkFinite(uvs, where + " TEXCOORD_0");
@@ -375,6 +379,65 @@ void GltfImporter::applyMorphTargets(const tinygltf::Primitive& primitive, const
   }
 }
 
+// glTF skinning at the rest pose: each vertex moved by the blend of its joints' matrices
+// (`joints`: each joint's world transform times its inverse bind matrix), weighted by WEIGHTS_n
+// for JOINTS_n (sets 0 and 1, four joints each). The result is in world space: a skinned mesh's
+// own node transform does not apply.
+void GltfImporter::applySkin(const tinygltf::Primitive& primitive, const std::string& where,
+                             const std::vector<glm::dmat4>& joints, std::vector<float>& positions,
+                             std::vector<float>& normals, std::vector<float>& tangents) {
+  const size_t vertexCount = positions.size() / 3;
+  std::vector<glm::dmat4> blend(vertexCount, glm::dmat4(0.0));
+  std::vector<double> sums(vertexCount, 0.0);
+  std::vector<uint32_t> firstJoint(vertexCount, 0);
+  bool any = false;
+  for (int set = 0; set < 2; ++set) {
+    const std::string jointsName = "JOINTS_" + std::to_string(set),
+                      weightsName = "WEIGHTS_" + std::to_string(set);
+    const auto jointAccessor = primitive.attributes.find(jointsName);
+    const auto weightAccessor = primitive.attributes.find(weightsName);
+    if (jointAccessor == primitive.attributes.end() && weightAccessor == primitive.attributes.end()) continue;
+    if (jointAccessor == primitive.attributes.end() || weightAccessor == primitive.attributes.end())
+      fail(where + " has only one of " + jointsName + " and " + weightsName + "; skinning needs both");
+    const std::vector<uint32_t> indices = readAccessor<uint32_t>(
+        jointAccessor->second, where + " " + jointsName, TINYGLTF_TYPE_VEC4, Components::Index);
+    const std::vector<float> weights =
+        readAccessor<float>(weightAccessor->second, where + " " + weightsName, TINYGLTF_TYPE_VEC4,
+                            Components::FloatOrNormalizedUnsigned);
+    checkFinite(weights, where + " " + weightsName);
+    if (indices.size() != vertexCount * 4 || weights.size() != vertexCount * 4)
+      fail(where + " has " + jointsName + " or " + weightsName + " with a different count than POSITION (" +
+           std::to_string(vertexCount) + ")");
+    for (size_t i = 0; i < indices.size(); ++i) {
+      if (indices[i] >= joints.size())
+        fail(where + " has " + jointsName + " " + std::to_string(indices[i]) + " at vertex " +
+             std::to_string(i / 4) + ", but its skin has " + std::to_string(joints.size()) + " joints");
+      if (set == 0 && i % 4 == 0) firstJoint[i / 4] = indices[i];
+      if (weights[i] == 0.0f) continue;
+      blend[i / 4] += double(weights[i]) * joints[indices[i]];
+      sums[i / 4] += double(weights[i]);
+    }
+    any = true;
+  }
+  if (!any) fail(where + " is skinned (its node has a skin) but has no JOINTS_0 and WEIGHTS_0");
+  for (size_t v = 0; v < vertexCount; ++v) {
+    // glTF's weights sum to 1; exporters round them, so they are normalized. A vertex with none
+    // follows its first joint.
+    const glm::dmat4 m = sums[v] > 1e-8 ? blend[v] / sums[v] : joints[firstJoint[v]];
+    const glm::dvec3 p = glm::dvec3(m * glm::dvec4(glm::dvec3(glm::make_vec3(&positions[v * 3])), 1.0));
+    for (int c = 0; c < 3; ++c) positions[v * 3 + c] = float(p[c]);
+    const glm::dmat3 linear(m);
+    if (!normals.empty()) {
+      const glm::dvec3 n = glm::transpose(glm::inverse(linear)) * glm::dvec3(glm::make_vec3(&normals[v * 3]));
+      for (int c = 0; c < 3; ++c) normals[v * 3 + c] = float(n[c]);
+    }
+    if (!tangents.empty()) {
+      const glm::dvec3 t = linear * glm::dvec3(glm::make_vec3(&tangents[v * 4]));
+      for (int c = 0; c < 3; ++c) tangents[v * 4 + c] = float(t[c]);
+    }
+  }
+}
+
 std::vector<uint32_t> GltfImporter::toTriangleList(int mode, const std::vector<uint32_t>& indices,
                                                    const std::string& where) {
   std::vector<uint32_t> triangles;
@@ -439,7 +502,10 @@ void GltfImporter::placeNodes() {
   }
 
   // Depth-first with an explicit stack: a deep chain of nodes must not overflow the call stack.
+  // Skinned meshes are placed after it, once every joint's world transform is known.
   std::vector<bool> visited(model_.nodes.size(), false);
+  std::vector<glm::dmat4> worlds(model_.nodes.size(), glm::dmat4(1.0));
+  std::vector<int> skinned;
   std::vector<std::pair<int, glm::dmat4>> stack;
   for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.emplace_back(*root, glm::dmat4(1.0));
   while (!stack.empty()) {
@@ -457,12 +523,16 @@ void GltfImporter::placeNodes() {
     const tinygltf::Node& node = model_.nodes[size_t(index)];
     const glm::dmat4 world = parentWorld * localTransform(node, index);
     checkFiniteMatrix(glm::mat4(world), file_, "node " + std::to_string(index) + "'s world transform");
+    worlds[size_t(index)] = world;
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model_.meshes.size()) {
         fail("node " + std::to_string(index) + " uses mesh " + std::to_string(node.mesh) +
              ", but the file has " + std::to_string(model_.meshes.size()) + " meshes");
       }
-      placeMesh(meshWithWeights(node), glm::mat4(world), index);
+      if (node.skin >= 0)
+        skinned.push_back(index);
+      else
+        placeMesh(meshWithWeights(node), glm::mat4(world), index);
     }
     if (node.camera >= 0) addCamera(node.camera, index, world);
     addLight(node, index, world);
@@ -470,6 +540,49 @@ void GltfImporter::placeNodes() {
       stack.emplace_back(*child, world);
     }
   }
+  for (int index : skinned) placeSkinnedMesh(index, worlds, visited);
+}
+
+// A skinned mesh at the rest pose of its joints (their node transforms, as the scene places them):
+// one copy of the mesh for each (mesh, weights, skin), in world space.
+void GltfImporter::placeSkinnedMesh(int index, const std::vector<glm::dmat4>& worlds,
+                                    const std::vector<bool>& visited) {
+  const tinygltf::Node& node = model_.nodes[size_t(index)];
+  const std::string name = "node " + std::to_string(index);
+  if (size_t(node.skin) >= model_.skins.size())
+    fail(name + " uses skin " + std::to_string(node.skin) + ", but the file has " +
+         std::to_string(model_.skins.size()) + " skins");
+  const tinygltf::Skin& skin = model_.skins[size_t(node.skin)];
+  const std::vector<double>& weights =
+      node.weights.empty() ? model_.meshes[size_t(node.mesh)].weights : node.weights;
+  const auto key = std::make_tuple(node.mesh, weights, node.skin);
+  auto known = skinnedMeshes_.find(key);
+  if (known == skinnedMeshes_.end()) {
+    const std::string where = "skin " + std::to_string(node.skin);
+    if (skin.joints.empty()) fail(where + " has no joints; glTF requires at least one");
+    std::vector<float> inverseBinds;
+    if (skin.inverseBindMatrices >= 0) {
+      inverseBinds = readAccessor<float>(skin.inverseBindMatrices, where + " inverseBindMatrices",
+                                         TINYGLTF_TYPE_MAT4, Components::Float);
+      checkFinite(inverseBinds, where + " inverseBindMatrices");
+      if (inverseBinds.size() != skin.joints.size() * 16)
+        fail(where + " has " + std::to_string(inverseBinds.size() / 16) + " inverse bind matrices for " +
+             std::to_string(skin.joints.size()) + " joints; glTF needs one per joint");
+    }
+    std::vector<glm::dmat4> joints;
+    for (size_t j = 0; j < skin.joints.size(); ++j) {
+      const int joint = skin.joints[j];
+      if (joint < 0 || size_t(joint) >= model_.nodes.size() || !visited[size_t(joint)])
+        fail(where + "'s joint " + std::to_string(j) + " is node " + std::to_string(joint) +
+             ", which is not in the scene drawn; glTF places a skin's joints in its mesh's scene");
+      const glm::dmat4 inverseBind =
+          inverseBinds.empty() ? glm::dmat4(1.0) : glm::dmat4(glm::make_mat4(&inverseBinds[j * 16]));
+      joints.push_back(worlds[size_t(joint)] * inverseBind);
+    }
+    scene_.meshes.push_back(convertMesh(node.mesh, weights, &joints));
+    known = skinnedMeshes_.emplace(key, uint32_t(scene_.meshes.size() - 1)).first;
+  }
+  placeMesh(known->second, glm::mat4(1.0f), index);
 }
 
 // The scene mesh node `node` shows: its glTF mesh, or, where the node gives morph weights of its
@@ -650,7 +763,6 @@ void GltfImporter::warnAboutIgnoredData() {
   if (!ignoredTargetAttributes_.empty())
     warn("morph target attribute(s) " + describeList(ignoredTargetAttributes_) +
          " are ignored; only POSITION, NORMAL and TANGENT targets are applied");
-  if (!model_.skins.empty()) warn("skins are ignored; skinned meshes are drawn in their bind pose");
   if (!model_.animations.empty()) warn("animations are ignored; the scene is drawn in its rest pose");
 }
 
