@@ -91,6 +91,11 @@ void writeQuad(const fs::path& dir) {
   const float uvs[] = {0, 0, 1, 0, 1, 1, 0, 1};
   const float uvs1[] = {0, 0, 2, 0, 2, 2, 0, 2};
   const uint8_t colors[] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 128, 255, 255, 255, 255};
+  const uint8_t joints[] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0};
+  const float skinWeights[] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0};
+  const float inverseBinds[] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0,  0, 1,
+                                1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1};
+  const float morph[] = {0, 0.5f, 0, 0, 0, 0, 0, 0.25f, 0, 0, 0, 0};
   const uint16_t indices[] = {0, 2, 1, 0, 3, 2};
   const uint8_t sparseIndex[] = {1};
   const float sparseValue[] = {1, 0.2f, -1};
@@ -98,7 +103,9 @@ void writeQuad(const fs::path& dir) {
                u = append(uvs, sizeof uvs), i = append(indices, sizeof indices),
                si = append(sparseIndex, sizeof sparseIndex), sv = append(sparseValue, sizeof sparseValue),
                png = append(kPng.data(), kPng.size()), u1 = append(uvs1, sizeof uvs1),
-               c = append(colors, sizeof colors), webp = append(kWebp.data(), kWebp.size());
+               c = append(colors, sizeof colors), webp = append(kWebp.data(), kWebp.size()),
+               j = append(joints, sizeof joints), w = append(skinWeights, sizeof skinWeights),
+               ib = append(inverseBinds, sizeof inverseBinds), m = append(morph, sizeof morph);
   auto view = [](size_t offset, size_t length) {
     return json{{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}};
   };
@@ -110,7 +117,8 @@ void writeQuad(const fs::path& dir) {
       {"bufferViews",
        {view(p, sizeof positions), view(n, sizeof normals), view(u, sizeof uvs), view(i, sizeof indices),
         view(si, sizeof sparseIndex), view(sv, sizeof sparseValue), view(png, kPng.size()),
-        view(u1, sizeof uvs1), view(c, sizeof colors), view(webp, kWebp.size())}},
+        view(u1, sizeof uvs1), view(c, sizeof colors), view(webp, kWebp.size()), view(j, sizeof joints),
+        view(w, sizeof skinWeights), view(ib, sizeof inverseBinds), view(m, sizeof morph)}},
       {"accessors",
        {{{"bufferView", 0},
          {"componentType", 5126},
@@ -126,7 +134,11 @@ void writeQuad(const fs::path& dir) {
         {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
         {{"bufferView", 3}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}},
         {{"bufferView", 7}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
-        {{"bufferView", 8}, {"componentType", 5121}, {"normalized", true}, {"count", 4}, {"type", "VEC4"}}}},
+        {{"bufferView", 8}, {"componentType", 5121}, {"normalized", true}, {"count", 4}, {"type", "VEC4"}},
+        {{"bufferView", 10}, {"componentType", 5121}, {"count", 4}, {"type", "VEC4"}},
+        {{"bufferView", 11}, {"componentType", 5126}, {"count", 4}, {"type", "VEC4"}},
+        {{"bufferView", 12}, {"componentType", 5126}, {"count", 2}, {"type", "MAT4"}},
+        {{"bufferView", 13}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}}}},
       {"images",
        {{{"bufferView", 6}, {"mimeType", "image/png"}}, {{"bufferView", 9}, {"mimeType", "image/webp"}}}},
       {"samplers", {{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}, {"minFilter", 9986}}}},
@@ -152,9 +164,18 @@ void writeQuad(const fs::path& dir) {
       {"meshes",
        {{{"primitives",
           {{{"attributes",
-             {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}, {"TEXCOORD_1", 4}, {"COLOR_0", 5}}},
+             {{"POSITION", 0},
+              {"NORMAL", 1},
+              {"TEXCOORD_0", 2},
+              {"TEXCOORD_1", 4},
+              {"COLOR_0", 5},
+              {"JOINTS_0", 6},
+              {"WEIGHTS_0", 7}}},
+            {"targets", {{{"POSITION", 9}}}},
             {"indices", 3},
-            {"material", 0}}}}}}},
+            {"material", 0}}}},
+         {"weights", {0.5}}}}},
+      {"skins", {{{"joints", {2, 3}}, {"inverseBindMatrices", 8}}}},
       {"extensions",
        {{"KHR_lights_punctual",
          {{"lights",
@@ -164,12 +185,13 @@ void writeQuad(const fs::path& dir) {
              {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}}}}}}}},
       {"cameras", {{{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.01}}}}}},
       {"nodes",
-       {{{"mesh", 0}, {"children", {1}}, {"scale", {2, 1, 2}}},
+       {{{"mesh", 0}, {"children", {1}}, {"scale", {2, 1, 2}}, {"skin", 0}},
         {{"translation", {0, 1, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
         {{"rotation", {-0.7071068, 0, 0, 0.7071068}}, {"translation", {0, 3, 0}}, {"camera", 0}},
         {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5, 2, 0, 1}},
-         {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}}}},
-      {"scenes", {{{"nodes", {0, 2, 3}}}}},
+         {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}},
+        {{"mesh", 0}, {"weights", {1.0}}, {"translation", {3, 0, 0}}}}},
+      {"scenes", {{{"nodes", {0, 2, 3, 4}}}}},
       {"scene", 0}};
   writeGlb(dir / "quad.glb", doc, bin);
   doc["buffers"] = json::array(
