@@ -445,6 +445,59 @@ TEST_F(GltfLoaderTest, SkinsAtTheRestPose) {
   expectInputError(b.writeGltf(dir_, "weights"), "only one of JOINTS_0 and WEIGHTS_0");
 }
 
+// EXT_mesh_gpu_instancing: a node draws its mesh once per element of its TRANSLATION, ROTATION
+// (normalized shorts allowed) and SCALE accessors, each as the node's transform times translation x
+// rotation x scale; a mirroring instance gets the mesh's reversed copy; mismatched counts are an
+// InputError.
+TEST_F(GltfLoaderTest, GpuInstancingDrawsEveryInstance) {
+  GltfBuilder b = quadScene();
+  const int translation = b.addAccessor<float>({0, 0, 0, 10, 0, 0, 0, 5, 0}, kFloat, "VEC3");
+  // Identity, and 90 degrees about z (sin 45 = 23170 / 32767 in normalized shorts).
+  const int rotation =
+      b.addAccessor<int16_t>({0, 0, 0, 32767, 0, 0, 0, 32767, 0, 0, 23170, 23170}, 5122, "VEC4", true);
+  const int scale = b.addAccessor<float>({1, 1, 1, 2, 2, 2, -1, 1, 1}, kFloat, "VEC3");
+  b.doc["nodes"][0]["translation"] = {0, 0, 1};
+  b.doc["nodes"][0]["extensions"] = {
+      {"EXT_mesh_gpu_instancing",
+       {{"attributes",
+         {{"TRANSLATION", translation}, {"ROTATION", rotation}, {"SCALE", scale}, {"_ID", scale}}}}}};
+  b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+  b.doc["extensionsRequired"] = {"EXT_mesh_gpu_instancing"};
+  LoadReport report;
+  const Scene scene = loadGltf(b.writeGltf(dir_, "instanced"), &report);
+  for (const std::string& warning : report.warnings) ADD_FAILURE() << "unexpected warning: " << warning;
+  ASSERT_EQ(scene.instances.size(), 3u);
+  const auto corner = [&](size_t i, glm::vec3 p) {
+    return glm::vec3(scene.instances[i].transform * glm::vec4(p, 1));
+  };
+  expectVec3Near(corner(0, glm::vec3(1, 1, 0)), glm::vec3(1, 1, 1));
+  expectVec3Near(corner(1, glm::vec3(1, 1, 0)), glm::vec3(12, 2, 1), 1e-4f);
+  expectVec3Near(corner(2, glm::vec3(1, 1, 0)), glm::vec3(-1, 4, 1), 1e-4f);  // scaled -1 in x, turned
+  EXPECT_EQ(scene.instances[0].mesh, scene.instances[1].mesh);
+  EXPECT_NE(scene.instances[2].mesh, scene.instances[0].mesh);  // mirrored: the reversed copy
+
+  // gltfpack's instanced cave (assets/cave-instanced, a mesh per primitive): every copy of a mesh
+  // one node's instance, as many primitives placed as the cave's nodes place.
+  const Scene packed = loadGltf(LLL_ASSETS_DIR "/cave-instanced/cave.glb");
+  const Scene cave = loadGltf(LLL_ASSETS_DIR "/cave/cave.gltf");
+  const auto placedPrimitives = [](const Scene& scene) {
+    size_t count = 0;
+    for (const Instance& instance : scene.instances) count += scene.meshes[instance.mesh].primitives.size();
+    return count;
+  };
+  EXPECT_EQ(placedPrimitives(packed), placedPrimitives(cave));
+  EXPECT_LT(packed.meshes.size(), packed.instances.size());
+  EXPECT_EQ(packed.triangleCount(), cave.triangleCount());
+
+  b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["SCALE"] =
+      b.addAccessor<float>({1, 1, 1, 2, 2, 2}, kFloat, "VEC3");
+  expectInputError(b.writeGltf(dir_, "counts"), "different counts");
+  b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"_ID", scale}};
+  expectInputError(b.writeGltf(dir_, "none"), "none of TRANSLATION, ROTATION and SCALE");
+  b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"] = json::object();
+  expectInputError(b.writeGltf(dir_, "empty"), "has no attributes");
+}
+
 // KHR_texture_transform on a material's textures: offset, rotation and scale read per texture
 // (the identity where a texture has none), a texCoord in it counted like the texture's own, and
 // values of the wrong shape or not finite as 32-bit floats refused naming the texture.

@@ -125,8 +125,10 @@ TEST(QuantizedAssets, GltfpackCaveRendersAsTheCave) {
   settings.height = 90;
   settings.camera = fmt::format("{},{},{},{},{},{}", -1.5, 1.2, 1.5, 0.0, 0.4, -0.8);
   // And compressed (EXT_meshopt_compression, gltfpack -cc -vpf: float positions, octahedral normals;
-  // KHR_draco_mesh_compression, draco_transcoder with Blender's 14-bit positions, 10-bit normals).
-  for (const char* file : {"cave-quantized/cave.gltf", "cave-meshopt/cave.glb", "cave-draco/cave.glb"}) {
+  // KHR_draco_mesh_compression, draco_transcoder with Blender's 14-bit positions, 10-bit normals;
+  // EXT_mesh_gpu_instancing, gltfpack -mi -cc: the repeated meshes as instances of one node each).
+  for (const char* file : {"cave-quantized/cave.gltf", "cave-meshopt/cave.glb", "cave-draco/cave.glb",
+                           "cave-instanced/cave.glb"}) {
     Scene packed = loadScene(SceneRequest{std::string(LLL_ASSETS_DIR) + "/" + file});
     packed.lights = cave.lights;
     for (const char* technique : {"forward", "lll"}) {

@@ -92,6 +92,7 @@ class GltfImporter {
                  const std::vector<glm::dmat4>& joints, std::vector<float>& positions,
                  std::vector<float>& normals, std::vector<float>& tangents);
   void placeSkinnedMesh(int index, const std::vector<glm::dmat4>& worlds, const std::vector<bool>& visited);
+  std::vector<glm::dmat4> instanceTransforms(const tinygltf::Node& node, int index);
   void applyMorphTargets(const tinygltf::Primitive& primitive, const std::string& where,
                          const std::vector<double>& weights, std::vector<float>& positions,
                          std::vector<float>& normals, std::vector<float>& tangents);

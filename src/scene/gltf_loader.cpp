@@ -48,7 +48,7 @@ namespace {
 const std::set<std::string> kHandledExtensions = {
     "KHR_lights_punctual",     "KHR_materials_emissive_strength", "KHR_mesh_quantization",
     "EXT_meshopt_compression", "KHR_draco_mesh_compression",      "KHR_texture_transform",
-    "EXT_texture_webp"};
+    "EXT_texture_webp",        "EXT_mesh_gpu_instancing"};
 const std::set<std::string> kIgnorableRequiredExtensions = {"KHR_materials_ior"};
 
 // tinygltf's image callback. We only keep the encoded bytes and decode later, for the images a
@@ -529,10 +529,19 @@ void GltfImporter::placeNodes() {
         fail("node " + std::to_string(index) + " uses mesh " + std::to_string(node.mesh) +
              ", but the file has " + std::to_string(model_.meshes.size()) + " meshes");
       }
-      if (node.skin >= 0)
+      const std::vector<glm::dmat4> instances = instanceTransforms(node, index);
+      if (node.skin >= 0) {
+        if (!instances.empty())
+          warn("node " + std::to_string(index) +
+               " is skinned and instanced (EXT_mesh_gpu_instancing); "
+               "only its one skinned copy is drawn");
         skinned.push_back(index);
-      else
+      } else if (instances.empty()) {
         placeMesh(meshWithWeights(node), glm::mat4(world), index);
+      } else {
+        const uint32_t mesh = meshWithWeights(node);
+        for (const glm::dmat4& instance : instances) placeMesh(mesh, glm::mat4(world * instance), index);
+      }
     }
     if (node.camera >= 0) addCamera(node.camera, index, world);
     addLight(node, index, world);
@@ -541,6 +550,60 @@ void GltfImporter::placeNodes() {
     }
   }
   for (int index : skinned) placeSkinnedMesh(index, worlds, visited);
+}
+
+// EXT_mesh_gpu_instancing: the transforms (translation x rotation x scale, in the node's frame) of
+// the copies of its mesh that node `index` draws; none where the node has no such extension.
+std::vector<glm::dmat4> GltfImporter::instanceTransforms(const tinygltf::Node& node, int index) {
+  const auto found = node.extensions.find("EXT_mesh_gpu_instancing");
+  if (found == node.extensions.end()) return {};
+  const std::string where = "node " + std::to_string(index) + "'s EXT_mesh_gpu_instancing";
+  const tinygltf::Value& e = found->second;
+  if (!e.IsObject() || !e.Has("attributes") || !e.Get("attributes").IsObject())
+    fail(where + " has no attributes object");
+  const tinygltf::Value& attributes = e.Get("attributes");
+  std::vector<float> translations, rotations, scales;
+  for (const std::string& name : attributes.Keys()) {
+    const int accessor = int(std::min<uint64_t>(unsignedMember(attributes, name.c_str(), 0, file_, where),
+                                                uint64_t(std::numeric_limits<int>::max())));
+    const std::string what = where + " " + name;
+    if (name == "TRANSLATION") {
+      translations = readAccessor<float>(accessor, what, TINYGLTF_TYPE_VEC3,
+                                         quantized_ ? Components::QuantizedPosition : Components::Float);
+      checkFinite(translations, what);
+    } else if (name == "ROTATION") {  // unit quaternions, x y z w; normalized integers allowed
+      rotations = readAccessor<float>(accessor, what, TINYGLTF_TYPE_VEC4, Components::QuantizedDirection);
+      checkFinite(rotations, what);
+    } else if (name == "SCALE") {
+      scales = readAccessor<float>(accessor, what, TINYGLTF_TYPE_VEC3,
+                                   quantized_ ? Components::QuantizedPosition : Components::Float);
+      checkFinite(scales, what);
+    } else if (name.rfind('_', 0) != 0) {  // "_ID" and the like are applications' own
+      warn(what + " is not an attribute the extension defines; it is ignored");
+    }
+  }
+  const size_t count = std::max({translations.size() / 3, rotations.size() / 4, scales.size() / 3});
+  if (count == 0) fail(where + " has none of TRANSLATION, ROTATION and SCALE");
+  if ((!translations.empty() && translations.size() / 3 != count) ||
+      (!rotations.empty() && rotations.size() / 4 != count) ||
+      (!scales.empty() && scales.size() / 3 != count))
+    fail(where + "'s TRANSLATION, ROTATION and SCALE have different counts; each gives one per instance");
+  std::vector<glm::dmat4> out;
+  out.reserve(count);
+  for (size_t i = 0; i < count; ++i) {
+    glm::dmat4 m(1.0);
+    if (!translations.empty()) m = glm::translate(m, glm::dvec3(glm::make_vec3(&translations[i * 3])));
+    if (!rotations.empty()) {
+      const float* q = &rotations[i * 4];
+      const glm::dquat rotation(q[3], q[0], q[1], q[2]);  // glm: w first
+      const double length = glm::length(rotation);
+      if (!(length > 1e-6)) fail(where + " ROTATION " + std::to_string(i) + " is not a unit quaternion");
+      m *= glm::mat4_cast(rotation / length);
+    }
+    if (!scales.empty()) m = glm::scale(m, glm::dvec3(glm::make_vec3(&scales[i * 3])));
+    out.push_back(m);
+  }
+  return out;
 }
 
 // A skinned mesh at the rest pose of its joints (their node transforms, as the scene places them):
