@@ -112,8 +112,8 @@ void writeQuad(const fs::path& dir) {
   json doc = {
       {"asset", {{"version", "2.0"}}},
       {"extensionsUsed",
-       {"KHR_lights_punctual", "KHR_materials_emissive_strength", "EXT_texture_webp",
-        "KHR_texture_transform"}},
+       {"KHR_lights_punctual", "KHR_materials_emissive_strength", "EXT_texture_webp", "KHR_texture_transform",
+        "EXT_mesh_gpu_instancing"}},
       {"bufferViews",
        {view(p, sizeof positions), view(n, sizeof normals), view(u, sizeof uvs), view(i, sizeof indices),
         view(si, sizeof sparseIndex), view(sv, sizeof sparseValue), view(png, kPng.size()),
@@ -190,7 +190,10 @@ void writeQuad(const fs::path& dir) {
         {{"rotation", {-0.7071068, 0, 0, 0.7071068}}, {"translation", {0, 3, 0}}, {"camera", 0}},
         {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5, 2, 0, 1}},
          {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}},
-        {{"mesh", 0}, {"weights", {1.0}}, {"translation", {3, 0, 0}}}}},
+        {{"mesh", 0},
+         {"weights", {1.0}},
+         {"translation", {3, 0, 0}},
+         {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", 9}}}}}}}}}},
       {"scenes", {{{"nodes", {0, 2, 3, 4}}}}},
       {"scene", 0}};
   writeGlb(dir / "quad.glb", doc, bin);
