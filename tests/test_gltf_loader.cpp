@@ -340,9 +340,9 @@ TEST_F(GltfLoaderTest, DecodedTexturesAreBoundedTogether) {
   b.doc["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
   b.doc["materials"][0]["emissiveTexture"] = {{"index", 1}};
   const fs::path path = b.writeGltf(dir_, "budget");
-  EXPECT_EQ(loadGltf(path, nullptr, 8).textures.size(), 2u);  // 4 + 4 texels
+  EXPECT_EQ(loadGltf(path, nullptr, GltfLimits{.textureTexels = 8}).textures.size(), 2u);  // 4 + 4 texels
   LoadReport report;
-  const Scene scene = loadGltf(path, &report, 7);
+  const Scene scene = loadGltf(path, &report, GltfLimits{.textureTexels = 7});
   ASSERT_EQ(scene.textures.size(), 1u);
   EXPECT_EQ(scene.materials[0].emissiveTexture, -1);
   EXPECT_TRUE(anyWarningContains(report, "colours.webp", "past the 7 texels"));
@@ -391,6 +391,19 @@ TEST_F(GltfLoaderTest, MorphTargetsAtTheirDefaultWeights) {
   expectVec3Near(vertex(1, 2).position, glm::vec3(1, 1, 1));
   expectVec3Near(vertex(1, 0).position, glm::vec3(0, 0, 0));
   expectVec3Near(vertex(1, 2).normal, glm::vec3(1, 0, 1));
+
+  // Posed copies are bounded together: the node's copy is 4 vertices, a second node's 4 more.
+  EXPECT_EQ(loadGltf(b.writeGltf(dir_, "one-copy"), nullptr, GltfLimits{.posedVertices = 4}).meshes.size(),
+            2u);
+  b.doc["nodes"].push_back({{"mesh", 0}, {"weights", {0.0, 1.0}}});
+  b.doc["scenes"][0]["nodes"] = {0, 1, 2};
+  try {
+    loadGltf(b.writeGltf(dir_, "two-copies"), nullptr, GltfLimits{.posedVertices = 4});
+    ADD_FAILURE() << "a second posed copy past the limit loaded";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("node 2 needs a posed copy of mesh 0"), std::string::npos)
+        << e.what();
+  }
 
   b.doc["meshes"][0]["weights"] = {0.5};
   expectInputError(b.writeGltf(dir_, "weights"), "2 morph targets but 1 weights");

@@ -4,6 +4,7 @@
 // textures and images). tiny_gltf.h comes in for its declarations (gltf_accessors.h); its
 // implementation is gltf_loader.cpp's.
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_loader.h"
 #include "scene/gltf_numbers.h"
 
 #include <algorithm>
@@ -29,8 +30,8 @@ inline std::string inQuotes(const std::string& name) {
 
 class GltfImporter {
  public:
-  GltfImporter(const std::filesystem::path& file, uint64_t maxTextureTexels)
-      : path_(file), file_(file.string()), maxTextureTexels_(maxTextureTexels) {}
+  GltfImporter(const std::filesystem::path& file, const GltfLimits& limits)
+      : path_(file), file_(file.string()), limits_(limits) {}
 
   Scene run();
 
@@ -93,10 +94,11 @@ class GltfImporter {
                  std::vector<float>& normals, std::vector<float>& tangents);
   void placeSkinnedMesh(int index, const std::vector<glm::dmat4>& worlds, const std::vector<bool>& visited);
   std::vector<glm::dmat4> instanceTransforms(const tinygltf::Node& node, int index);
+  void reservePosedCopy(int mesh, int node);
   void applyMorphTargets(const tinygltf::Primitive& primitive, const std::string& where,
                          const std::vector<double>& weights, std::vector<float>& positions,
                          std::vector<float>& normals, std::vector<float>& tangents);
-  uint32_t meshWithWeights(const tinygltf::Node& node);
+  uint32_t meshWithWeights(const tinygltf::Node& node, int index);
   std::vector<uint32_t> toTriangleList(int mode, const std::vector<uint32_t>& indices,
                                        const std::string& where);
   uint32_t materialFor(int material, const std::string& where);
@@ -117,7 +119,7 @@ class GltfImporter {
   gltf_detail::NumberReader numbers_{file_, warnings_};
   std::vector<DecodedImage> images_;  // per glTF image, decoded on first use
   uint64_t decodedTexels_ = 0;        // over images_
-  uint64_t maxTextureTexels_;
+  GltfLimits limits_;
   // (glTF image, srgb, glTF sampler) -> Scene::textures
   std::map<std::tuple<int, bool, int>, int> textureIndex_;
   std::optional<uint32_t> defaultMaterial_;
@@ -129,6 +131,7 @@ class GltfImporter {
   std::map<std::pair<int, std::vector<double>>, uint32_t> morphedMeshes_;
   // A skinned mesh at its rest pose, by (glTF mesh, morph weights, skin).
   std::map<std::tuple<int, std::vector<double>, int>, uint32_t> skinnedMeshes_;
+  uint64_t posedVertices_ = 0;  // in the copies of both maps
   bool usesOtherTexCoords_ = false;
   bool quantized_ = false;  // the file uses KHR_mesh_quantization: integer attributes are allowed
 };

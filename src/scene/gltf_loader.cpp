@@ -537,9 +537,9 @@ void GltfImporter::placeNodes() {
                "only its one skinned copy is drawn");
         skinned.push_back(index);
       } else if (instances.empty()) {
-        placeMesh(meshWithWeights(node), glm::mat4(world), index);
+        placeMesh(meshWithWeights(node, index), glm::mat4(world), index);
       } else {
-        const uint32_t mesh = meshWithWeights(node);
+        const uint32_t mesh = meshWithWeights(node, index);
         for (const glm::dmat4& instance : instances) placeMesh(mesh, glm::mat4(world * instance), index);
       }
     }
@@ -606,6 +606,24 @@ std::vector<glm::dmat4> GltfImporter::instanceTransforms(const tinygltf::Node& n
   return out;
 }
 
+// Counts the vertices of a posed copy (morphed by a node's weights, or skinned) of mesh `mesh` for
+// node `node` against the limit (GltfLimits::posedVertices), before it is made.
+void GltfImporter::reservePosedCopy(int mesh, int node) {
+  uint64_t vertices = 0;
+  for (const tinygltf::Primitive& p : model_.meshes[size_t(mesh)].primitives) {
+    const auto position = p.attributes.find("POSITION");
+    if (position != p.attributes.end() && position->second >= 0 &&
+        size_t(position->second) < model_.accessors.size())
+      vertices += model_.accessors[size_t(position->second)].count;
+  }
+  posedVertices_ += vertices;
+  if (posedVertices_ > limits_.posedVertices)
+    fail("node " + std::to_string(node) + " needs a posed copy of mesh " + std::to_string(mesh) +
+         " (its own morph weights or a skin), which takes the scene's posed copies to " +
+         std::to_string(posedVertices_) + " vertices, more than the " +
+         std::to_string(limits_.posedVertices) + " accepted");
+}
+
 // A skinned mesh at the rest pose of its joints (their node transforms, as the scene places them):
 // one copy of the mesh for each (mesh, weights, skin), in world space.
 void GltfImporter::placeSkinnedMesh(int index, const std::vector<glm::dmat4>& worlds,
@@ -642,6 +660,7 @@ void GltfImporter::placeSkinnedMesh(int index, const std::vector<glm::dmat4>& wo
           inverseBinds.empty() ? glm::dmat4(1.0) : glm::dmat4(glm::make_mat4(&inverseBinds[j * 16]));
       joints.push_back(worlds[size_t(joint)] * inverseBind);
     }
+    reservePosedCopy(node.mesh, index);
     scene_.meshes.push_back(convertMesh(node.mesh, weights, &joints));
     known = skinnedMeshes_.emplace(key, uint32_t(scene_.meshes.size() - 1)).first;
   }
@@ -650,12 +669,15 @@ void GltfImporter::placeSkinnedMesh(int index, const std::vector<glm::dmat4>& wo
 
 // The scene mesh node `node` shows: its glTF mesh, or, where the node gives morph weights of its
 // own, a copy of the mesh morphed by them (one for each distinct set of weights).
-uint32_t GltfImporter::meshWithWeights(const tinygltf::Node& node) {
+uint32_t GltfImporter::meshWithWeights(const tinygltf::Node& node, int index) {
   const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
-  if (node.weights.empty() || node.weights == mesh.weights) return uint32_t(node.mesh);
+  const bool targets = std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
+                                   [](const tinygltf::Primitive& p) { return !p.targets.empty(); });
+  if (!targets || node.weights.empty() || node.weights == mesh.weights) return uint32_t(node.mesh);
   const auto key = std::make_pair(node.mesh, node.weights);
   auto known = morphedMeshes_.find(key);
   if (known == morphedMeshes_.end()) {
+    reservePosedCopy(node.mesh, index);
     scene_.meshes.push_back(convertMesh(node.mesh, node.weights));
     known = morphedMeshes_.emplace(key, uint32_t(scene_.meshes.size() - 1)).first;
   }
@@ -833,8 +855,8 @@ void GltfImporter::warnAboutIgnoredData() {
 
 namespace lll {
 
-Scene loadGltf(const std::filesystem::path& file, LoadReport* report, uint64_t maxTextureTexels) {
-  gltf_detail::GltfImporter importer(file, maxTextureTexels);
+Scene loadGltf(const std::filesystem::path& file, LoadReport* report, const GltfLimits& limits) {
+  gltf_detail::GltfImporter importer(file, limits);
   Scene scene = importer.run();
   if (report != nullptr) {
     for (std::string& warning : importer.takeWarnings()) report->warnings.push_back(std::move(warning));

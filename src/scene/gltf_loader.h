@@ -23,11 +23,18 @@ struct LoadReport {
 // error: the material keeps texture index -1 (the renderer substitutes a neutral texture) and a
 // warning is appended to `report` when one is given.
 //
-// Images decode to at most `maxTextureTexels` texels together (4 GiB of RGBA8 by default); one past
-// that is an image that could not be decoded, as above. Small glTF files can hold images that
-// decode to gigabytes (a WebP or JPEG of one colour is kilobytes at any size).
-inline constexpr uint64_t kDefaultMaxTextureTexels = uint64_t(1) << 30;
+// `limits` bound what a small file can make the loader allocate: past textureTexels an image is
+// one that could not be decoded, as above; past posedVertices the file is an InputError.
+struct GltfLimits {
+  // The texels the scene's images decode to together: 4 GiB of RGBA8. A WebP or JPEG of one colour
+  // is kilobytes at any size.
+  uint64_t textureTexels = uint64_t(1) << 30;
+  // The vertices of the copies of meshes posed for their nodes (a node's own morph weights, a
+  // skin): 2 GiB of vertices, 64 skinned characters of half a million vertices. A few bytes of
+  // JSON per node can ask for a copy of a large mesh.
+  uint64_t posedVertices = uint64_t(1) << 25;
+};
 Scene loadGltf(const std::filesystem::path& file, LoadReport* report = nullptr,
-               uint64_t maxTextureTexels = kDefaultMaxTextureTexels);
+               const GltfLimits& limits = {});
 
 }  // namespace lll

@@ -236,10 +236,10 @@ bool GltfImporter::withinTextureBounds(int width, int height, DecodedImage& deco
     return false;
   }
   const uint64_t texels = uint64_t(width) * uint64_t(height);
-  if (decodedTexels_ + texels > maxTextureTexels_) {
+  if (decodedTexels_ + texels > limits_.textureTexels) {
     decoded.failure = size + " would take the scene's decoded textures past the " +
-                      std::to_string(maxTextureTexels_) + " texels (" +
-                      std::to_string((maxTextureTexels_ * 4) >> 20) + " MiB) we accept in all";
+                      std::to_string(limits_.textureTexels) + " texels (" +
+                      std::to_string((limits_.textureTexels * 4) >> 20) + " MiB) we accept in all";
     return false;
   }
   decodedTexels_ += texels;
