@@ -502,6 +502,13 @@ TEST_F(GltfLoaderTest, GpuInstancingDrawsEveryInstance) {
   EXPECT_LT(packed.meshes.size(), packed.instances.size());
   EXPECT_EQ(packed.triangleCount(), cave.triangleCount());
 
+  try {  // placements are bounded
+    loadGltf(b.writeGltf(dir_, "limited"), nullptr, GltfLimits{.instances = 2});
+    ADD_FAILURE() << "three placements loaded under a limit of two";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("past the 2 placements"), std::string::npos) << e.what();
+  }
+
   b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["SCALE"] =
       b.addAccessor<float>({1, 1, 1, 2, 2, 2}, kFloat, "VEC3");
   expectInputError(b.writeGltf(dir_, "counts"), "different counts");

@@ -687,6 +687,9 @@ uint32_t GltfImporter::meshWithWeights(const tinygltf::Node& node, int index) {
 // Every placed vertex must have coordinates whose squares are finite floats (distances, the far
 // plane); a node scaled or moved too far would give an infinite projection and NaN pixels.
 void GltfImporter::placeMesh(uint32_t mesh, const glm::mat4& world, int node) {
+  if (scene_.instances.size() >= limits_.instances)
+    fail("node " + std::to_string(node) + " places a mesh past the " + std::to_string(limits_.instances) +
+         " placements accepted (nodes and EXT_mesh_gpu_instancing copies together)");
   auto known = meshBounds_.find(mesh);
   if (known == meshBounds_.end()) known = meshBounds_.emplace(mesh, scene_.meshBounds(mesh)).first;
   const Bounds placed = transformBounds(known->second, world);

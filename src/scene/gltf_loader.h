@@ -33,6 +33,9 @@ struct GltfLimits {
   // skin): 2 GiB of vertices, 64 skinned characters of half a million vertices. A few bytes of
   // JSON per node can ask for a copy of a large mesh.
   uint64_t posedVertices = uint64_t(1) << 25;
+  // The meshes the scene places in all (a node's, and each of EXT_mesh_gpu_instancing's copies):
+  // an accessor without data reads as 4 million zeros, so a tiny file could place a mesh that often.
+  uint64_t instances = uint64_t(1) << 20;
 };
 Scene loadGltf(const std::filesystem::path& file, LoadReport* report = nullptr,
                const GltfLimits& limits = {});
