@@ -346,6 +346,15 @@ TEST_F(GltfLoaderTest, DecodedTexturesAreBoundedTogether) {
   ASSERT_EQ(scene.textures.size(), 1u);
   EXPECT_EQ(scene.materials[0].emissiveTexture, -1);
   EXPECT_TRUE(anyWarningContains(report, "colours.webp", "past the 7 texels"));
+
+  // One image under two samplers is two copies, each counted.
+  b.doc["samplers"] = json::array({{{"magFilter", 9728}}});
+  b.doc["textures"][1] = {{"source", 0}, {"sampler", 0}};
+  const fs::path copies = b.writeGltf(dir_, "copies");
+  EXPECT_EQ(loadGltf(copies, nullptr, GltfLimits{.textureTexels = 8}).textures.size(), 2u);
+  LoadReport copyReport;
+  EXPECT_EQ(loadGltf(copies, &copyReport, GltfLimits{.textureTexels = 7}).textures.size(), 1u);
+  EXPECT_TRUE(anyWarningContains(copyReport, "another copy", "checker.png"));
 }
 
 // glTF morph targets at their default weights (the mesh's, or a node's own, which gets a morphed

@@ -44,6 +44,7 @@ class GltfImporter {
     uint32_t width = 0;
     uint32_t height = 0;
     std::vector<uint8_t> rgba;
+    uint32_t textures = 0;  // Scene textures made of it (one per colour space and sampler)
   };
 
   [[noreturn]] void fail(const std::string& what) const { throw InputError(file_ + ": " + what); }

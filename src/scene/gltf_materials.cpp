@@ -137,12 +137,28 @@ int GltfImporter::textureFor(const Info& info, bool srgb, const char* slot, Text
   if (auto known = textureIndex_.find({image, srgb, samplerIndex}); known != textureIndex_.end())
     return known->second;
 
-  const DecodedImage& decoded = decodeImage(image);
+  decodeImage(image);
+  DecodedImage& decoded = images_[size_t(image)];
   if (!decoded.failure.empty()) {
     warn("material " + inQuotes(material) + ": " + slot + " image " + inQuotes(imageName(image)) +
          " could not be loaded (" + decoded.failure + "); a neutral texture is used instead");
     return -1;
   }
+  // The decode counted one copy of its texels; every further texture of the image (another
+  // sampler, the other colour space) is another copy, counted too: one large image under a
+  // thousand samplers is a thousand copies.
+  const uint64_t texels = uint64_t(decoded.width) * decoded.height;
+  if (decoded.textures > 0) {
+    if (decodedTexels_ + texels > limits_.textureTexels) {
+      warn("material " + inQuotes(material) + ": another copy of " + slot + " image " +
+           inQuotes(imageName(image)) +
+           " (for another sampler or colour space) would take the scene's textures past the " +
+           std::to_string(limits_.textureTexels) + " texels accepted; a neutral texture is used instead");
+      return -1;
+    }
+    decodedTexels_ += texels;
+  }
+  ++decoded.textures;
   Texture texture;
   texture.name = imageName(image);
   texture.width = decoded.width;
