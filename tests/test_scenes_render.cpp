@@ -14,6 +14,7 @@
 
 #include "gltf_test_support.h"
 #include "scene/builtin_scenes.h"
+#include "scene/errors.h"
 #include "scene/scene_source.h"
 #include "test_support.h"
 
@@ -139,6 +140,47 @@ TEST(QuantizedAssets, GltfpackCaveRendersAsTheCave) {
       EXPECT_GT(test::shareAboveBlack(b.ldr), 0.2) << technique;
     }
   }
+}
+
+// The visibility buffer's surface rebuild reads the scene's vertices as one storage buffer: where
+// the device's largest (maxStorageBufferRange; lavapipe 128 MiB, 2,097,152 vertices of 64 bytes)
+// holds fewer, the renderer refuses with the counts and the way out, --surfaces gbuffer, which
+// then renders the scene. A GPU's 4 GiB would need a scene of 67 million vertices: checked there
+// only as the limit.
+TEST(DeviceLimits, SurfaceRebuildRefusesMoreVerticesThanAStorageBufferHolds) {
+  Context& context = test::gpuContext();
+  const uint64_t fit = context.properties().limits.maxStorageBufferRange / sizeof(Vertex);
+  if (fit > (uint64_t(1) << 24)) {
+    EXPECT_GE(uint64_t(context.properties().limits.maxStorageBufferRange), uint64_t(sizeof(Vertex)) << 24);
+    return;
+  }
+  Scene scene = loadScene(SceneRequest{"plane", 0, 1});
+  const uint32_t offset = uint32_t(scene.vertices.size());
+  scene.vertices.resize(fit + 1);  // unused vertices past the plane's, then one triangle of them
+  for (uint32_t i = 0; i < 3; ++i) {
+    scene.vertices[offset + i].position = glm::vec3(float(i == 1), 0.5f + float(i == 2), 0.0f);
+    scene.vertices[offset + i].normal = glm::vec3(0, 0, 1);
+  }
+  Mesh triangle;
+  triangle.name = "triangle";
+  triangle.primitives.push_back({uint32_t(scene.indices.size()), 3, offset, 0});
+  scene.indices.insert(scene.indices.end(), {0, 1, 2});
+  scene.meshes.push_back(triangle);
+  scene.instances.push_back({uint32_t(scene.meshes.size() - 1), glm::mat4(1.0f)});
+  RenderSettings settings;
+  settings.width = 32;
+  settings.height = 18;
+  settings.technique = "lll";
+  try {
+    Renderer renderer(context, scene, settings);
+    ADD_FAILURE() << "a scene with more vertices than a storage buffer holds was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(std::to_string(fit + 1) + " vertices"), std::string::npos) << message;
+    EXPECT_NE(message.find("--surfaces gbuffer"), std::string::npos) << message;
+  }
+  settings.surfaces = "gbuffer";
+  EXPECT_GT(test::shareAboveBlack(test::render(scene, settings).ldr), 0.1);
 }
 
 // A glTF whose material has data textures (normal, metallic-roughness, occlusion: 8-bit UNORM) as

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "gpu/context.h"
+#include "render/frame.h"
 #include "render/gpu_scene.h"
 
 namespace lll {
@@ -72,6 +73,13 @@ std::string VisibilityBuffer::problem(const Context& context, const GpuScene& sc
 VisibilityBuffer::VisibilityBuffer(Context& context, const GpuScene& scene, bool computeRaster,
                                    uint32_t width, uint32_t height)
     : context_(context), triangleBits_(idLayout(scene).triangleBits) {
+  // The surface rebuild reads the scene's vertices and indices as storage buffers (lavapipe's are
+  // at most 128 MiB: 2 million vertices).
+  const char* advice = "render it with --surfaces gbuffer, which reads them as vertex streams";
+  requireStorageBufferFits(context, scene.scene().vertices.size(), sizeof(Vertex),
+                           "the visibility buffer's surface rebuild", "vertices", advice);
+  requireStorageBufferFits(context, scene.scene().indices.size(), sizeof(uint32_t),
+                           "the visibility buffer's surface rebuild", "indices", advice);
   const SpecializationConstants constants = {{kTriangleBitsConstant, triangleBits_}};
   layout_ = PipelineLayout(context, {"common/visibility.vert", "common/visibility.frag"});
   GraphicsPipelineDesc desc;
