@@ -188,7 +188,8 @@ constexpr Path kPaths[] = {{"forward", "forward", "gbuffer", "hardware"},
 
 // `a` and `b` draw the same image through every path (the last bits: the same texture
 // coordinates or colours, one computed in a shader and one on the CPU).
-void expectSameThroughEveryPath(const Scene& a, const Scene& b, const std::string& what) {
+void expectSameThroughEveryPath(const Scene& a, const Scene& b, const std::string& what,
+                                const test::ImageBound& bound = test::kSameImage) {
   for (const Path& p : kPaths) {
     RenderSettings settings;
     settings.width = 160;
@@ -197,7 +198,7 @@ void expectSameThroughEveryPath(const Scene& a, const Scene& b, const std::strin
     settings.surfaces = p.surfaces;
     settings.raster = p.raster;
     const test::Rendered x = test::render(a, settings), y = test::render(b, settings);
-    test::expectWithinBound(x.ldr, y.ldr, test::kSameImage, what + ", " + p.name);
+    test::expectWithinBound(x.ldr, y.ldr, bound, what + ", " + p.name);
     EXPECT_GT(test::shareAboveBlack(y.ldr), 0.4) << p.name;  // the upper half is sky
   }
 }
@@ -212,7 +213,12 @@ double psnrOfDefaultRender(const Scene& a, const Scene& b) {
 TEST(TextureTransform, DrawsWhatTheTransformBakedIntoTheUvsDraws) {
   const Scene transformed = transformScene({.transformed = kAllSlots});
   const Scene baked = transformScene({.baked = true});
-  expectSameThroughEveryPath(transformed, baked, "transformed vs baked");
+  // On the H200 one pixel of 14,400, (94, 29) in every path, differs by 155 (48.6 dB, 99.99%
+  // within 2; identical on lavapipe): the coordinates baked on the CPU and those transformed in
+  // the shader round apart there, most likely onto two sides of the alpha mask's cutoff. So a few
+  // pixels may differ by any amount.
+  expectSameThroughEveryPath(transformed, baked, "transformed vs baked",
+                             test::ImageBound{45.0, 2, 0.999, 255});
   // Without the transforms (the baked scene's materials on its original UVs) the image is another.
   EXPECT_LT(psnrOfDefaultRender(transformScene({}), baked), 30.0);
 }
