@@ -180,9 +180,10 @@ inline bool anyWarningContains(const LoadReport& report, const std::string& a, c
 }
 
 // Loading `path` must throw InputError naming the file (and `detail`, when given).
-inline void expectInputError(const fs::path& path, const std::string& detail = "") {
+inline void expectInputError(const fs::path& path, const std::string& detail = "",
+                             const GltfLimits& limits = {}) {
   try {
-    loadGltf(path);
+    loadGltf(path, nullptr, limits);
     ADD_FAILURE() << "loading " << path << " did not throw";
   } catch (const InputError& e) {
     const std::string message = e.what();
