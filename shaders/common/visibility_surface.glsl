@@ -191,13 +191,16 @@ vec4 sampleMaterialTexture(GpuMaterial m, uint slot, uint index, SurfaceGeometry
   return sampleTextureTable(index, uv, d);
 }
 
-// The five textures of material `m` at the surface.
+// The textures material `m` has at the surface; `t` keeps what the 1x1 stand-ins of the others
+// would give (white, the flat normal).
 void sampleMaterial(GpuMaterial m, SurfaceGeometry g, inout MaterialSamples t) {
-  t.baseColor = sampleMaterialTexture(m, 0u, m.textures.x, g);
-  t.metallicRoughness = sampleMaterialTexture(m, 1u, m.textures.y, g);
-  t.normal = sampleMaterialTexture(m, 2u, m.textures.z, g).xyz;
-  t.emissive = sampleMaterialTexture(m, 3u, m.textures.w, g).rgb;
-  t.occlusion = sampleMaterialTexture(m, 4u, m.flags.w, g).r;
+  uint has = m.flags.z;
+  if ((has & kMaterialBaseColorTexture) != 0u) t.baseColor = sampleMaterialTexture(m, 0u, m.textures.x, g);
+  if ((has & kMaterialMetallicRoughnessTexture) != 0u)
+    t.metallicRoughness = sampleMaterialTexture(m, 1u, m.textures.y, g);
+  if ((has & kMaterialNormalTexture) != 0u) t.normal = sampleMaterialTexture(m, 2u, m.textures.z, g).xyz;
+  if ((has & kMaterialEmissiveTexture) != 0u) t.emissive = sampleMaterialTexture(m, 3u, m.textures.w, g).rgb;
+  if ((has & kMaterialOcclusionTexture) != 0u) t.occlusion = sampleMaterialTexture(m, 4u, m.flags.w, g).r;
 }
 
 // The surface at `pixel`, or false where the visibility pass drew nothing (or `inside` is false:

@@ -41,8 +41,13 @@ LLL_CONST(uint, kAlphaBlend, 2u);
 // The visibility buffer's value where no surface was drawn (a pixel id is a record index shifted
 // over the triangle bits, or'ed with the triangle: never all ones while records fit).
 LLL_CONST(uint, kNoSurface, 0xFFFFFFFFu);
-// GpuMaterial.flags.z bits: which of the material's textures the file gave.
+// GpuMaterial.flags.z bits: which of the material's textures the file gave (the others are bound
+// to 1x1 stand-ins: white, or the flat normal).
 LLL_CONST(uint, kMaterialNormalTexture, 1u);
+LLL_CONST(uint, kMaterialBaseColorTexture, 2u);
+LLL_CONST(uint, kMaterialMetallicRoughnessTexture, 4u);
+LLL_CONST(uint, kMaterialEmissiveTexture, 8u);
+LLL_CONST(uint, kMaterialOcclusionTexture, 16u);
 // GpuMaterial.flags.z: some texture of the material has a KHR_texture_transform.
 LLL_CONST(uint, kMaterialTextureTransform, 256u);
 // GpuMaterial.flags.z: bit kMaterialSecondTexCoord << slot (common/texture_transform.glsl's slots)

@@ -259,7 +259,15 @@ void GpuScene::uploadMaterials() {
     g.baseColorFactor = m.baseColorFactor;
     g.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
     g.params = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
-    uint32_t textures = m.normalTexture >= 0 ? gpu::kMaterialNormalTexture : 0u;
+    const TextureSlots slots = textureSlots(m);
+    // Which textures the material has (the rest are the stand-ins after the scene's own): the
+    // surface rebuild samples only those.
+    constexpr uint32_t kBits[kTexturesPerMaterial] = {
+        gpu::kMaterialBaseColorTexture, gpu::kMaterialMetallicRoughnessTexture, gpu::kMaterialNormalTexture,
+        gpu::kMaterialEmissiveTexture, gpu::kMaterialOcclusionTexture};
+    uint32_t textures = 0;
+    for (uint32_t i = 0; i < kTexturesPerMaterial; ++i)
+      if (slots[i] < scene_.textures.size()) textures |= kBits[i];
     for (uint32_t slot = 0; slot < kTextureSlots; ++slot) {
       const TextureTransform& t = m.transforms[slot];
       if (!t.identity()) textures |= gpu::kMaterialTextureTransform;
@@ -269,7 +277,6 @@ void GpuScene::uploadMaterials() {
       g.uvOffset[slot / 2][2 * (slot % 2)] = t.offset.x;
       g.uvOffset[slot / 2][2 * (slot % 2) + 1] = t.offset.y;
     }
-    const TextureSlots slots = textureSlots(m);
     g.flags = glm::uvec4(uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, textures, slots[4]);
     g.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
     g.textures = glm::uvec4(slots[0], slots[1], slots[2], slots[3]);
