@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "gpu/context.h"
@@ -243,7 +244,8 @@ void VisibilityBuffer::bindSurfaceData(DescriptorWriter& writer, const FrameCont
 SpecializationConstants VisibilityBuffer::surfaceConstants(const GpuScene& scene) const {
   return {{kTriangleBitsConstant, triangleBits_},
           {kTextureCountConstant, scene.textureCount()},
-          {kComputedLevelOfDetailConstant, context_.isCpuDevice() ? 1u : 0u},
+          {kComputedLevelOfDetailConstant,
+           context_.isCpuDevice() || std::getenv("LLL_PROBE_COMPUTED_LOD") != nullptr ? 1u : 0u},
           {kSecondTexCoordsConstant, scene.secondTexCoords() ? 1u : 0u},
           {kVertexColorsConstant, scene.vertexColors() ? 1u : 0u}};
 }
