@@ -3,7 +3,8 @@
 # wip/issue11-walk-and-rebuild: /tmp/lll_base (main's tip: the link-at-a-time walk), /tmp/lll_t1
 # (this branch: the rebuild samples only the textures a material has), and probes of t1's tree
 # that set lll/lighting.glsl's LLL_LOOKAHEAD / LLL_PROBE_COMPACT_ONLY: q1, q3 (links read ahead down
-# a segment), c1 (compact links only, no format test per link), q1c (both).
+# a segment), c1 (compact links only, no format test per link), q1c (both). run.sh runs t1 a
+# second time as t2, with LLL_PROBE_COMPUTED_LOD=1 (src/render/visibility.cpp).
 set -euo pipefail
 branch=$(git rev-parse --abbrev-ref HEAD)
 f=shaders/lighting/lll/lighting.glsl
