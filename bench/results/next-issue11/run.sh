@@ -6,7 +6,7 @@
 # LLL_PROBE_COMPUTED_LOD=1: the rebuild computes the level of detail and samples with textureLod (as
 # on lavapipe) instead of textureGrad; its image is kept too (it may differ from forward's).
 # Pack: pack.sh /tmp/lll_base /tmp/lll_t1 /tmp/lll_q1 /tmp/lll_q3 /tmp/lll_c1 /tmp/lll_q1c /tmp/layers
-# (then .gpu/bin/lll_base renamed lll), setup.sh from ../h200-2026-12-04d.
+# (then .gpu/bin/lll_base renamed lll), ../gpu-setup.sh as .gpu/setup.sh.
 set -u
 source .gpu/setup.sh
 E=.gpu/extra
