@@ -5,6 +5,8 @@
 // scenario, it says how far the technique's "shade-opaque" is from the arithmetic it must do
 // when every light reaches every pixel (ThreeL's test).
 #include <cstdint>
+#include <optional>
+#include <vector>
 
 #include "gpu/pass_timer.h"
 #include "gpu/pipeline.h"
@@ -21,14 +23,18 @@ class AluProbe {
   AluProbe(Context& context, const Scene& scene, uint32_t width, uint32_t height);
   ~AluProbe();
 
-  // One timed run over `lights` lights: the pass "alu-probe".
-  PassTime run(uint32_t lights);
+  // One timed run over `lights` lights: the pass "alu-probe"; where the device has 16-bit floats,
+  // also "alu-probe-half", the same evaluation in packed half floats, two lights an instruction
+  // (a probe of how far 16-bit arithmetic could go; its image is not a usable one).
+  std::vector<PassTime> run(uint32_t lights);
 
  private:
   Context& context_;
   uint32_t width_, height_;
   PipelineLayout layout_;
   Pipeline pipeline_;
+  PipelineLayout halfLayout_;
+  std::optional<Pipeline> halfPipeline_;
   Image target_;
   PassTimer timer_;
 };

@@ -175,7 +175,8 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
     const double updateMs = i > 0 ? moveLightsTo(float(i) * kAnimationFrameSeconds) : 0.0;
     FrameResult frame = renderer.renderFrame(false);
     if (i == 0) requireParticlePass(s, frame);
-    if (probe) frame.passes.push_back(probe->run(uint32_t(scene.lights.size())));
+    if (probe)
+      for (const PassTime& p : probe->run(uint32_t(scene.lights.size()))) frame.passes.push_back(p);
     const std::chrono::duration<double> warming = std::chrono::steady_clock::now() - warmupStart;
     if (i + 1 == warmup && warming.count() < counts.minWarmupSeconds) ++warmup;  // one more
     if (i < warmup) continue;

@@ -78,7 +78,7 @@ void writeFile(const fs::path& path, const std::string& text) {
 bool isOwnPass(const std::string& name) {
   return name != "visibility" && name != "visibility-resolve" && name != "depth-prepass" &&
          name != "gbuffer" && name != "shade-opaque" && name != "glass" && name != "tonemap" &&
-         name != "frame" && !name.starts_with("particles") && name != "alu-probe";
+         name != "frame" && !name.starts_with("particles") && !name.starts_with("alu-probe");
 }
 
 // A log-log chart of `suite`'s times against light count, one line per technique (with `perPass`

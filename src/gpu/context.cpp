@@ -395,6 +395,8 @@ void Context::createDevice(bool swapchain) {
   // The visibility buffer's material textures: a workgroup-uniform index into the texture table
   // where the device has the first, any index where it has the second (common/visibility_surface.glsl).
   features.features.shaderSampledImageArrayDynamicIndexing = supported.shaderSampledImageArrayDynamicIndexing;
+  float16_ = supported12.shaderFloat16 == VK_TRUE;
+  f12.shaderFloat16 = supported12.shaderFloat16;
   nonUniformTextures_ = supported12.shaderSampledImageArrayNonUniformIndexing == VK_TRUE;
   f12.shaderSampledImageArrayNonUniformIndexing = supported12.shaderSampledImageArrayNonUniformIndexing;
 

@@ -67,6 +67,8 @@ class Context {
   // shaderSampledImageArrayNonUniformIndexing is enabled: a shader may index a sampler array with a
   // value that differs between invocations (the visibility buffer's surface rebuild).
   bool nonUniformTextureFeatures() const { return nonUniformTextures_; }
+  // shaderFloat16 is enabled (the bench's half-precision ALU probe, bench/alu_probe.h).
+  bool float16Features() const { return float16_; }
   // LLL_SHADER_STATS set and VK_KHR_pipeline_executable_properties there: each compute pipeline's
   // driver statistics (registers, shared memory, ...) are printed to stderr as it is made.
   bool shaderStatistics() const { return shaderStatistics_; }
@@ -112,6 +114,7 @@ class Context {
   bool visibilityBuffer_ = false;
   bool computeRaster_ = false;
   bool nonUniformTextures_ = false;
+  bool float16_ = false;
   bool shaderStatistics_ = false;
   mutable std::mutex messagesMutex_;
   std::vector<std::string> messages_;

@@ -4,7 +4,9 @@
 # in rotating order; c1 and q1c only on ThreeL (at most 256 lights: compact links). Registers of
 # the shading pass (LLL_SHADER_STATS); images of base and t1 kept to compare. t2 is t1's binary with
 # LLL_PROBE_COMPUTED_LOD=1: the rebuild computes the level of detail and samples with textureLod (as
-# on lavapipe) instead of textureGrad; its image is kept too (it may differ from forward's).
+# on lavapipe) instead of textureGrad; its image is kept too (it may differ from forward's). Last,
+# t1's `bench --suite threel`, whose alu-probe-half row says what packed 16-bit arithmetic could
+# take off the 256-light floor (bench/README.md, 2026-12-04 (fifth)).
 # Pack: pack.sh /tmp/lll_base /tmp/lll_t1 /tmp/lll_q1 /tmp/lll_q3 /tmp/lll_c1 /tmp/lll_q1c /tmp/layers
 # (then .gpu/bin/lll_base renamed lll), ../gpu-setup.sh as .gpu/setup.sh.
 set -u
@@ -33,4 +35,7 @@ for rep in 1 2 3; do
   done
 done
 echo renders $SECONDS
-cd $OUT && tar cJf r.tar.xz r && tar cf img.tar img && rm -rf r img; ls -la; true
+# The ALU probe in 32 and in packed 16-bit floats (alu-probe, alu-probe-half) beside ThreeL's frames.
+timeout 400 $E/lll_t1 bench --suite threel --technique lll --frames 20 --warmup 5 --out $OUT/bench-t1 >/dev/null 2>&1 || echo fail bench
+echo bench $SECONDS
+cd $OUT && tar cJf r.tar.xz r bench-t1 && tar cf img.tar img && rm -rf r img bench-t1; ls -la; true
