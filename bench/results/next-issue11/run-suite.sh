@@ -1,7 +1,9 @@
 # For the next GPU session, first: main's GPU image suite with validation, which has not run on the
 # H200 since the link-at-a-time walk (5be8d9e), nor on what landed 2026-12-04 without a GPU (mirrored
 # glTF nodes, lights-move, the quantized and compressed caves, data textures on lavapipe,
-# KHR_texture_transform); then the moving suite (its million
+# KHR_texture_transform) and 2026-12-05 (the 64-byte vertex with TEXCOORD_1 and COLOR_0 as half
+# floats read as bits in the surface rebuild, glTF samplers per texture: TextureCoordinates.*,
+# VertexColors.*, TextureSamplers.*); then the moving suite (its million
 # moving lights, GPU against CPU placement) and lights-move's positions against the CPU's.
 # Pack from main's build: pack.sh build/lll build/tests/lll_tests /tmp/layers; ../gpu-setup.sh as
 # .gpu/setup.sh. About 280 s of tests and 200 s of bench.
