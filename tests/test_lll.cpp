@@ -362,6 +362,29 @@ TEST(LllImages, TinyPoolGrowsAndStillMatches) {
   }
 }
 
+TEST(LllImages, CompactPoolOutgrownMovesToWideLinksAndStillMatches) {
+  // A compact pool that may hold only 128 links: the first frame outgrows it, and --lll-link auto
+  // must move to wide links, with every pass that reads them (the fills, opaque shading, glass)
+  // compiled again for that format (kLinkFormat, common/lll_data.glsl).
+  const Scene scene = *makeBuiltinScene("atrium");
+  RenderSettings settings;
+  settings.width = 160;
+  settings.height = 90;
+  const test::Rendered reference = test::render(scene, test::reference(settings));
+  settings.technique = "lll";
+  settings.linksPerTile = 1;
+  settings.lllCompactLinkLimit = 128;  // the first pool: 60 tiles x 2 slices
+  for (const char* fill : {"compute", "shells"}) {
+    settings.lllFill = fill;
+    const test::Rendered lll = test::render(scene, settings);
+    EXPECT_GE(lll.frame.rerenders, 1u) << fill;
+    EXPECT_GT(test::stat(lll, "links_used"), 128.0) << fill;
+    EXPECT_EQ(test::stat(lll, "link_bytes_each"), 16.0) << fill;
+    test::expectWithinBound(lll.ldr, reference.ldr, test::kSameImage,
+                            std::string("lll/") + fill + " compact pool moved to wide links");
+  }
+}
+
 TEST(LllImages, MoreSlicesThanTheMostAreRefused) {
   RenderSettings settings;
   settings.technique = "lll";

@@ -67,6 +67,9 @@ bool parseComputeShading(const std::string& name) {
   throw InputError(fmt::format("--lll-shade {}: expected compute or fragment", name));
 }
 
+// shaders/common/lll_data.glsl's kLinkFormat.
+constexpr uint32_t kLinkFormatConstant = 42;
+
 uint32_t parseLinkFormat(const std::string& name, uint32_t lightCount) {
   const bool fitsCompact = lightCount <= gpu::kCompactLinkMaxLights;
   if (name == "wide" || (name == "auto" && !fitsCompact)) return gpu::kLinkWide;
@@ -118,6 +121,9 @@ class LightLinkedList final : public Technique {
  private:
   void createBuffers();
   void createPipelines();
+  // shaders/common/lll_data.glsl's kLinkFormat: every pass that reads or writes links is compiled
+  // for the pool's format, so no walk tests it per link.
+  SpecializationConstants linkConstants() const { return {{kLinkFormatConstant, linkFormat_}}; }
   void createShells(const GpuScene& scene);
   void allocatePool(uint64_t links);
   // The frame's bindings, the lists, the fills' bounds and shell order: what the passes building
@@ -213,7 +219,8 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   // The pool is one storage buffer; compact links address at most 2^24 - 1 of them.
   maxPoolLinks_ = storageBufferCapacity(context, linkBytes_);
   if (linkFormat_ == gpu::kLinkCompact)
-    maxPoolLinks_ = std::min<uint64_t>(maxPoolLinks_, gpu::kCompactLinkEnd);
+    maxPoolLinks_ = std::min<uint64_t>(
+        maxPoolLinks_, settings.lllCompactLinkLimit ? settings.lllCompactLinkLimit : gpu::kCompactLinkEnd);
   bins_ = LightBins(context, tilesX_, tilesY_, tile, scene.lightCount());
   createBuffers();
   createPipelines();
@@ -259,9 +266,11 @@ void LightLinkedList::allocatePool(uint64_t links) {
 void LightLinkedList::createPipelines() {
   layout_ = PipelineLayout(context_, kBindings);
   fillLayout_ = PipelineLayout(context_, kBindings, sizeof(gpu::FillPush), VK_SHADER_STAGE_VERTEX_BIT);
-  tileDepthPipeline_ = Pipeline(context_, layout_, "lighting/lll/tile_depth.comp");
-  statsPipeline_ = Pipeline(context_, layout_, "lighting/lll/stats.comp");
-  if (fill_ == LllFill::Compute) computeFill_ = Pipeline(context_, layout_, "lighting/lll/fill_compute.comp");
+  const SpecializationConstants constants = linkConstants();
+  tileDepthPipeline_ = Pipeline(context_, layout_, "lighting/lll/tile_depth.comp", constants);
+  statsPipeline_ = Pipeline(context_, layout_, "lighting/lll/stats.comp", constants);
+  if (fill_ == LllFill::Compute)
+    computeFill_ = Pipeline(context_, layout_, "lighting/lll/fill_compute.comp", constants);
 
   GraphicsPipelineDesc fill;
   fill.vertexShader = "lighting/lll/fill_shell.vert";
@@ -270,6 +279,7 @@ void LightLinkedList::createPipelines() {
   fill.vertexInput = VertexInput::Position;
   fill.depthTest = false;  // the software depth test against the tile depth replaces it
   fill.depthWrite = false;
+  fill.constants = constants;
   for (uint32_t shape = 0; fill_ != LllFill::Compute && shape < kShellShapes; ++shape) {
     fill.specialization = {shape, 1, kBoundsLayers};
     fill.cullMode = VK_CULL_MODE_FRONT_BIT;  // keep back faces
@@ -341,7 +351,8 @@ LightingInterface LightLinkedList::lighting() const {
                 .storage(7, tileRange_.handle());
           },
           {&heads_, &links_, &tileRange_},
-          classes_};
+          classes_,
+          linkConstants()};
 }
 
 // The heads and counters are emptied by the tile-depth pass (lighting/lll/tile_depth.comp); only the
@@ -473,6 +484,7 @@ bool LightLinkedList::afterFrame() {
     linkBytes_ = 16;
     uniforms_.params.y = linkFormat_;
     maxPoolLinks_ = storageBufferCapacity(context_, linkBytes_);
+    createPipelines();  // and the renderer, seeing lighting()'s constants change, the lit passes
   }
   allocatePool(grownCapacity(requested, maxPoolLinks_));
   return true;

@@ -36,11 +36,11 @@ ParticleRender parseParticleRender(const std::string& name) {
 
 const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameContext& frame,
                                                                   const LightingInterface& lighting) {
-  auto found = drawPipelines_.find(lighting.name);
+  auto found = drawPipelines_.find(lighting.key());
   if (found != drawPipelines_.end()) return found->second;
   const bool vertex = lighting_ == ParticleLighting::Vertex;
   const bool atlas = lighting_ == ParticleLighting::Atlas;
-  const SpecializationConstants constants = lightTypeConstants(frame.scene);
+  const SpecializationConstants constants = lighting.with(lightTypeConstants(frame.scene));
   DrawPipelines pipelines;
   // With glass, the variant that blends only what lies behind it (kBehindGlass in the shaders).
   const bool glass = frame.scene.hasBlendDraws();
@@ -76,7 +76,7 @@ const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameCon
     pipelines.lightLayout = PipelineLayout(context_, {shader});
     pipelines.light = Pipeline(context_, pipelines.lightLayout, shader, constants);
   }
-  return drawPipelines_.emplace(lighting.name, std::move(pipelines)).first->second;
+  return drawPipelines_.emplace(lighting.key(), std::move(pipelines)).first->second;
 }
 
 DescriptorWriter ParticleSystem::systemDescriptors(const FrameContext& frame) const {

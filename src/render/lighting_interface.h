@@ -22,6 +22,22 @@ struct LightingInterface {
   // lll's heads with --vpl-interleave): glass-light lights them and vpl-classes the glossy metals'
   // VPL classes on a workgroup each (render/lit_passes.h).
   uint32_t listParts = 1;
+  // Specialization constants of the interface's GLSL (lll: its link format), set on every pass
+  // compiled with it. They may change between frames (lll moves from compact to wide links when a
+  // pool outgrows 24-bit links): the renderer then builds the lit passes again.
+  SpecializationConstants constants;
+
+  // Names the pipelines built with this interface: its folder and its constants.
+  std::string key() const {
+    std::string k = name;
+    for (const auto& [id, value] : constants) k += "/" + std::to_string(id) + "=" + std::to_string(value);
+    return k;
+  }
+  // `base` with this interface's constants added.
+  SpecializationConstants with(SpecializationConstants base) const {
+    for (const auto& [id, value] : constants) base[id] = value;
+    return base;
+  }
 
   // What a lit pass reading the light data in `stages` declares.
   std::vector<ResourceUse> reads(VkPipelineStageFlags2 stages) const {

@@ -26,7 +26,7 @@ LitPasses::LitPasses(Context& context, const GpuScene& scene, const FrameTargets
   const uint32_t interleave = vplInterleaveIn(scene, opaque_, vplInterleave);
   writesDisplay_ = lastShading && opaque_ == OpaqueShading::Visibility && interleave == 1 &&
                    (computeGlass_ || !scene.hasBlendDraws());
-  SpecializationConstants constants = lightTypeConstants(scene);
+  SpecializationConstants constants = lighting_.with(lightTypeConstants(scene));
   constants[kWritesDisplayConstant] = writesDisplay_ ? 1u : 0u;
   if (opaque_ == OpaqueShading::Visibility) {
     if (!visibility) throw std::logic_error("LitPasses: visibility shading without a visibility buffer");

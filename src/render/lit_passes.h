@@ -50,6 +50,8 @@ class LitPasses {
   // with `lastShading` (no pass after them changes hdr), and possible where shade-opaque is the
   // visibility buffer's compute pass with no VPL gather after it and any glass is lit in compute.
   bool writesDisplay() const { return writesDisplay_; }
+  // The lighting interface these passes were compiled with.
+  const LightingInterface& lighting() const { return lighting_; }
 
   // Called once the frame's GPU work completed: true when the glass fragments overflowed their pool,
   // which has grown, and the frame must be drawn again.

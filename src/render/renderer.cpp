@@ -96,7 +96,12 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
                                 "glass depth");
   technique_ =
       findTechnique(settings.technique).create(context, *gpuScene_, settings_, targets_, visibility_.get());
-  lit_ = std::make_unique<LitPasses>(context, *gpuScene_, targets_, visibility_.get(),
+  createLitPasses();
+}
+
+void Renderer::createLitPasses() {
+  lit_.reset();
+  lit_ = std::make_unique<LitPasses>(context_, *gpuScene_, targets_, visibility_.get(),
                                      technique_->opaqueShading(), technique_->lighting(),
                                      settings_.glass == "compute", settings_.vplInterleave,
                                      /*lastShading=*/!particles_);
@@ -245,6 +250,9 @@ FrameResult Renderer::renderFrame(bool capture) {
     const bool techniqueAgain = technique_->afterFrame();
     const bool particlesAgain = particles_ && particles_->afterFrame();
     const bool glassAgain = lit_->afterFrame();
+    // A technique whose interface changed (lll's links grown past the compact format) is drawn
+    // again with lit passes compiled for it.
+    if (techniqueAgain && technique_->lighting().key() != lit_->lighting().key()) createLitPasses();
     if (!techniqueAgain && !particlesAgain && !glassAgain) break;
     if (++result.rerenders > kMaxRerenders)
       throw std::runtime_error(fmt::format("technique {} asked for more than {} re-renders of one frame",

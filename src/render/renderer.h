@@ -114,6 +114,8 @@ class Renderer {
   void chooseSurfaces();
   void chooseLightMotion();
   void createTargets();
+  // The shared lit passes, compiled with the technique's lighting interface as it is now.
+  void createLitPasses();
   void updateUniforms();
   void recordFrame(VkCommandBuffer cmd, bool capture, bool advanceParticles);
   void depthPrepass(FrameContext& frame);

@@ -43,6 +43,9 @@ struct RenderSettings {
   // Light-list tile size in pixels; 0: the technique's own default (TechniqueInfo::defaultTile).
   uint32_t tileSize = 0;
   uint32_t linksPerTile = 32;  // initial link pool: tiles * this, grown on overflow
+  // Tests only (no option): the most links a compact pool may hold before --lll-link auto moves to
+  // wide links (0: what 24-bit links address, kCompactLinkEnd - 1).
+  uint64_t lllCompactLinkLimit = 0;
   // Workgroups sharing each cell's lights in lll's compute fill (1 to 64); 0: by light count.
   uint32_t lllFillSplits = 0;
   // Lists per tile of lll, one per depth slice (Ortegren's clustered linked lists; shared/depth_slices.h
