@@ -198,7 +198,10 @@ void GpuScene::uploadGeometry() {
   }
   for (const Material& m : scene_.materials)
     for (uint32_t slot = 0; slot < kTextureSlots; ++slot)
-      secondTexCoords_ |= m.texCoords[slot] == 1 && m.texture(TextureSlot(slot)) >= 0;
+      if (m.texture(TextureSlot(slot)) >= 0) {
+        secondTexCoords_ |= m.texCoords[slot] == 1;
+        textureTransforms_ |= !m.transforms[slot].identity();
+      }
   positions_ = Buffer(context_, positions.size() * sizeof(glm::vec3),
                       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                       MemoryUse::Device, "positions");

@@ -66,6 +66,9 @@ class GpuScene {
   // (VisibilityBuffer::surfaceConstants).
   bool secondTexCoords() const { return secondTexCoords_; }
   bool vertexColors() const { return vertexColors_; }
+  // Whether a material's texture has a KHR_texture_transform other than the identity (the same
+  // specialization).
+  bool textureTransforms() const { return textureTransforms_; }
   void setShadowedLights(bool on) { shadowedLights_ = on; }
 
   // Geometry for passes that fetch it themselves: the visibility pass's position-only stream
@@ -146,6 +149,7 @@ class GpuScene {
   bool shadowedLights_ = false;
   bool secondTexCoords_ = false;
   bool vertexColors_ = false;
+  bool textureTransforms_ = false;
   std::vector<Image> textures_;  // scene textures, then neutral white, neutral normal, black
   std::vector<DrawItem> draws_;  // grouped by material
   std::vector<std::vector<uint32_t>> meshInstances_;  // the instances of each mesh

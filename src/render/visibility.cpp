@@ -21,6 +21,7 @@ constexpr uint32_t kTextureCountConstant = 21;
 constexpr uint32_t kComputedLevelOfDetailConstant = 22;
 constexpr uint32_t kSecondTexCoordsConstant = 23;
 constexpr uint32_t kVertexColorsConstant = 24;
+constexpr uint32_t kTextureTransformsConstant = 25;
 
 bool masked(const GpuScene& scene, const DrawItem& d) {
   return scene.scene().materials[d.material].alphaMode == AlphaMode::Mask;
@@ -244,10 +245,10 @@ void VisibilityBuffer::bindSurfaceData(DescriptorWriter& writer, const FrameCont
 SpecializationConstants VisibilityBuffer::surfaceConstants(const GpuScene& scene) const {
   return {{kTriangleBitsConstant, triangleBits_},
           {kTextureCountConstant, scene.textureCount()},
-          {kComputedLevelOfDetailConstant,
-           context_.isCpuDevice() || std::getenv("LLL_PROBE_COMPUTED_LOD") != nullptr ? 1u : 0u},
+          {kComputedLevelOfDetailConstant, context_.isCpuDevice() ? 1u : 0u},
           {kSecondTexCoordsConstant, scene.secondTexCoords() ? 1u : 0u},
-          {kVertexColorsConstant, scene.vertexColors() ? 1u : 0u}};
+          {kVertexColorsConstant, scene.vertexColors() ? 1u : 0u},
+          {kTextureTransformsConstant, scene.textureTransforms() ? 1u : 0u}};
 }
 
 std::string VisibilityBuffer::surfaceShader(const std::string& shader) const {
