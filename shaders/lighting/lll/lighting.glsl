@@ -8,46 +8,17 @@
 
 // The list's first head, then `headsLeft` more from nextHead on (the VPL classes with
 // --vpl-interleave).
-// Probes for the next GPU session (bench/results/next-issue11/): LLL_LOOKAHEAD n reads the n
-// links below a compact link with it (the fill writes a batch's links of a list one below another);
-// LLL_PROBE_COMPACT_ONLY 1 decodes every link as compact (valid only for at most 256 lights).
-#ifndef LLL_LOOKAHEAD
-#define LLL_LOOKAHEAD 0
-#endif
-#ifndef LLL_PROBE_COMPACT_ONLY
-#define LLL_PROBE_COMPACT_ONLY 0
-#endif
 struct LightCursor {
   uint link;
   uint steps;
   float viewDepth;
   uint nextHead;
   uint headsLeft;
-#if LLL_LOOKAHEAD > 0
-  uint aheadLink;
-  uint aheadCount;
-  uvec2 ahead[LLL_LOOKAHEAD];
-#endif
 };
-
-LightCursor makeCursor(uint link, float viewDepth, uint nextHead, uint headsLeft) {
-  LightCursor c;
-  c.link = link;
-  c.steps = 0u;
-  c.viewDepth = viewDepth;
-  c.nextHead = nextHead;
-  c.headsLeft = headsLeft;
-#if LLL_LOOKAHEAD > 0
-  c.aheadLink = 0u;
-  c.aheadCount = 0u;
-  for (uint i = 0u; i < LLL_LOOKAHEAD; ++i) c.ahead[i] = uvec2(0u);
-#endif
-  return c;
-}
 
 LightCursor lightsAt(uvec2 pixel, float viewDepth) {
   uint head = listIndexOf(tileIndexOf(pixel), viewDepth) * listClasses();
-  return makeCursor(tileHeads[head], viewDepth, head + 1u, listClasses() - 1u);
+  return LightCursor(tileHeads[head], 0u, viewDepth, head + 1u, listClasses() - 1u);
 }
 
 // The lights a pixel that evaluates only VPL class `vplClass` needs (gi/interleaved_vpls.glsl;
@@ -68,7 +39,7 @@ LightCursor lightsAtInClass(uvec2 pixel, float viewDepth, uint vplClass) {
 #define LIGHTING_LIST_PARTS
 LightCursor lightsAtPart(uvec2 pixel, float viewDepth, uint part) {
   uint head = listIndexOf(tileIndexOf(pixel), viewDepth) * listClasses() + part;
-  return makeCursor(tileHeads[head], viewDepth, head + 1u, 0u);
+  return LightCursor(tileHeads[head], 0u, viewDepth, head + 1u, 0u);
 }
 
 // One link at a time, each read where it is followed. Reading ahead was measured slower twice on
@@ -90,11 +61,7 @@ bool nextLight(inout LightCursor cursor, out uint light) {
 // list, instead of nextLight's loop inside a loop that each invocation leaves at its own link.
 #define LIGHTING_LINK_WALK
 bool nextLink(inout LightCursor cursor, out uint light, out bool listed) {
-#if LLL_PROBE_COMPACT_ONLY
-  while (cursor.link == kCompactLinkEnd || cursor.steps >= longestPossibleList()) {
-#else
   while (isListEnd(cursor.link) || cursor.steps >= longestPossibleList()) {
-#endif
     if (cursor.headsLeft == 0u) {
       light = 0u;
       listed = false;
@@ -103,44 +70,7 @@ bool nextLink(inout LightCursor cursor, out uint light, out bool listed) {
     --cursor.headsLeft;
     cursor.link = tileHeads[cursor.nextHead++];
   }
-#if LLL_LOOKAHEAD > 0
-  LightLink l;
-  if (lll.params.y == kLinkCompact) {
-    uvec2 words;
-    uint k = cursor.link;
-    if (cursor.aheadCount > 0u && k == cursor.aheadLink) {
-      words = cursor.ahead[0];
-      for (uint i = 0u; i + 1u < LLL_LOOKAHEAD; ++i) cursor.ahead[i] = cursor.ahead[i + 1u];
-      --cursor.aheadLink;
-      --cursor.aheadCount;
-    } else {
-      words = uvec2(linkWords[2u * k], linkWords[2u * k + 1u]);
-      for (uint i = 0u; i < LLL_LOOKAHEAD; ++i) {
-        uint b = k > i ? k - 1u - i : 0u;
-        cursor.ahead[i] = uvec2(linkWords[2u * b], linkWords[2u * b + 1u]);
-      }
-      cursor.aheadLink = k - 1u;
-      cursor.aheadCount = min(k, uint(LLL_LOOKAHEAD));
-    }
-    vec2 depths = unpackHalf2x16(words.x);
-    l.minDepth = depths.x;
-    l.maxDepth = depths.y;
-    l.light = words.y >> 24;
-    l.next = words.y & kCompactLinkEnd;
-  } else {
-    l = readLink(cursor.link);
-  }
-#elif LLL_PROBE_COMPACT_ONLY
-  uvec2 words = uvec2(linkWords[2u * cursor.link], linkWords[2u * cursor.link + 1u]);
-  LightLink l;
-  vec2 depths = unpackHalf2x16(words.x);
-  l.minDepth = depths.x;
-  l.maxDepth = depths.y;
-  l.light = words.y >> 24;
-  l.next = words.y & kCompactLinkEnd;
-#else
   LightLink l = readLink(cursor.link);
-#endif
   cursor.link = l.next;
   ++cursor.steps;
   light = l.light;
