@@ -21,10 +21,10 @@ one() {  # variant rep name args...
   [ $v = t2 ] && export LLL_PROBE_COMPUTED_LOD=1 || unset LLL_PROBE_COMPUTED_LOD
   timeout 60 $(bin $v) render "$@" ${SIZE:-$W} --frames 200 --stats $OUT/r/$v-$name-$rep.json --out $I >/dev/null 2>&1 || echo fail $v $name
 }
-for v in base t1 q1 q3 c1 q1c; do
+[ "${STATS:-1}" = 1 ] && for v in base t1 q1 q3 c1 q1c; do
   echo "== $v"; LLL_SHADER_STATS=1 timeout 60 $(bin $v) render threel16 --technique lll --width 64 --height 64 --frames 1 --out /tmp/b.png 2>&1 | grep -i "shade_visibility\|registers" | head -4
 done
-for rep in 1 2 3; do
+for rep in ${REPS:-1 2 3}; do
   case $rep in 1) order="base t1 t2 q1 q3 c1 q1c";; 2) order="q1c c1 q3 q1 t2 t1 base";; 3) order="q1 base t2 q1c t1 c1 q3";; esac
   for v in $order; do
     one $v $rep threel16 threel16 --technique lll
@@ -36,6 +36,6 @@ for rep in 1 2 3; do
 done
 echo renders $SECONDS
 # The ALU probe in 32 and in packed 16-bit floats (alu-probe, alu-probe-half) beside ThreeL's frames.
-timeout 400 $E/lll_t1 bench --suite threel --technique lll --frames 20 --warmup 5 --out $OUT/bench-t1 >/dev/null 2>&1 || echo fail bench
+[ "${BENCH:-1}" = 1 ] && timeout 400 $E/lll_t1 bench --suite threel --technique lll --frames 20 --warmup 5 --out $OUT/bench-t1 >/dev/null 2>&1 || echo fail bench
 echo bench $SECONDS
-cd $OUT && tar cJf r.tar.xz r bench-t1 && tar cf img.tar img && rm -rf r img bench-t1; ls -la; true
+cd $OUT && tar cJf r.tar.xz r $(ls -d bench-t1 2>/dev/null) && tar cf img.tar img && rm -rf r img bench-t1; ls -la; true
