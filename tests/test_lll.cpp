@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <functional>
 #include <random>
 
 #include "awkward_lights_scene.h"
@@ -343,46 +344,47 @@ TEST(LllImages, AwkwardLightsMatchForward) {
   }
 }
 
-TEST(LllImages, TinyPoolGrowsAndStillMatches) {
+// The atrium at 160x90 through lll with `settings` and a first link pool of one link a tile (far
+// too small: the first frame must overflow), with each of `fills`, against forward; `check` adds
+// a test's own expectations of each render.
+void expectOverflowingPoolMatches(RenderSettings settings, std::initializer_list<const char*> fills,
+                                  const std::string& what,
+                                  const std::function<void(const test::Rendered&, const char*)>& check) {
   const Scene scene = *makeBuiltinScene("atrium");
-  RenderSettings settings;
   settings.width = 160;
   settings.height = 90;
   const test::Rendered reference = test::render(scene, test::reference(settings));
   settings.technique = "lll";
-  settings.linksPerTile = 1;  // far too small: the first frame must overflow
-  for (const char* fill : {"compute", "ray", "shells"}) {
+  settings.linksPerTile = 1;
+  for (const char* fill : fills) {
     settings.lllFill = fill;
     const test::Rendered lll = test::render(scene, settings);
     EXPECT_GE(lll.frame.rerenders, 1u) << fill;
-    EXPECT_GE(test::stat(lll, "overflows"), 1.0) << fill;
-    EXPECT_GE(test::stat(lll, "link_pool_capacity"), test::stat(lll, "links_used")) << fill;
+    check(lll, fill);
     test::expectWithinBound(lll.ldr, reference.ldr, test::kSameImage,
-                            std::string("lll/") + fill + " grown pool");
+                            std::string("lll/") + fill + " " + what);
   }
+}
+
+TEST(LllImages, TinyPoolGrowsAndStillMatches) {
+  expectOverflowingPoolMatches(
+      {}, {"compute", "ray", "shells"}, "grown pool", [](const test::Rendered& lll, const char* fill) {
+        EXPECT_GE(test::stat(lll, "overflows"), 1.0) << fill;
+        EXPECT_GE(test::stat(lll, "link_pool_capacity"), test::stat(lll, "links_used")) << fill;
+      });
 }
 
 TEST(LllImages, CompactPoolOutgrownMovesToWideLinksAndStillMatches) {
   // A compact pool that may hold only 128 links: the first frame outgrows it, and --lll-link auto
   // must move to wide links, with every pass that reads them (the fills, opaque shading, glass)
   // compiled again for that format (kLinkFormat, common/lll_data.glsl).
-  const Scene scene = *makeBuiltinScene("atrium");
   RenderSettings settings;
-  settings.width = 160;
-  settings.height = 90;
-  const test::Rendered reference = test::render(scene, test::reference(settings));
-  settings.technique = "lll";
-  settings.linksPerTile = 1;
   settings.lllCompactLinkLimit = 128;  // the first pool: 60 tiles x 2 slices
-  for (const char* fill : {"compute", "shells"}) {
-    settings.lllFill = fill;
-    const test::Rendered lll = test::render(scene, settings);
-    EXPECT_GE(lll.frame.rerenders, 1u) << fill;
-    EXPECT_GT(test::stat(lll, "links_used"), 128.0) << fill;
-    EXPECT_EQ(test::stat(lll, "link_bytes_each"), 16.0) << fill;
-    test::expectWithinBound(lll.ldr, reference.ldr, test::kSameImage,
-                            std::string("lll/") + fill + " compact pool moved to wide links");
-  }
+  expectOverflowingPoolMatches(settings, {"compute", "shells"}, "compact pool moved to wide links",
+                               [](const test::Rendered& lll, const char* fill) {
+                                 EXPECT_GT(test::stat(lll, "links_used"), 128.0) << fill;
+                                 EXPECT_EQ(test::stat(lll, "link_bytes_each"), 16.0) << fill;
+                               });
 }
 
 TEST(LllImages, MoreSlicesThanTheMostAreRefused) {

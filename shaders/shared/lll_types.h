@@ -6,7 +6,8 @@
 
 LLL_NAMESPACE_BEGIN
 
-// Link formats (LllUniforms.params.y).
+// Link formats (LllUniforms.params.y, and the shaders' specialization constant kLinkFormat, which
+// is what they read: common/lll_data.glsl).
 // Compact, 8 bytes (Bezrati 1.2.2): x = packHalf2x16(min depth, max depth), both rounded outward;
 //   y = light index << 24 | next (24 bits, kCompactLinkEnd ends the list).
 // Wide, 16 bytes (Bezrati 1.2.1): min depth, max depth (float bits), light index, next.
