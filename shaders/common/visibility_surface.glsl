@@ -51,7 +51,8 @@ const uint kVisibilityGroupSize = 8u;
 layout(constant_id = 23) const bool kSceneHasSecondTexCoords = true;
 layout(constant_id = 24) const bool kSceneHasVertexColors = true;
 // Whether a material of the scene has a texture transform (KHR_texture_transform): false compiles
-// the transforms out of the rebuild (ThreeL's opaque shading 0.235 -> ? ms on the H200).
+// the transforms out of the rebuild (ThreeL's opaque shading on the H200, with the link format
+// compiled in too: 0.216 -> 0.209 ms, registers 64 -> 56; bench/README.md, 2026-12-05 second).
 layout(constant_id = 25) const bool kSceneHasTextureTransforms = true;
 
 struct TriangleVertex {
