@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/gltf_loader.h"
 #include "scene_invariants.h"
 

@@ -12,6 +12,7 @@
 //
 // Errors in the input (a broken file, a bad option) are lll::InputError; Vulkan failures
 // lll::VulkanError.
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "gpu/resources.h"
 #include "gpu/vk_check.h"
@@ -25,7 +26,6 @@
 #include "render/stats.h"
 #include "scene/builtin_scenes.h"
 #include "scene/camera.h"
-#include "scene/errors.h"
 #include "scene/light_animation.h"
 #include "scene/scene.h"
 #include "scene/scene_source.h"

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/gltf_loader.h"
 #include "scene/lights.h"
 

@@ -17,8 +17,8 @@
 #include "bench/bench.h"
 #include "bench/report.h"
 #include "cli_test_support.h"
+#include "core/errors.h"
 #include "lighting/technique.h"
-#include "scene/errors.h"
 #include "scene/scene_source.h"
 #include "test_support.h"
 

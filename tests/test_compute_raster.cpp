@@ -11,10 +11,10 @@
 #include <cstdlib>
 #include <string>
 
+#include "core/errors.h"
 #include "render/compute_raster.h"
 #include "render/visibility.h"
 #include "scene/builtin_scenes.h"
-#include "scene/errors.h"
 #include "scene/mesh_builder.h"
 #include "scene/scene_source.h"
 #include "test_support.h"

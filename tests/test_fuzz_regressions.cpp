@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/gltf_loader.h"
 #include "scene_invariants.h"
 

@@ -8,13 +8,13 @@
 
 #include "app/commands.h"
 #include "cli_test_support.h"
+#include "core/errors.h"
 #include "gi/brdf.h"
 #include "gi/path_tracer.h"
 #include "gi/ray_scene.h"
 #include "render/tonemap.h"
 #include "scene/builtin_gi_scenes.h"
 #include "scene/camera.h"
-#include "scene/errors.h"
 #include "scene/scene_source.h"
 #include "test_support.h"
 

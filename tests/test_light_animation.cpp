@@ -10,10 +10,10 @@
 #include <limits>
 
 #include "cli_test_support.h"
+#include "core/errors.h"
 #include "image_bound.h"
 #include "render/image_io.h"
 #include "render/renderer.h"
-#include "scene/errors.h"
 #include "scene/light_animation.h"
 #include "scene/scene_source.h"
 #include "test_support.h"

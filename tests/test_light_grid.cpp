@@ -7,10 +7,10 @@
 #include <string>
 
 #include "awkward_lights_scene.h"
+#include "core/errors.h"
 #include "light_list_reference.h"
 #include "lighting/light_grid.h"
 #include "scene/builtin_scenes.h"
-#include "scene/errors.h"
 #include "scene/scene_source.h"
 #include "shared/depth_slices.h"
 #include "shared/lll_types.h"

@@ -5,10 +5,10 @@
 
 #include <string>
 
+#include "core/errors.h"
 #include "render/frame.h"
 #include "render/renderer.h"
 #include "scene/builtin_scenes.h"
-#include "scene/errors.h"
 #include "scene/scene_source.h"
 #include "shared/gpu_types.h"
 #include "shared/limits.h"

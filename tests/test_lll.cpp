@@ -7,11 +7,11 @@
 #include <random>
 
 #include "awkward_lights_scene.h"
+#include "core/errors.h"
 #include "light_list_reference.h"
 #include "lighting/light_bins.h"
 #include "lighting/lll.h"
 #include "scene/builtin_scenes.h"
-#include "scene/errors.h"
 #include "scene/lights.h"
 #include "scene/scene_source.h"
 #include "shared/depth_slices.h"

@@ -11,9 +11,9 @@
 #include <random>
 
 #include "camera_uniforms.h"
+#include "core/errors.h"
 #include "particle_test_support.h"
 #include "render/settings.h"
-#include "scene/errors.h"
 #include "scene/lights.h"
 #include "shadows/local_shadows.h"
 #include "shadows/shadow_casters.h"

@@ -8,10 +8,10 @@
 #include <optional>
 
 #include "cli_test_support.h"
+#include "core/errors.h"
 #include "gi/moving_vpls.h"
 #include "gi_test_support.h"
 #include "render/renderer.h"
-#include "scene/errors.h"
 #include "scene/scene_source.h"
 #include "shared/limits.h"
 #include "test_support.h"

@@ -4,7 +4,7 @@
 // does not report it: devices may count its stencil-marking draws, which have no fragment shader.)
 #include <gtest/gtest.h>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/scene_source.h"
 #include "test_support.h"
 

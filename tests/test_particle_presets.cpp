@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
 #include "particles/presets.h"
-#include "scene/errors.h"
 #include "shared/particle_types.h"
 #include "test_presets_json.h"
 

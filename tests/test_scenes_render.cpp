@@ -12,9 +12,9 @@
 #include <map>
 #include <string>
 
+#include "core/errors.h"
 #include "gltf_test_support.h"
 #include "scene/builtin_scenes.h"
-#include "scene/errors.h"
 #include "scene/scene_source.h"
 #include "test_support.h"
 

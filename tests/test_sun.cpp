@@ -4,8 +4,8 @@
 // glTF light in test_gltf_loader.cpp; its photons in test_gi.cpp.)
 #include <gtest/gtest.h>
 
+#include "core/errors.h"
 #include "particle_test_support.h"
-#include "scene/errors.h"
 #include "test_support.h"
 
 namespace lll {

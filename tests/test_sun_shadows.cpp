@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "camera_uniforms.h"
+#include "core/errors.h"
 #include "render/settings.h"
-#include "scene/errors.h"
 #include "shadows/sun_shadows.h"
 
 namespace lll {

@@ -9,11 +9,11 @@
 #include <glm/gtc/constants.hpp>
 
 #include "cli_test_support.h"
+#include "core/errors.h"
 #include "image_bound.h"
 #include "particles/presets.h"
 #include "render/image_io.h"
 #include "scene/camera.h"
-#include "scene/errors.h"
 #include "scene/scene_source.h"
 #include "view/input_script.h"
 #include "view/view_camera.h"

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bench/progress.h"
+#include "core/errors.h"
 #include "gi/light_falloff.h"
 #include "lighting/lll_memory.h"
 #include "lighting/technique.h"
@@ -23,7 +24,6 @@
 #include "render/tonemap.h"
 #include "scene/builtin_scenes.h"
 #include "scene/camera.h"
-#include "scene/errors.h"
 #include "scene/light_animation.h"
 
 namespace lll {

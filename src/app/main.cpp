@@ -9,7 +9,7 @@
 
 #include "app/commands.h"
 #include "bench/bench.h"
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/light_animation.h"
 #include "shared/limits.h"
 #include "shared/particle_types.h"

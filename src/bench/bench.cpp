@@ -15,12 +15,12 @@
 #include "bench/alu_probe.h"
 #include "bench/progress.h"
 #include "bench/report.h"
+#include "core/errors.h"
 #include "gi/path_tracer.h"
 #include "lighting/technique.h"
 #include "particles/presets.h"
 #include "render/image_compare.h"
 #include "render/renderer.h"
-#include "scene/errors.h"
 #include "scene/light_animation.h"
 
 namespace lll::bench {

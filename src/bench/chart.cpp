@@ -14,7 +14,7 @@
 #include <sstream>
 
 #include "bench/report.h"
-#include "scene/errors.h"
+#include "core/errors.h"
 
 extern char** environ;
 

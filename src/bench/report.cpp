@@ -8,9 +8,9 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
+#include "core/errors.h"
 #include "lighting/technique.h"
 #include "render/output_files.h"
-#include "scene/errors.h"
 
 namespace lll::bench {
 

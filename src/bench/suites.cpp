@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "bench/scenario.h"
+#include "core/errors.h"
 #include "lighting/technique.h"
 #include "scene/builtin_scenes.h"
-#include "scene/errors.h"
 
 namespace lll::bench {
 

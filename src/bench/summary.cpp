@@ -10,8 +10,8 @@
 #include <map>
 
 #include "bench/report.h"
+#include "core/errors.h"
 #include "render/output_files.h"
-#include "scene/errors.h"
 
 namespace lll::bench {
 

@@ -7,12 +7,12 @@
 #include <cstring>
 #include <functional>
 
+#include "core/errors.h"
 #include "gi/photon_walk.h"
 #include "gi/random.h"
 #include "gi/ray_scene.h"
 #include "gi/sampling.h"
 #include "gi/vpl_hierarchy.h"
-#include "scene/errors.h"
 #include "scene/light_animation.h"
 
 namespace lll {

@@ -7,12 +7,12 @@
 #include <limits>
 #include <optional>
 
+#include "core/errors.h"
 #include "gi/brdf.h"
 #include "gi/light_falloff.h"
 #include "gi/random.h"
 #include "gi/ray_scene.h"
 #include "gi/sampling.h"
-#include "scene/errors.h"
 
 namespace lll::gi {
 

@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "core/errors.h"
 #include "gpu/vk_check.h"
-#include "scene/errors.h"
 
 namespace lll {
 

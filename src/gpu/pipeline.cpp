@@ -8,11 +8,11 @@
 #include <utility>
 #include <vector>
 
+#include "core/vertex.h"
 #include "gpu/context.h"
 #include "gpu/reflection.h"
 #include "gpu/shader_registry.h"
 #include "gpu/vk_check.h"
-#include "scene/scene.h"
 #include "shared/gpu_types.h"
 
 namespace lll {

@@ -7,8 +7,8 @@
 // at a million lights is 128 KiB per tile; clusters keep only the lights that touch them.
 #include <fmt/format.h>
 
+#include "core/errors.h"
 #include "lighting/light_grid.h"
-#include "scene/errors.h"
 #include "shared/grid_types.h"
 
 namespace lll {

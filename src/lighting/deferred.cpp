@@ -18,13 +18,13 @@
 // four RGBA16F targets, 32 B/px plus its Z buffer: depth again in a colour channel, velocity, extinction and
 // a material id that lll does not need, fp16 for base colour, and a forward-lit colour that here is the
 // accumulation target itself. Here depth is the prepass's, sampled directly.
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "gpu/fragment_counter.h"
 #include "gpu/pipeline.h"
 #include "lighting/technique.h"
 #include "lighting/volume_lights.h"
 #include "render/gbuffer.h"
-#include "scene/errors.h"
 
 namespace lll {
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/errors.h"
 #include "gpu/context.h"
-#include "scene/errors.h"
 #include "shared/limits.h"
 
 namespace lll {

@@ -6,12 +6,12 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "gpu/vk_check.h"
 #include "lighting/light_bins.h"
 #include "render/renderer.h"
-#include "scene/errors.h"
 #include "shared/grid_types.h"
 #include "shared/lll_types.h"
 

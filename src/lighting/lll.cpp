@@ -9,6 +9,7 @@
 #include <glm/gtc/packing.hpp>
 #include <stdexcept>
 
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "gpu/vk_check.h"
@@ -18,7 +19,6 @@
 #include "render/interleaved_vpls.h"
 #include "render/renderer.h"
 #include "render/visibility.h"
-#include "scene/errors.h"
 #include "shared/lll_types.h"
 
 namespace lll {

@@ -1,8 +1,8 @@
 #include <fmt/format.h>
 
+#include "core/errors.h"
 #include "lighting/lll.h"
 #include "lighting/technique.h"
-#include "scene/errors.h"
 
 namespace lll {
 

@@ -4,10 +4,10 @@
 // against the prepass and faded where they meet it). The compute renderer is particle_tiles.cpp.
 #include <fmt/format.h>
 
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "particles/particle_system.h"
 #include "render/frame.h"
-#include "scene/errors.h"
 #include "shadows/local_shadows.h"
 #include "shadows/sun_shadows.h"
 

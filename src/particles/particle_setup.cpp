@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 
 namespace lll {
 

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
 #include "particles/puff_noise.h"
 #include "render/frame.h"
-#include "scene/errors.h"
 
 namespace lll {
 

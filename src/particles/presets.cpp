@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/errors.h"
 #include "particles/embedded_presets.h"
-#include "scene/errors.h"
 #include "shared/particle_types.h"
 
 namespace lll {

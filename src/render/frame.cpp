@@ -4,8 +4,8 @@
 
 #include <vector>
 
+#include "core/errors.h"
 #include "gpu/context.h"
-#include "scene/errors.h"
 #include "shadows/local_shadows.h"
 #include "shadows/sun_shadows.h"
 

@@ -6,9 +6,9 @@
 #include <array>
 #include <cmath>
 
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
-#include "scene/errors.h"
 #include "scene/lights.h"
 #include "shared/gpu_types.h"
 

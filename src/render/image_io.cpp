@@ -11,7 +11,7 @@
 #include <stb_image_write.h>
 #include <tinyexr.h>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 
 namespace lll {
 

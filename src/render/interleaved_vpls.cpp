@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "render/gpu_scene.h"
-#include "scene/errors.h"
 #include "shared/limits.h"
 
 namespace lll {

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <random>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 
 namespace lll {
 

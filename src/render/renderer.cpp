@@ -11,10 +11,10 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/errors.h"
 #include "gi/moving_vpls.h"
 #include "gpu/context.h"
 #include "particles/particle_setup.h"
-#include "scene/errors.h"
 #include "scene/light_animation.h"
 #include "scene/lights.h"
 

@@ -8,8 +8,8 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "core/errors.h"
 #include "git_commit.h"
-#include "scene/errors.h"
 
 namespace lll {
 

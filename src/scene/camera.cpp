@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 
 namespace lll {
 

@@ -8,7 +8,7 @@
 #include <limits>
 #include <type_traits>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 
 namespace lll::gltf_detail {
 namespace {

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/gltf_numbers.h"
 
 namespace lll::gltf_detail {

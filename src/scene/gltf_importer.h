@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/scene.h"
 
 namespace lll::gltf_detail {

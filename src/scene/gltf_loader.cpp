@@ -38,7 +38,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/lights.h"
 
 namespace lll::gltf_detail {

@@ -8,7 +8,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/gltf_numbers.h"
 
 namespace lll::gltf_detail {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/gltf_accessors.h"  // tiny_gltf.h as the loader includes it
 
 namespace lll::gltf_detail {

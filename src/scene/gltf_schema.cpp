@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 
 namespace lll::gltf_detail {
 namespace {

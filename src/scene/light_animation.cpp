@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 #include "scene/hash.h"
 
 namespace lll {

@@ -1,17 +1,6 @@
 #include "scene/scene.h"
 
-#include <glm/gtc/packing.hpp>
-
 namespace lll {
-
-void Vertex::setColor(const glm::vec4& rgba) {
-  color =
-      glm::uvec2(glm::packHalf2x16(glm::vec2(rgba.r, rgba.g)), glm::packHalf2x16(glm::vec2(rgba.b, rgba.a)));
-}
-
-glm::vec4 Vertex::rgba() const {
-  return glm::vec4(glm::unpackHalf2x16(color.x), glm::unpackHalf2x16(color.y));
-}
 
 Bounds transformBounds(const Bounds& bounds, const glm::mat4& transform) {
   Bounds out;

@@ -13,25 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "core/vertex.h"
+
 namespace lll {
-
-struct Vertex {
-  glm::vec3 position;
-  glm::vec3 normal;
-  glm::vec2 uv;
-  // glTF's TANGENT: xyz the unit tangent (along +u), w the bitangent's handedness (+1 or -1);
-  // w = 0 where the file gives none, and shaders build the frame from screen derivatives.
-  glm::vec4 tangent{0.0f};
-  glm::vec2 uv1{0.0f};  // glTF's TEXCOORD_1, for the textures whose texCoord is 1
-  // glTF's COLOR_0 (linear RGBA, multiplying the base colour), four half floats; white where the
-  // file gives none.
-  glm::uvec2 color{kWhiteHalf2, kWhiteHalf2};
-
-  static constexpr uint32_t kWhiteHalf2 = 0x3C003C00u;  // packHalf2x16(1, 1)
-  void setColor(const glm::vec4& rgba);
-  glm::vec4 rgba() const;
-};
-static_assert(sizeof(Vertex) == 64);
 
 enum class AlphaMode : uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
 

@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/errors.h"
 #include "gi/moving_vpls.h"
 #include "scene/builtin_scenes.h"
-#include "scene/errors.h"
 #include "scene/gltf_loader.h"
 #include "scene/light_animation.h"
 #include "scene/lights.h"

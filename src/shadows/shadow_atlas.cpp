@@ -4,10 +4,10 @@
 
 #include <utility>
 
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
 #include "render/frame.h"
-#include "scene/errors.h"
 #include "shadows/shadow_raster.h"
 
 namespace lll {

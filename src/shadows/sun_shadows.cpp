@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "render/frame.h"
 #include "render/gpu_scene.h"
 #include "render/settings.h"
-#include "scene/errors.h"
 
 namespace lll {
 

@@ -10,7 +10,7 @@
 #include <map>
 #include <sstream>
 
-#include "scene/errors.h"
+#include "core/errors.h"
 
 namespace lll::view {
 
