@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "core/errors.h"
 #include "gpu/context.h"
 #include "image_bound.h"
 #include "render/renderer.h"
@@ -66,6 +67,18 @@ inline Rendered render(const Scene& scene, const RenderSettings& settings) {
   Renderer renderer(gpuContext(), scene, settings);
   expectNoValidationMessagesSince(before);
   return render(renderer);
+}
+
+// The message of the InputError a Renderer of `scene` with `settings` refuses them with; a test
+// failure (and an empty message) where it accepts them.
+inline std::string refusalOf(const Scene& scene, const RenderSettings& settings) {
+  try {
+    Renderer renderer(gpuContext(), scene, settings);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "the renderer accepted what it should refuse";
+  return {};
 }
 
 // The brute-force reference every technique is compared with: forward shading on the geometry
