@@ -6,8 +6,7 @@
 
 LLL_NAMESPACE_BEGIN
 
-// Link formats (LllUniforms.params.y, and the shaders' specialization constant kLinkFormat, which
-// is what they read: common/lll_data.glsl).
+// Link formats (the shaders' specialization constant kLinkFormat: common/lll_data.glsl).
 // Compact, 8 bytes (Bezrati 1.2.2): x = packHalf2x16(min depth, max depth), both rounded outward;
 //   y = light index << 24 | next (24 bits, kCompactLinkEnd ends the list).
 // Wide, 16 bytes (Bezrati 1.2.1): min depth, max depth (float bits), light index, next.
@@ -28,8 +27,8 @@ struct LllUniforms {
   //   its centre ray (shells and rays are inflated by this so a tile is covered anywhere in it);
   // w: unused.
   vec4 grid;
-  // x link pool capacity (links), y link format, z debug view, w workgroups per cell of the compute
-  // fill (each takes a part of the cell's binned lights).
+  // x link pool capacity (links), y unused (the link format is a specialization constant), z debug
+  // view, w workgroups per cell of the compute fill (each takes a part of the cell's binned lights).
   uvec4 params;
   // x lists per tile: 1, or its depth slices with --lll-slices (shared/depth_slices.h); y lists per
   // slice: 1, or with --vpl-interleave K 1 + K*K, the lights before the VPLs in the first and each

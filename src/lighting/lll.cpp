@@ -211,7 +211,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   if (const uint32_t k = vplInterleaveIn(scene, opaqueShading_, settings.vplInterleave); k > 1)
     classes_ = 1 + k * k;  // at most gpu::kMaxLllListClasses (the compute fill's shared arrays)
   uniforms_.slicing = glm::uvec4(slices_, classes_, 0, 0);
-  uniforms_.params = glm::uvec4(0, linkFormat_, parseDebugView(settings.debugView), fillSplits_);
+  uniforms_.params = glm::uvec4(0, 0, parseDebugView(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),
                              float(targets.height) / float(tilesY_ * tile), 0.0f, 0.0f);
   // Half a tile's diagonal in pixels, 10% more for the rays' divergence across the tile.
@@ -482,7 +482,6 @@ bool LightLinkedList::afterFrame() {
     // Compact links address 2^24 links; auto mode moves to wide links rather than fail.
     linkFormat_ = gpu::kLinkWide;
     linkBytes_ = 16;
-    uniforms_.params.y = linkFormat_;
     maxPoolLinks_ = storageBufferCapacity(context_, linkBytes_);
     createPipelines();  // and the renderer, seeing lighting()'s constants change, the lit passes
   }
