@@ -70,12 +70,13 @@ inline void expectSmokeLitAsForward(const Scene& scene, RenderSettings settings,
   settings.height = 72;
   settings.particles = "smoke";
   settings.particleCount = 1024;
-  for (const char* lighting : {"pixel", "vertex"}) {
+  for (const ParticleLighting lighting : {ParticleLighting::Pixel, ParticleLighting::Vertex}) {
     settings.particleLighting = lighting;
     const ParticleFrame forward = renderParticles(scene, reference(settings), kSmokeSteps);
     settings.technique = "lll";
     const ParticleFrame lll = renderParticles(scene, settings, kSmokeSteps);
-    expectWithinBound(lll.image.ldr, forward.image.ldr, kSmokeBound, label + " " + lighting + "-lit");
+    expectWithinBound(lll.image.ldr, forward.image.ldr, kSmokeBound,
+                      fmt::format("{} {}-lit", label, lighting));
   }
 }
 

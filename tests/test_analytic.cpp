@@ -167,16 +167,17 @@ glm::vec3 groundPoint(const Renderer& renderer, uint32_t x, uint32_t y, uint32_t
 struct ShadingPath {
   const char* name;
   const char* technique;
-  const char* lllShade;
-  const char* surfaces;
+  LllShade lllShade;
+  SurfaceSource surfaces;
 };
-constexpr ShadingPath kShadingPaths[] = {{"forward", "forward", "compute", "gbuffer"},
-                                         {"forward-visibility", "forward", "compute", "visibility"},
-                                         {"lll-fragment", "lll", "fragment", "gbuffer"},
-                                         {"lll-visibility", "lll", "compute", "visibility"},
-                                         {"lll-gbuffer", "lll", "compute", "gbuffer"},
-                                         {"deferred", "deferred", "compute", "visibility"},
-                                         {"prepass", "prepass", "compute", "visibility"}};
+constexpr ShadingPath kShadingPaths[] = {
+    {"forward", "forward", LllShade::Compute, SurfaceSource::Gbuffer},
+    {"forward-visibility", "forward", LllShade::Compute, SurfaceSource::Visibility},
+    {"lll-fragment", "lll", LllShade::Fragment, SurfaceSource::Gbuffer},
+    {"lll-visibility", "lll", LllShade::Compute, SurfaceSource::Visibility},
+    {"lll-gbuffer", "lll", LllShade::Compute, SurfaceSource::Gbuffer},
+    {"deferred", "deferred", LllShade::Compute, SurfaceSource::Visibility},
+    {"prepass", "prepass", LllShade::Compute, SurfaceSource::Visibility}};
 
 struct Counts {
   int lit = 0;
@@ -190,9 +191,9 @@ using Expectation = std::function<glm::vec3(const glm::vec3&, const Renderer&)>;
 // Renders the plane with `light` through `path` and expects every pixel within 1% (+ 2e-4
 // absolute, fp16 storage) of the formula.
 Counts checkAgainstFormula(const Scene& scene, const Expectation& expectedAt, const ShadingPath& path,
-                           const std::string& fill = "compute",
+                           LllFill fill = LllFill::Compute,
                            const std::function<void(RenderSettings&)>& configure = {}) {
-  SCOPED_TRACE(std::string(path.name) + (fill == "compute" ? "" : " fill " + fill));
+  SCOPED_TRACE(std::string(path.name) + (fill == LllFill::Compute ? "" : fmt::format(" fill {}", fill)));
   RenderSettings settings;
   settings.width = 96;
   settings.height = 96;
@@ -231,13 +232,13 @@ Counts checkAgainstFormula(const Scene& scene, const Expectation& expectedAt, co
 }
 
 Counts checkAgainstFormula(const Scene& scene, const std::function<glm::vec3(const glm::vec3&)>& expectedAt,
-                           const ShadingPath& path, const std::string& fill = "compute") {
+                           const ShadingPath& path, LllFill fill = LllFill::Compute) {
   return checkAgainstFormula(
       scene, [&](const glm::vec3& p, const Renderer&) { return expectedAt(p); }, path, fill);
 }
 
 Counts checkAgainstFormula(const Scene& scene, const PlaneMaterial& pm, const Light& light,
-                           const ShadingPath& path, const std::string& fill = "compute") {
+                           const ShadingPath& path, LllFill fill = LllFill::Compute) {
   return checkAgainstFormula(
       scene, [&](const glm::vec3& p) { return expectedRadiance(scene, pm, light, p); }, path, fill);
 }
@@ -285,7 +286,7 @@ TEST_P(Analytic, BoxLightFootprint) {
                                    {0.0f, 1.0f, 0.0f}, {4.0f, 1.5f, 1.5f}, {1.0f, 0.9f, 0.8f}, 6.0f);
   scene.lights = {light};
   const bool lll = std::string(GetParam().technique) == "lll";
-  for (const char* fill : {"compute", "ray", "shells"}) {
+  for (const LllFill fill : {LllFill::Compute, LllFill::Ray, LllFill::Shells}) {
     const Counts c = checkAgainstFormula(scene, {}, light, GetParam(), fill);
     EXPECT_GT(c.lit, 540);
     EXPECT_GT(c.dark, 4500);
@@ -410,12 +411,14 @@ TEST_P(Analytic, SunShadowOfASquareOccluder) {
   scene.directionalLights = {sun};
   const PlaneMaterial pm;
   const glm::vec2 shift(-3.0f * std::tan(zenith), 0.0f);
-  std::vector<std::pair<const char*, const char*>> runs = {{"none", "hardware"}, {"pcf", "hardware"}};
+  std::vector<std::pair<ShadowFilter, RasterChoice>> runs = {{ShadowFilter::None, RasterChoice::Hardware},
+                                                             {ShadowFilter::Pcf, RasterChoice::Hardware}};
   if (std::string(GetParam().name) == "forward-visibility")
-    runs.insert(runs.end(), {{"none", "compute"}, {"pcf", "compute"}});
+    runs.insert(runs.end(),
+                {{ShadowFilter::None, RasterChoice::Compute}, {ShadowFilter::Pcf, RasterChoice::Compute}});
   for (const auto& [filter, raster] : runs) {
-    SCOPED_TRACE(std::string("--shadow-filter ") + filter + " --shadow-raster " + raster);
-    const float edgeTexels = std::string(filter) == "none" ? 1.5f : 3.0f;
+    SCOPED_TRACE(fmt::format("--shadow-filter {} --shadow-raster {}", filter, raster));
+    const float edgeTexels = filter == ShadowFilter::None ? 1.5f : 3.0f;
     int nearEdge = 0;
     Counts c = checkAgainstFormula(
         scene,
@@ -437,7 +440,7 @@ TEST_P(Analytic, SunShadowOfASquareOccluder) {
           const glm::vec3 v = glm::normalize(eye - p);
           return sun.color * sun.illuminance * brdfCosine(pm, shadingNormal(pm), v, -sun.direction);
         },
-        GetParam(), "compute",
+        GetParam(), LllFill::Compute,
         [&](RenderSettings& s) {
           s.shadowFilter = filter;
           s.shadowRaster = raster;
@@ -468,16 +471,18 @@ TEST_P(Analytic, LocalLightShadowOfASquareOccluder) {
     light.outerConeAngle = 45.0f * kPi / 180.0f;
     scene.lights = {light};
     const PlaneMaterial pm;
-    std::vector<std::pair<const char*, const char*>> runs = {{"none", "hardware"}, {"pcf", "hardware"}};
+    std::vector<std::pair<ShadowFilter, RasterChoice>> runs = {{ShadowFilter::None, RasterChoice::Hardware},
+                                                               {ShadowFilter::Pcf, RasterChoice::Hardware}};
     if (std::string(GetParam().name) == "forward-visibility")
-      runs.insert(runs.end(), {{"none", "compute"}, {"pcf", "compute"}});
+      runs.insert(runs.end(),
+                  {{ShadowFilter::None, RasterChoice::Compute}, {ShadowFilter::Pcf, RasterChoice::Compute}});
     for (const auto& [filter, raster] : runs) {
-      SCOPED_TRACE(std::string(type == LightType::Spot ? "spot" : "point") + " --shadow-filter " + filter +
-                   " --shadow-raster " + raster);
-      const float edgeTexels = std::string(filter) == "none" ? 1.5f : 3.0f;
+      SCOPED_TRACE(fmt::format("{} --shadow-filter {} --shadow-raster {}",
+                               type == LightType::Spot ? "spot" : "point", filter, raster));
+      const float edgeTexels = filter == ShadowFilter::None ? 1.5f : 3.0f;
       // The compute rasterizer at 500 texels: the cube faces' cells start off its 8-texel tiles
       // and 32-texel bins (the occluder is a large triangle, found through the bins).
-      const uint32_t resolution = std::string(raster) == "compute" ? 500 : 512;
+      const uint32_t resolution = raster == RasterChoice::Compute ? 500 : 512;
       const float tanHalf = shadowViews(light, resolution)[0].tanHalf;
       int nearEdge = 0;
       Counts c = checkAgainstFormula(
@@ -498,9 +503,9 @@ TEST_P(Analytic, LocalLightShadowOfASquareOccluder) {
             }
             return inside ? glm::vec3(0.0f) : expectedRadiance(scene, pm, light, p);
           },
-          GetParam(), "compute",
+          GetParam(), LllFill::Compute,
           [&](RenderSettings& s) {
-            s.shadows = "all";
+            s.shadows = ShadowMode::All;
             s.shadowLights = 1;
             s.shadowFilter = filter;
             s.shadowRaster = raster;
@@ -530,7 +535,7 @@ TEST(AnalyticShadow, SingleSidedCastersCastFromTheirFrontFaces) {
     settings.width = 96;
     settings.height = 96;
     settings.ambient = 0.0f;
-    settings.shadowFilter = "none";
+    settings.shadowFilter = ShadowFilter::None;
     const test::Rendered out = test::render(scene, settings);
     // The shadow's middle, 3 m towards -x (pixel 29, 47): dark only when it casts.
     const float middle = out.hdr.at(29, 47).r;

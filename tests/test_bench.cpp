@@ -98,7 +98,7 @@ TEST(BenchSuites, DensityKeepsLightsPerPixelAndSkipsTheSlowTechniquesBeyondTheir
     const uint32_t n = s.scene.extraLights;
     EXPECT_NEAR(s.scene.lightRangeScale, std::cbrt(1024.0 / n), 1e-6) << s.name;
     EXPECT_TRUE(s.scene.scaleIntensityWithRange);
-    EXPECT_EQ(s.settings.lllFill, "compute");
+    EXPECT_EQ(s.settings.lllFill, LllFill::Compute);
     const bool slow = s.settings.technique == "forward" || s.settings.technique == "deferred" ||
                       s.settings.technique == "prepass";
     EXPECT_EQ(!s.skip.empty(), slow && n > kDensityVolumeLimit) << s.name << " " << s.settings.technique;
@@ -128,7 +128,7 @@ TEST(BenchSuites, SlicesIsLllWithAndWithoutDepthSlicesOnBothLightSets) {
       EXPECT_EQ(seriesLabel(s), s.settings.technique + "/tile16");
       continue;
     }
-    EXPECT_EQ(s.settings.lllFill, "compute");
+    EXPECT_EQ(s.settings.lllFill, LllFill::Compute);
     EXPECT_LE(s.settings.lllSlices, 32u);
     sliced += s.settings.lllSlices > 1;
     EXPECT_TRUE(s.settings.tileSize == 8u || s.settings.tileSize == 16u);
@@ -167,12 +167,12 @@ TEST(BenchSuites, MovingIsEveryTechniqueWithMovingLightsAndLllStill) {
       continue;
     }
     EXPECT_TRUE(s.scene.movingLights) << s.name;
-    if (s.settings.lightMotion == "cpu") {
+    if (s.settings.lightMotion == LightPlacement::Cpu) {
       ++cpu;
       EXPECT_EQ(seriesLabel(s), "lll/compute/cpu-motion");
       continue;
     }
-    EXPECT_EQ(s.settings.lightMotion, "auto") << seriesLabel(s);
+    EXPECT_EQ(s.settings.lightMotion, LightPlacement::Auto) << seriesLabel(s);
     EXPECT_EQ(s.skip.empty(), s.scene.extraLights <= kDensityVolumeLimit ||
                                   (s.settings.technique != "forward" && s.settings.technique != "deferred" &&
                                    s.settings.technique != "prepass"))
@@ -209,7 +209,7 @@ TEST(BenchSuites, ThreelIsEveryLllFillAndForwardAtTwoSizes) {
     if (s.series == "lll/compute/tile16") {  // lll's compute fill at its own default tile
       ++atDefaultTile;
       EXPECT_EQ(s.settings.tileSize, 0u);
-      EXPECT_EQ(s.settings.lllFill, "compute");
+      EXPECT_EQ(s.settings.lllFill, LllFill::Compute);
       continue;
     }
     EXPECT_EQ(s.settings.tileSize, 8u);  // ThreeL's
@@ -236,13 +236,14 @@ TEST(BenchSuites, SmokeIsThePlumeAtThreeCountsTwoLightingsLllAndForwardComputeAn
     EXPECT_EQ(s.settings.height, 1080u);
     EXPECT_EQ(s.scene.scene, "atrium");
     EXPECT_EQ(s.scene.extraLights, 256u);
-    EXPECT_TRUE(s.settings.particleRender == "compute" || s.settings.particleCount <= 65536) << s.name;
-    EXPECT_TRUE(s.settings.particleRender == "compute" || s.settings.particleLighting != "pixel" ||
-                s.settings.particleCount <= 1024)
+    EXPECT_TRUE(s.settings.particleRender == ParticleRender::Compute || s.settings.particleCount <= 65536)
+        << s.name;
+    EXPECT_TRUE(s.settings.particleRender == ParticleRender::Compute ||
+                s.settings.particleLighting != ParticleLighting::Pixel || s.settings.particleCount <= 1024)
         << s.name;
     counts.insert(s.settings.particleCount);
     labels.insert(techniqueLabel(s.settings));
-    lightings.insert(s.settings.particleLighting);
+    lightings.insert(std::string(nameOf(s.settings.particleLighting)));
     presets.insert(s.settings.particles);
     series.insert(seriesLabel(s));
   }
@@ -279,15 +280,15 @@ TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) 
     if (s.scene.scene == "atrium-spots") {
       EXPECT_EQ(s.settings.technique, "lll");
       EXPECT_EQ(s.scene.suns.size(), 1u);
-      spotRows.push_back(s.settings.shadows == "all"
+      spotRows.push_back(s.settings.shadows == ShadowMode::All
                              ? fmt::format("{} {}", s.settings.shadowLights, s.settings.shadowRaster)
-                             : s.settings.shadows);
+                             : std::string(nameOf(s.settings.shadows)));
       continue;
     }
     EXPECT_EQ(s.scene.scene, "atrium");
     const bool sun = !s.scene.suns.empty();
-    if (s.settings.shadows == "all") {
-      if (s.settings.shadowRaster == "hardware") {
+    if (s.settings.shadows == ShadowMode::All) {
+      if (s.settings.shadowRaster == RasterChoice::Hardware) {
         EXPECT_EQ(s.settings.technique, "lll");
         EXPECT_TRUE(sun);
         EXPECT_NE(s.series.find("hardware raster"), std::string::npos) << s.series;
@@ -301,14 +302,16 @@ TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) 
       continue;
     }
     if (!sun) {
-      EXPECT_EQ(s.settings.shadows, "none");
+      EXPECT_EQ(s.settings.shadows, ShadowMode::None);
       ++byRaster["no sun"];
       continue;
     }
-    ++byRaster[s.settings.shadows == "none" ? "none" : s.settings.shadowRaster];
-    if (s.settings.shadowRaster != "auto") {
+    ++byRaster[s.settings.shadows == ShadowMode::None ? "none"
+                                                      : std::string(nameOf(s.settings.shadowRaster))];
+    if (s.settings.shadowRaster != RasterChoice::Auto) {
       EXPECT_EQ(s.settings.technique, "lll");
-      EXPECT_NE(s.series.find(s.settings.shadowRaster + " raster"), std::string::npos) << s.series;
+      EXPECT_NE(s.series.find(fmt::format("{} raster", s.settings.shadowRaster)), std::string::npos)
+          << s.series;
     }
   }
   EXPECT_EQ(byRaster["none"], int(techniques));
@@ -323,7 +326,7 @@ TEST(BenchSuites, ShadowsSuiteIsEveryTechniqueWithAndWithoutAndBothRasterizers) 
   EXPECT_EQ(spotRows, (std::vector<std::string>{"none", "sun", "16 auto", "64 auto", "64 hardware"}));
   const auto cpu = buildSuite("shadows", SuiteOptions{.cpuDevice = true});
   EXPECT_EQ(cpu.size(), 2 * techniques + 5 + 4 * techniques + 5 * techniques + 4);
-  for (const Scenario& s : cpu) EXPECT_NE(s.settings.shadowRaster, "compute") << s.name;
+  for (const Scenario& s : cpu) EXPECT_NE(s.settings.shadowRaster, RasterChoice::Compute) << s.name;
 }
 
 // Splits one CSV line, honouring quoted fields (device names hold commas).
@@ -472,11 +475,12 @@ TEST(BenchQuick, SmokeSuiteTimesTheParticlePasses) {
     ASSERT_EQ(r.status, Status::Ok) << r.scenario.name << ": " << r.message;
     for (const char* pass : {"particles-simulate", "particles-sort", "particles-indirect"})
       EXPECT_NE(r.pass(pass), nullptr) << r.scenario.name << " has no " << pass;
-    const bool compute = r.scenario.settings.particleRender == "compute";
+    const bool compute = r.scenario.settings.particleRender == ParticleRender::Compute;
     EXPECT_EQ(r.pass("particles-draw") != nullptr, !compute) << r.scenario.name;
     EXPECT_EQ(r.pass("particles-bin") != nullptr, compute) << r.scenario.name;
     EXPECT_EQ(r.pass("particles-composite") != nullptr, compute) << r.scenario.name;
-    EXPECT_EQ(r.pass("particles-light") != nullptr, r.scenario.settings.particleLighting != "pixel");
+    EXPECT_EQ(r.pass("particles-light") != nullptr,
+              r.scenario.settings.particleLighting != ParticleLighting::Pixel);
     double alive = 0.0;
     for (const auto& [key, value] : r.techniqueStats)
       if (key == "particles_alive") alive = value;

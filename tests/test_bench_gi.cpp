@@ -28,7 +28,7 @@ TEST(BenchSuites, GiSuitesVaryTheVplCountAndCutoff) {
       EXPECT_TRUE(s.settings.technique == "lll" || s.settings.technique == "tiled") << s.settings.technique;
       EXPECT_NE(s.series.find(fmt::format("/interleave{}", s.settings.vplInterleave)), std::string::npos);
     }
-    EXPECT_EQ(s.scene.gi.mode, "vpl-only");
+    EXPECT_EQ(s.scene.gi.mode, GiMode::VplOnly);
     EXPECT_GE(s.scene.gi.photons, 2 * s.scene.gi.vplCount) << "too few deposits to merge into the count";
     counts.insert(s.scene.gi.vplCount);
     cutoffs.insert(s.scene.gi.vplCutoff);
@@ -47,7 +47,7 @@ TEST(BenchSuites, GiSuitesVaryTheVplCountAndCutoff) {
   for (const Scenario& s : error) {
     EXPECT_TRUE(s.compareWithReference);
     EXPECT_EQ(s.scene.scene, "cornell");
-    if (s.scene.gi.hierarchy == "grid") {
+    if (s.scene.gi.hierarchy == GiHierarchy::Grid) {
       alphas.insert(s.scene.gi.vplAlpha);
       EXPECT_EQ(s.scene.gi.vplRange, 0.0f) << "the hierarchy refuses a fixed range";
       EXPECT_TRUE(s.series.starts_with(fmt::format("hierarchy {}", s.scene.gi.vplAlpha))) << s.series;
@@ -63,12 +63,12 @@ TEST(BenchSuites, GiHierarchySuiteSetsTheHierarchyAndItsComparisons) {
   std::map<std::string, int> bySeries;
   std::set<uint32_t> counts;
   for (const Scenario& s : buildSuite("gi-hierarchy", SuiteOptions{})) {
-    EXPECT_EQ(s.scene.gi.mode, "vpl-only");
+    EXPECT_EQ(s.scene.gi.mode, GiMode::VplOnly);
     EXPECT_EQ(s.settings.width, 1920u);
     counts.insert(s.scene.gi.vplCount);
     ++bySeries[s.series];
     const std::string& t = s.settings.technique;
-    if (s.scene.gi.hierarchy == "grid") {
+    if (s.scene.gi.hierarchy == GiHierarchy::Grid) {
       EXPECT_EQ(!s.skip.empty(),
                 (t == "forward" || t == "deferred" || t == "prepass") && s.scene.gi.vplCount > 5144)
           << s.name << " " << t;
@@ -112,7 +112,7 @@ TEST(BenchQuick, GiErrorSuiteMeasuresTheErrorAgainstTheReference) {
       if (key == "gi-levels") levels = value;
     }
     ASSERT_TRUE(error && traceMs && levels) << r.scenario.name;
-    EXPECT_EQ(*levels > 1.0, r.scenario.scene.gi.hierarchy == "grid") << r.scenario.name;
+    EXPECT_EQ(*levels > 1.0, r.scenario.scene.gi.hierarchy == GiHierarchy::Grid) << r.scenario.name;
     // 64 samples per pixel at 48x27: the reference is noisy, but VPLs are not off by half.
     EXPECT_GT(*error, 0.0);
     EXPECT_LT(*error, 0.5) << r.scenario.name;

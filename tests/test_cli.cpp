@@ -248,6 +248,21 @@ TEST_F(CliTest, RenderWritesPngPfmAndStats) {
   }
 }
 
+// A named choice reaches the renderer as the value it names: lll's fill names its pass.
+TEST_F(CliTest, ChosenFillNamesItsPass) {
+  for (const std::string fill : {"ray", "shells"}) {
+    const fs::path stats = dir_ / (fill + ".json");
+    const CliResult r =
+        render("plane", {"--technique", "lll", "--lll-fill", fill, "--stats", stats.string()});
+    ASSERT_EQ(r.exitCode, 0) << r;
+    const json j = json::parse(readFile(stats));
+    std::vector<std::string> passes;
+    for (const json& pass : j.at("passes")) passes.push_back(pass.at("name").get<std::string>());
+    EXPECT_NE(std::find(passes.begin(), passes.end(), "lll-fill-" + fill), passes.end())
+        << fill << ": " << fmt::format("{}", fmt::join(passes, ", "));
+  }
+}
+
 // ---- particles ----
 
 // The tests' still preset with one change, written as `name` in the test's folder.

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "core/errors.h"
@@ -23,19 +24,19 @@ namespace lll {
 namespace {
 
 // Renders with the given raster and checks that it is the one used.
-test::Rendered renderWith(const Scene& scene, RenderSettings settings, const std::string& raster) {
+test::Rendered renderWith(const Scene& scene, RenderSettings settings, RasterChoice raster) {
   settings.raster = raster;
   Renderer renderer(test::gpuContext(), scene, settings);
   EXPECT_NE(renderer.visibility(), nullptr);
   if (renderer.visibility()) {
-    EXPECT_EQ(renderer.visibility()->computeRaster(), raster == "compute") << raster;
+    EXPECT_EQ(renderer.visibility()->computeRaster(), raster == RasterChoice::Compute) << raster;
   }
   return test::render(renderer);
 }
 
 void expectSameFrames(const Scene& scene, const RenderSettings& settings, const std::string& label) {
-  const test::Rendered hardware = renderWith(scene, settings, "hardware");
-  const test::Rendered compute = renderWith(scene, settings, "compute");
+  const test::Rendered hardware = renderWith(scene, settings, RasterChoice::Hardware);
+  const test::Rendered compute = renderWith(scene, settings, RasterChoice::Compute);
   test::expectWithinBound(compute.ldr, hardware.ldr, test::kRasterBound, "compute raster " + label);
 }
 
@@ -92,9 +93,9 @@ TEST(ComputeRaster, EveryTriangleThroughTheBinsStillMatches) {
   settings.width = 64;
   settings.height = 36;
   settings.technique = "forward";
-  const test::Rendered hardware = renderWith(scene, settings, "hardware");
+  const test::Rendered hardware = renderWith(scene, settings, RasterChoice::Hardware);
   setenv("LLL_RASTER_OWN_BOX", "1", 1);
-  const test::Rendered compute = renderWith(scene, settings, "compute");
+  const test::Rendered compute = renderWith(scene, settings, RasterChoice::Compute);
   unsetenv("LLL_RASTER_OWN_BOX");
   test::expectWithinBound(compute.ldr, hardware.ldr, test::kRasterBound,
                           "compute raster, all triangles binned");
@@ -142,16 +143,18 @@ TEST(ComputeRaster, TheDepthImageIsFilledOnlyForPassesThatUseIt) {
     bool glass;
     bool masked;
     const char* technique;
-    const char* particles;  // render path, empty: none
+    std::optional<ParticleRender> particles;  // none: no particles
     double copied;
   };
-  for (const Case& c : {Case{true, false, "lll", "", 0.0}, Case{true, false, "tiled", "", 0.0},
-                        Case{false, false, "lll", "compute", 0.0}, Case{false, false, "lll", "raster", 1.0},
-                        Case{true, false, "lll", "compute", 1.0}, Case{true, true, "lll", "", 1.0},
-                        Case{true, true, "clustered", "", 1.0}}) {
+  for (const Case& c :
+       {Case{true, false, "lll", std::nullopt, 0.0}, Case{true, false, "tiled", std::nullopt, 0.0},
+        Case{false, false, "lll", ParticleRender::Compute, 0.0},
+        Case{false, false, "lll", ParticleRender::Raster, 1.0},
+        Case{true, false, "lll", ParticleRender::Compute, 1.0}, Case{true, true, "lll", std::nullopt, 1.0},
+        Case{true, true, "clustered", std::nullopt, 1.0}}) {
     const std::string label =
         fmt::format("{}{}{}{}", c.technique, c.glass ? ", glass" : "", c.masked ? ", masked" : "",
-                    *c.particles ? fmt::format(", {} particles", c.particles) : "");
+                    c.particles ? fmt::format(", {} particles", *c.particles) : "");
     SCOPED_TRACE(label);
     const Scene scene = planeWith(c.glass, c.masked);
     RenderSettings settings;
@@ -159,15 +162,15 @@ TEST(ComputeRaster, TheDepthImageIsFilledOnlyForPassesThatUseIt) {
     settings.height = 90;
     settings.technique = c.technique;
     settings.camera = "0,2.2,2.2,0,0.3,0";
-    if (*c.particles) {
+    if (c.particles) {
       settings.particles = "smoke";
-      settings.particleRender = c.particles;
-      settings.particleLighting = "vertex";
+      settings.particleRender = *c.particles;
+      settings.particleLighting = ParticleLighting::Vertex;
       settings.particleCount = 512;
       settings.particleEmitter = "0,0.2,0";
     }
-    const test::Rendered hardware = renderWith(scene, settings, "hardware");
-    const test::Rendered compute = renderWith(scene, settings, "compute");
+    const test::Rendered hardware = renderWith(scene, settings, RasterChoice::Hardware);
+    const test::Rendered compute = renderWith(scene, settings, RasterChoice::Compute);
     EXPECT_EQ(test::stat(compute, "raster-depth-copy"), c.copied);
     test::expectWithinBound(compute.ldr, hardware.ldr, test::kRasterBound, "compute raster " + label);
   }
@@ -182,27 +185,27 @@ TEST(ComputeRaster, TechniquesThatRedrawGeometryKeepTheHardwarePass) {
   settings.width = 32;
   settings.height = 18;
   settings.technique = "prepass";
-  settings.raster = "compute";
+  settings.raster = RasterChoice::Compute;
   EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError);
-  settings.raster = "auto";
+  settings.raster = RasterChoice::Auto;
   {
     Renderer renderer(test::gpuContext(), scene, settings);
     ASSERT_NE(renderer.visibility(), nullptr);
     EXPECT_FALSE(renderer.visibility()->computeRaster());
   }
   settings.technique = "deferred";
-  settings.raster = "compute";
+  settings.raster = RasterChoice::Compute;
   if (!skipWithoutFeatures()) {
     Renderer renderer(test::gpuContext(), scene, settings);
     ASSERT_NE(renderer.visibility(), nullptr);
     EXPECT_TRUE(renderer.visibility()->computeRaster());
   }
   settings.technique = "lll";
-  settings.lllShade = "fragment";
-  settings.raster = "compute";
+  settings.lllShade = LllShade::Fragment;
+  settings.raster = RasterChoice::Compute;
   EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError);
-  settings.surfaces = "gbuffer";
-  settings.lllShade = "compute";
+  settings.surfaces = SurfaceSource::Gbuffer;
+  settings.lllShade = LllShade::Compute;
   EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError);
 }
 

@@ -140,7 +140,7 @@ TEST(DeferredMatchesForward, DefaultSceneOpaque) {
 
 TEST(DeferredMatchesForward, DefaultSceneWithGlassLitByForwardPass) {
   RenderSettings settings = settingsFor("deferred");
-  settings.deferredTranslucent = "forward";
+  settings.deferredTranslucent = TranslucentLighting::Forward;
   compareWithForward(loadedScene("", 0), settings, "deferred atrium glass forward");
 }
 
@@ -150,7 +150,7 @@ TEST(DeferredTranslucent, UnlitGlassIsDarkerThanForward) {
   const Scene& full = loadedScene("", 0);
   const Scene opaque = withoutBlended(full);
   RenderSettings settings = settingsFor("deferred");
-  settings.deferredTranslucent = "unlit";
+  settings.deferredTranslucent = TranslucentLighting::Unlit;
   const Comparison c = renderWithForward(full, settings);
   const test::Rendered opaqueForward = test::render(opaque, settingsFor("forward"));
   double glassForward = 0.0, glassUnlit = 0.0;
@@ -375,7 +375,7 @@ TEST(DeferredEdgeAa, BlendsSilhouettesAndCreasesOnly) {
   scene.lights = {pointLight({0.0f, 3.5f, -2.0f}, 12.0f, {1, 1, 1}, 30.0f)};
   RenderSettings settings = settingsFor("deferred");
   const test::Rendered plain = test::render(scene, settings);
-  settings.antiAliasing = "edge";
+  settings.antiAliasing = AntiAliasing::Edge;
   const test::Rendered smoothed = test::render(scene, settings);
   const int changed = changedPixels(plain.ldr, smoothed.ldr);
   std::printf("[ edge aa  ] %d of %u pixels changed, %.2f dB from no AA\n", changed, kWidth * kHeight,
@@ -390,7 +390,7 @@ TEST(DeferredEdgeAa, LeavesAFlatPlaneUntouched) {
   const Scene& scene = loadedScene("plane", 0);
   RenderSettings settings = settingsFor("deferred");
   const test::Rendered plain = test::render(scene, settings);
-  settings.antiAliasing = "edge";
+  settings.antiAliasing = AntiAliasing::Edge;
   const test::Rendered smoothed = test::render(scene, settings);
   EXPECT_EQ(changedPixels(plain.ldr, smoothed.ldr), 0);
   EXPECT_GT(pixelsLitByLights(scene, Comparison{plain, plain}, settings), int(kWidth * kHeight) / 10);

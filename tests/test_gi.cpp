@@ -166,7 +166,7 @@ glm::vec3 vplIrradiance(const std::vector<Light>& vpls, const glm::vec3& p, cons
 // Colour bleeding: no direct light reaches the floor beside the red wall, the VPLs make it red.
 TEST(Gi, CornellFloorBesideTheRedWallIsRed) {
   SceneRequest request{"cornell"};
-  request.gi.mode = "vpl-only";
+  request.gi.mode = GiMode::VplOnly;
   const Scene scene = loadScene(request);
   const glm::vec3 floor(0.4f, 0.0f, 2.75f), up(0.0f, 1.0f, 0.0f);
   const glm::vec3 e = vplIrradiance(scene.lights, floor, up);
@@ -194,10 +194,11 @@ TEST(Gi, SphereRoomMatchesTheAnalyticBounces) {
   settings.width = 48;
   settings.height = 36;
   settings.technique = "forward";
-  for (const auto& [hierarchy, bounces] : {std::pair{"none", 1u}, {"none", 3u}, {"grid", 1u}, {"grid", 3u}}) {
+  using enum GiHierarchy;
+  for (const auto& [hierarchy, bounces] : {std::pair{None, 1u}, {None, 3u}, {Grid, 1u}, {Grid, 3u}}) {
     SCOPED_TRACE(fmt::format("{}, {} bounces", hierarchy, bounces));
     SceneRequest request{"sphere-room"};
-    request.gi.mode = "vpl-only";
+    request.gi.mode = GiMode::VplOnly;
     request.gi.bounces = bounces;
     request.gi.photons = 50000;
     request.gi.vplCount = 2048;
@@ -227,7 +228,7 @@ TEST(Gi, SphereRoomMatchesTheAnalyticBounces) {
     std::printf(
         "[ gi ] sphere room, hierarchy %s, %u bounces: VPL render / analytic = %.4f on average, %.4f off at "
         "worst\n",
-        hierarchy, bounces, mean, worst);
+        std::string(nameOf(hierarchy)).c_str(), bounces, mean, worst);
     EXPECT_NEAR(mean, 1.0, 0.05);
     EXPECT_LT(worst, 0.10);
   }
@@ -237,10 +238,10 @@ TEST(Gi, SphereRoomMatchesTheAnalyticBounces) {
 // so that it fills the display range): one grid with ranges from the cutoff, and the lighting grid
 // hierarchy's bands.
 TEST(Gi, EveryTechniqueMatchesForwardWithTheSameVpls) {
-  for (const char* hierarchy : {"none", "grid"}) {
-    SCOPED_TRACE(hierarchy);
+  for (const GiHierarchy hierarchy : {GiHierarchy::None, GiHierarchy::Grid}) {
+    SCOPED_TRACE(nameOf(hierarchy));
     SceneRequest request{"cornell"};
-    request.gi.mode = "vpl-only";
+    request.gi.mode = GiMode::VplOnly;
     request.gi.hierarchy = hierarchy;
     request.gi.photons = 20000;
     request.gi.vplCount = 1024;
@@ -291,9 +292,9 @@ TEST(Gi, ErrorAgainstTheReferenceFallsAsTheVplCountRises) {
   double previous = 1e30;
   for (uint32_t count : {32u, 256u, 2048u}) {
     SceneRequest request{"cornell"};
-    request.gi.mode = "vpl-only";
+    request.gi.mode = GiMode::VplOnly;
     request.gi.vplCount = count;
-    request.gi.hierarchy = "none";
+    request.gi.hierarchy = GiHierarchy::None;
     request.gi.vplCutoff = 1e-6f;  // every VPL reaches the whole room: only their number varies
     // 6x6-pixel blocks: the reference's per-pixel noise (13% at 1,024 samples) would hide the VPLs'
     // error, which varies slowly across the image; a block's mean has a sixth of it.

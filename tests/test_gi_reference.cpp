@@ -243,7 +243,7 @@ TEST(GiReference, SunMatchesTheRenderer) {
 
 Scene cornellVplsOnly() {
   SceneRequest request{"cornell"};
-  request.gi.mode = "vpl-only";
+  request.gi.mode = GiMode::VplOnly;
   return loadScene(request);
 }
 

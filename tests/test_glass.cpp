@@ -46,7 +46,7 @@ Scene overlappingGlass(bool nearFirst, float nearSize = 2.0f) {
   return scene;
 }
 
-RenderSettings small(const std::string& glass, const std::string& technique = "forward") {
+RenderSettings small(GlassLighting glass, const std::string& technique = "forward") {
   RenderSettings settings;
   settings.width = 160;
   settings.height = 120;
@@ -59,10 +59,10 @@ RenderSettings small(const std::string& glass, const std::string& technique = "f
 // which equals the raster path's in the order that is right (far first).
 TEST(ComputeGlass, BlendsInDepthOrderWhateverTheDrawOrder) {
   const Scene nearFirst = overlappingGlass(true), farFirst = overlappingGlass(false);
-  const test::Rendered computeNearFirst = test::render(nearFirst, small("compute"));
-  const test::Rendered computeFarFirst = test::render(farFirst, small("compute"));
-  const test::Rendered rasterNearFirst = test::render(nearFirst, small("raster"));
-  const test::Rendered rasterFarFirst = test::render(farFirst, small("raster"));
+  const test::Rendered computeNearFirst = test::render(nearFirst, small(GlassLighting::Compute));
+  const test::Rendered computeFarFirst = test::render(farFirst, small(GlassLighting::Compute));
+  const test::Rendered rasterNearFirst = test::render(nearFirst, small(GlassLighting::Raster));
+  const test::Rendered rasterFarFirst = test::render(farFirst, small(GlassLighting::Raster));
   const ImageDifference order = compareImages(rasterNearFirst.ldr, rasterFarFirst.ldr);
   EXPECT_GT(order.worst, 16) << "the scene does not show the blend order: the test proves nothing";
   std::printf("[ glass    ] the raster pass's two index orders differ by up to %d of 255\n", order.worst);
@@ -77,7 +77,7 @@ TEST(ComputeGlass, BlendsInDepthOrderWhateverTheDrawOrder) {
 // least 16,384): the frame is drawn again with room, and nothing is lost.
 TEST(ComputeGlass, APoolTooSmallGrowsAndTheFrameIsDrawnAgain) {
   const Scene scene = overlappingGlass(false, 40.0f);
-  Renderer renderer(test::gpuContext(), scene, small("compute"));
+  Renderer renderer(test::gpuContext(), scene, small(GlassLighting::Compute));
   const test::Rendered first = test::render(renderer);
   EXPECT_GE(first.frame.rerenders, 1u);
   EXPECT_EQ(test::stat(first, "glass-pool-overflows"), 1.0);
@@ -85,7 +85,7 @@ TEST(ComputeGlass, APoolTooSmallGrowsAndTheFrameIsDrawnAgain) {
   EXPECT_GE(test::stat(first, "glass-fragment-capacity"), test::stat(first, "glass-fragments"));
   const test::Rendered second = test::render(renderer);
   EXPECT_EQ(second.frame.rerenders, 0u);
-  test::expectWithinBound(first.ldr, test::render(scene, small("raster")).ldr, test::kSameImage,
+  test::expectWithinBound(first.ldr, test::render(scene, small(GlassLighting::Raster)).ldr, test::kSameImage,
                           "after growing, against the raster pass");
 }
 
@@ -93,10 +93,10 @@ TEST(ComputeGlass, APoolTooSmallGrowsAndTheFrameIsDrawnAgain) {
 // lit per fragment (the reference), in the atrium, whose panes draw in depth order.
 TEST(ComputeGlass, EveryTechniqueMatchesTheRasterPath) {
   const Scene scene = test::loadSceneWithLights({"atrium", 64});
-  RenderSettings settings = small("raster");
+  RenderSettings settings = small(GlassLighting::Raster);
   const test::Rendered reference = test::render(scene, test::reference(settings));
   for (const char* technique : {"forward", "lll", "tiled", "clustered", "deferred", "prepass"}) {
-    settings = small("compute", technique);
+    settings = small(GlassLighting::Compute, technique);
     const test::ImageBound bound = settings.technique == "prepass" ? test::kPrepassBound : test::kSameImage;
     const test::Rendered got = test::render(scene, settings);
     EXPECT_GT(test::stat(got, "glass-fragments"), 0.0) << technique;
@@ -111,7 +111,7 @@ TEST(ComputeGlass, EveryTechniqueMatchesTheRasterPath) {
 // both ways, at one class and at four (a class left out darkens the pane by up to 200 of 255 here).
 TEST(ComputeGlass, LllClassListsLightThePaneAsTheRasterPath) {
   SceneRequest request{"cornell"};
-  request.gi.mode = "vpl-only";
+  request.gi.mode = GiMode::VplOnly;
   request.gi.photons = 20000;
   request.gi.vplCount = 256;
   Scene scene = loadScene(request);
@@ -127,12 +127,12 @@ TEST(ComputeGlass, LllClassListsLightThePaneAsTheRasterPath) {
   scene.instances.push_back(Instance{pane.addTo(scene), glm::mat4(1.0f)});
   HdrImage opaqueOnly;
   for (uint32_t interleave : {1u, 2u}) {
-    RenderSettings settings = small("compute", "lll");
+    RenderSettings settings = small(GlassLighting::Compute, "lll");
     settings.ambient = 0.0f;
     settings.exposure = 16.0f;
     settings.vplInterleave = interleave;
     const test::Rendered compute = test::render(scene, settings);
-    settings.glass = "raster";
+    settings.glass = GlassLighting::Raster;
     const test::Rendered raster = test::render(scene, settings);
     EXPECT_GT(test::stat(compute, "glass-fragments"), 160.0 * 120.0 / 8.0)
         << "the pane should fill the view's middle";

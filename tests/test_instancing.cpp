@@ -248,12 +248,15 @@ TEST(Instancing, MirroredGltfNodesKeepTheirFrontFaces) {
     for (const TechniqueInfo& technique : techniques()) {
       for (const char* path : {"visibility", "visibility-compute", "gbuffer"}) {
         RenderSettings settings = smallSettings(technique.name);
-        settings.surfaces = path == std::string("gbuffer") ? "gbuffer" : "visibility";
-        settings.raster = path == std::string("visibility-compute") ? "compute" : "hardware";
+        settings.surfaces =
+            path == std::string("gbuffer") ? SurfaceSource::Gbuffer : SurfaceSource::Visibility;
+        settings.raster =
+            path == std::string("visibility-compute") ? RasterChoice::Compute : RasterChoice::Hardware;
         settings.shadowRaster = settings.raster;
         // Techniques that draw opaque geometry again with an EQUAL depth test refuse the compute
         // rasterizer (test_compute_raster.cpp).
-        if (settings.raster == "compute" && technique.redrawsOpaque && technique.redrawsOpaque(settings))
+        if (settings.raster == RasterChoice::Compute && technique.redrawsOpaque &&
+            technique.redrawsOpaque(settings))
           continue;
         const test::Rendered a = test::render(mirrored, settings);
         const test::Rendered b = test::render(baked, settings);

@@ -20,7 +20,7 @@ namespace {
 
 Scene cornellVpls(uint32_t count) {
   SceneRequest request{"cornell"};
-  request.gi.mode = "vpl-only";
+  request.gi.mode = GiMode::VplOnly;
   request.gi.photons = 20000;
   request.gi.vplCount = count;
   return loadScene(request);
@@ -40,7 +40,7 @@ RenderSettings vplSettings(const char* technique, uint32_t interleave) {
 // The atrium's VPLs alone (Infinity's 5,144 asked for) at 320x180, default exposure and ambient.
 Scene atriumVpls() {
   SceneRequest request{"atrium"};
-  request.gi.mode = "vpl-only";
+  request.gi.mode = GiMode::VplOnly;
   return loadScene(request);
 }
 
@@ -179,7 +179,7 @@ TEST(InterleavedVpls, GlossyMetalsEvaluateEveryVplThemselves) {
 // slice lists the same lights as without interleaving.
 TEST(InterleavedVpls, LllClassListsHoldTheSameLights) {
   SceneRequest request{"cornell"};
-  request.gi.mode = "vpl";  // the spot light first, then the VPLs
+  request.gi.mode = GiMode::Vpl;  // the spot light first, then the VPLs
   request.gi.photons = 20000;
   request.gi.vplCount = 256;
   const Scene scene = loadScene(request);
@@ -222,7 +222,7 @@ TEST(InterleavedVpls, NothingToInterleaveChangesNothing) {
   EXPECT_EQ(compareImages(asked.ldr, plain.ldr).worst, 0);
   const Scene vpls = cornellVpls(256);
   RenderSettings gbuffer = vplSettings("lll", 2);
-  gbuffer.surfaces = "gbuffer";
+  gbuffer.surfaces = SurfaceSource::Gbuffer;
   const test::Rendered fromGbuffer = test::render(vpls, gbuffer);
   EXPECT_FALSE(hasStat(fromGbuffer, "vpl-interleave"));
   EXPECT_EQ(test::stat(fromGbuffer, "heads_per_list"), 1.0)

@@ -230,7 +230,7 @@ TEST(GridImages, BadOptionsAreRefused) {
     EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError) << slices;
   }
   settings.clusterSlices = 16;
-  settings.debugView = "bounds";  // lll's view of link depth bounds: grids have none
+  settings.debugView = DebugView::Bounds;  // lll's view of link depth bounds: grids have none
   for (const char* technique : {"tiled", "clustered"}) {
     settings.technique = technique;
     EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError) << technique;

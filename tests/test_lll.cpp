@@ -40,14 +40,13 @@ struct ListCheck {
 };
 
 // How far beyond its range a fill may list a light: the shells' coarseness and the tile inflation.
-float allowedDistance(const std::string& fill, const ViewLight& l, const RenderSettings& s,
-                      const Renderer& r) {
+float allowedDistance(LllFill fill, const ViewLight& l, const RenderSettings& s, const Renderer& r) {
   const float tanY = r.uniforms().depthParams.w;
   const float inflation = std::max(l.center.z + l.range, 0.0f) * 1.1f * std::sqrt(2.0f) * 0.5f *
                           float(s.tileSize) * 2.0f * tanY / float(s.height);
-  if (fill == "compute") return l.range * 1.001f + 1e-4f;
-  if (fill == "ray" || !l.spot || l.cosOuter < 0.5f)
-    return (l.range + inflation) * (fill == "ray" ? 1.001f : 1.3f);
+  if (fill == LllFill::Compute) return l.range * 1.001f + 1e-4f;
+  if (fill == LllFill::Ray || !l.spot || l.cosOuter < 0.5f)
+    return (l.range + inflation) * (fill == LllFill::Ray ? 1.001f : 1.3f);
   const float sinA = std::sqrt(1.0f - l.cosOuter * l.cosOuter), back = inflation / sinA;
   const float len = l.range + inflation + back, radius = len * sinA / l.cosOuter / std::cos(kPi / 16.0f);
   return back + std::sqrt(len * len + radius * radius);
@@ -118,7 +117,7 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
           // the near plane (Bezrati 1.3.2), so such a link ignores the tile's depth: measure to the
           // tile's whole frustum.
           const float marginDistance =
-              settings.lllFill == "shells"
+              settings.lllFill == LllFill::Shells
                   ? std::sqrt(referenceDistanceSquared(l.center, slopes, zNear, 1e4f))
                   : dist;
           if (link && marginDistance > allowedDistance(settings.lllFill, l, settings, renderer))
@@ -136,7 +135,7 @@ ListCheck checkLists(const Scene& scene, const RenderSettings& settings,
 }
 
 // An lll render of `width` x `height` with `slices` lists per tile.
-RenderSettings listSettings(const char* fill, uint32_t tile, uint32_t width, uint32_t height, uint32_t slices,
+RenderSettings listSettings(LllFill fill, uint32_t tile, uint32_t width, uint32_t height, uint32_t slices,
                             uint32_t fillSplits = 0) {
   RenderSettings settings;
   settings.technique = "lll";
@@ -160,7 +159,7 @@ void expectListsHoldEveryLight(const ListCheck& check, const std::string& what) 
 }
 
 struct ListCase {
-  const char* fill;
+  LllFill fill;
   uint32_t tile;
   uint32_t width;
   uint32_t height;
@@ -175,7 +174,7 @@ TEST_P(LllLists, MatchCpuReference) {
   const ListCheck check = checkLists(test::awkwardLightsScene(40),
                                      listSettings(c.fill, c.tile, c.width, c.height, c.slices, c.fillSplits));
   EXPECT_GT(check.mustList, 100u);  // the scene really exercises the lists
-  expectListsHoldEveryLight(check, c.fill);
+  expectListsHoldEveryLight(check, std::string(nameOf(c.fill)));
   if (c.slices > 1) {
     EXPECT_GT(check.slicedOut, check.listed / 4) << "the slices should keep most lights out of most lists";
   }
@@ -183,16 +182,17 @@ TEST_P(LllLists, MatchCpuReference) {
 
 INSTANTIATE_TEST_SUITE_P(
     Fills, LllLists,
-    ::testing::Values(ListCase{"compute", 8, 333, 197}, ListCase{"ray", 8, 333, 197},
-                      ListCase{"shells", 8, 333, 197}, ListCase{"compute", 16, 333, 197},
-                      ListCase{"ray", 16, 333, 197}, ListCase{"shells", 16, 333, 197},
-                      ListCase{"compute", 1, 111, 67}, ListCase{"ray", 1, 111, 67},
-                      ListCase{"shells", 1, 111, 67}, ListCase{"compute", 8, 333, 197, 3},
-                      ListCase{"compute", 1, 111, 67, 16}, ListCase{"compute", 8, 333, 197, 0, 16},
-                      ListCase{"compute", 8, 333, 197, 3, 16}, ListCase{"compute", 1, 111, 67, 0, 32},
-                      ListCase{"ray", 16, 333, 197, 0, 8}, ListCase{"shells", 8, 333, 197, 0, 4}),
+    ::testing::Values(
+        ListCase{LllFill::Compute, 8, 333, 197}, ListCase{LllFill::Ray, 8, 333, 197},
+        ListCase{LllFill::Shells, 8, 333, 197}, ListCase{LllFill::Compute, 16, 333, 197},
+        ListCase{LllFill::Ray, 16, 333, 197}, ListCase{LllFill::Shells, 16, 333, 197},
+        ListCase{LllFill::Compute, 1, 111, 67}, ListCase{LllFill::Ray, 1, 111, 67},
+        ListCase{LllFill::Shells, 1, 111, 67}, ListCase{LllFill::Compute, 8, 333, 197, 3},
+        ListCase{LllFill::Compute, 1, 111, 67, 16}, ListCase{LllFill::Compute, 8, 333, 197, 0, 16},
+        ListCase{LllFill::Compute, 8, 333, 197, 3, 16}, ListCase{LllFill::Compute, 1, 111, 67, 0, 32},
+        ListCase{LllFill::Ray, 16, 333, 197, 0, 8}, ListCase{LllFill::Shells, 8, 333, 197, 0, 4}),
     [](const auto& info) {
-      return std::string(info.param.fill) + "_tile" + std::to_string(info.param.tile) + "_" +
+      return std::string(nameOf(info.param.fill)) + "_tile" + std::to_string(info.param.tile) + "_" +
              std::to_string(info.param.width) + "x" + std::to_string(info.param.height) +
              (info.param.fillSplits ? "_splits" + std::to_string(info.param.fillSplits) : "") +
              (info.param.slices > 1 ? "_slices" + std::to_string(info.param.slices) : "");
@@ -202,7 +202,7 @@ INSTANTIATE_TEST_SUITE_P(
 // split the tiles' opaque depth ranges as well as the depth in front of them.
 TEST(LllLists, SlicedListsOfDeepTilesMatchCpuReference) {
   const ListCheck check =
-      checkLists(test::loadSceneWithLights({"atrium", 300}), listSettings("compute", 16, 192, 108, 8));
+      checkLists(test::loadSceneWithLights({"atrium", 300}), listSettings(LllFill::Compute, 16, 192, 108, 8));
   EXPECT_GT(check.mustList, 1000u);
   expectListsHoldEveryLight(check, "atrium, 8 slices");
   EXPECT_GT(check.deepTiles, 10u) << "the atrium should have tiles with deep opaque ranges";
@@ -215,8 +215,8 @@ TEST(LllLists, SlicedListsOfDeepTilesMatchCpuReference) {
 TEST(LllLists, CellsSharedByWorkgroupsLoseNoLight) {
   for (const uint32_t slices : {1u, 4u}) {
     std::vector<std::pair<std::string, double>> stats;
-    const ListCheck check =
-        checkLists(test::awkwardLightsScene(1200), listSettings("compute", 16, 160, 90, slices, 8), &stats);
+    const ListCheck check = checkLists(test::awkwardLightsScene(1200),
+                                       listSettings(LllFill::Compute, 16, 160, 90, slices, 8), &stats);
     double binned = 0.0;
     for (const auto& [name, value] : stats)
       if (name == "bin_entries_used") binned = value;
@@ -237,7 +237,7 @@ TEST(LllLists, FewLightsAreListedWithoutBins) {
     ASSERT_EQ(scene.lights.size(), lights);
     for (const uint32_t slices : {1u, 4u}) {
       std::vector<std::pair<std::string, double>> stats;
-      const ListCheck check = checkLists(scene, listSettings("compute", 8, 160, 90, slices), &stats);
+      const ListCheck check = checkLists(scene, listSettings(LllFill::Compute, 8, 160, 90, slices), &stats);
       double unbinned = -1.0, binned = -1.0;
       for (const auto& [name, value] : stats) {
         if (name == "bins_unbinned") unbinned = value;
@@ -261,8 +261,9 @@ TEST(LllLists, FewLightsAreListedWithoutBins) {
 // every entry, and the lists must still hold every light the reference requires.
 TEST(LllLists, OverflowingBinsGrowAndLoseNoLight) {
   std::vector<std::pair<std::string, double>> stats;
-  const ListCheck check = checkLists(test::awkwardLightsScene(400),
-                                     listSettings("compute", 2, 96, 54, RenderSettings{}.lllSlices), &stats);
+  const ListCheck check =
+      checkLists(test::awkwardLightsScene(400),
+                 listSettings(LllFill::Compute, 2, 96, 54, RenderSettings{}.lllSlices), &stats);
   double overflows = -1.0, used = 0.0, capacity = 0.0;
   for (const auto& [name, value] : stats) {
     if (name == "bin_overflows") overflows = value;
@@ -283,16 +284,17 @@ using ImageCase = test::SceneWithLights;
 // (fill and shading are independent: the lists are the same).
 // Depth-sliced lists (--lll-slices) with the compute fill and with a raster fill.
 struct Variant {
-  const char* fill;
-  const char* shade;
+  LllFill fill;
+  LllShade shade;
   uint32_t slices = 1;
 };
-constexpr Variant kVariants[] = {{"compute", "compute"},     {"ray", "compute"},
-                                 {"shells", "compute"},      {"compute", "fragment"},
-                                 {"compute", "compute", 16}, {"shells", "fragment", 8}};
+constexpr Variant kVariants[] = {
+    {LllFill::Compute, LllShade::Compute},     {LllFill::Ray, LllShade::Compute},
+    {LllFill::Shells, LllShade::Compute},      {LllFill::Compute, LllShade::Fragment},
+    {LllFill::Compute, LllShade::Compute, 16}, {LllFill::Shells, LllShade::Fragment, 8}};
 
 std::string variantName(const Variant& v) {
-  return std::string(v.fill) + "/" + v.shade + (v.slices > 1 ? "/slices" + std::to_string(v.slices) : "");
+  return fmt::format("{}/{}", v.fill, v.shade) + (v.slices > 1 ? "/slices" + std::to_string(v.slices) : "");
 }
 
 class LllImages : public ::testing::TestWithParam<ImageCase> {};
@@ -347,28 +349,28 @@ TEST(LllImages, AwkwardLightsMatchForward) {
 // The atrium at 160x90 through lll with `settings` and a first link pool of one link a tile (far
 // too small: the first frame must overflow), with each of `fills`, against forward; `check` adds
 // a test's own expectations of each render.
-void expectOverflowingPoolMatches(RenderSettings settings, std::initializer_list<const char*> fills,
+void expectOverflowingPoolMatches(RenderSettings settings, std::initializer_list<LllFill> fills,
                                   const std::string& what,
-                                  const std::function<void(const test::Rendered&, const char*)>& check) {
+                                  const std::function<void(const test::Rendered&, LllFill)>& check) {
   const Scene scene = *makeBuiltinScene("atrium");
   settings.width = 160;
   settings.height = 90;
   const test::Rendered reference = test::render(scene, test::reference(settings));
   settings.technique = "lll";
   settings.linksPerTile = 1;
-  for (const char* fill : fills) {
+  for (const LllFill fill : fills) {
     settings.lllFill = fill;
     const test::Rendered lll = test::render(scene, settings);
     EXPECT_GE(lll.frame.rerenders, 1u) << fill;
     check(lll, fill);
-    test::expectWithinBound(lll.ldr, reference.ldr, test::kSameImage,
-                            std::string("lll/") + fill + " " + what);
+    test::expectWithinBound(lll.ldr, reference.ldr, test::kSameImage, fmt::format("lll/{} {}", fill, what));
   }
 }
 
 TEST(LllImages, TinyPoolGrowsAndStillMatches) {
   expectOverflowingPoolMatches(
-      {}, {"compute", "ray", "shells"}, "grown pool", [](const test::Rendered& lll, const char* fill) {
+      {}, {LllFill::Compute, LllFill::Ray, LllFill::Shells}, "grown pool",
+      [](const test::Rendered& lll, LllFill fill) {
         EXPECT_GE(test::stat(lll, "overflows"), 1.0) << fill;
         EXPECT_GE(test::stat(lll, "link_pool_capacity"), test::stat(lll, "links_used")) << fill;
       });
@@ -380,8 +382,9 @@ TEST(LllImages, CompactPoolOutgrownMovesToWideLinksAndStillMatches) {
   // compiled again for that format (kLinkFormat, common/lll_data.glsl).
   RenderSettings settings;
   settings.lllCompactLinkLimit = 128;  // the first pool: 60 tiles x 2 slices
-  expectOverflowingPoolMatches(settings, {"compute", "shells"}, "compact pool moved to wide links",
-                               [](const test::Rendered& lll, const char* fill) {
+  expectOverflowingPoolMatches(settings, {LllFill::Compute, LllFill::Shells},
+                               "compact pool moved to wide links",
+                               [](const test::Rendered& lll, LllFill fill) {
                                  EXPECT_GT(test::stat(lll, "links_used"), 128.0) << fill;
                                  EXPECT_EQ(test::stat(lll, "link_bytes_each"), 16.0) << fill;
                                });
@@ -426,7 +429,7 @@ TEST(LllImages, CompactLinksRefuseTooManyLights) {
   Scene scene = test::awkwardLightsScene(300);
   RenderSettings settings;
   settings.technique = "lll";
-  settings.lllLink = "compact";
+  settings.lllLink = LllLink::Compact;
   settings.width = 32;
   settings.height = 32;
   EXPECT_THROW(Renderer(test::gpuContext(), scene, settings), InputError);

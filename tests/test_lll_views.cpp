@@ -26,7 +26,7 @@ struct ViewRender {
   TileLightLists lists;
 };
 
-ViewRender renderView(const Scene& scene, const std::string& view, const std::string& shade) {
+ViewRender renderView(const Scene& scene, DebugView view, LllShade shade) {
   RenderSettings settings;
   settings.technique = "lll";
   settings.width = 157;  // not a multiple of the tile: the last column and row are partial
@@ -49,10 +49,10 @@ Scene viewScene() {
 // Every pixel of the heatmap shows the length of its tile's list (of its depth slice's, with the
 // default two slices per tile) on the legend's scale (32 = red); the renderer's scale constant is
 // the one the tonemap's legend uses.
-class HeatmapView : public ::testing::TestWithParam<const char*> {};
+class HeatmapView : public ::testing::TestWithParam<LllShade> {};
 
 TEST_P(HeatmapView, ShowsEachTilesListLength) {
-  const ViewRender r = renderView(viewScene(), "heatmap", GetParam());
+  const ViewRender r = renderView(viewScene(), DebugView::Heatmap, GetParam());
   const uint32_t tile = findTechnique("lll").defaultTile;  // renderView's (no --tile)
   uint32_t checked = 0;
   for (uint32_t y = 0; y < r.hdr.height; ++y) {
@@ -79,12 +79,12 @@ TEST_P(HeatmapView, ShowsEachTilesListLength) {
   EXPECT_GT(checked, r.hdr.width * r.hdr.height / 2);
 }
 
-INSTANTIATE_TEST_SUITE_P(Shading, HeatmapView, ::testing::Values("compute", "fragment"));
+INSTANTIATE_TEST_SUITE_P(Shading, HeatmapView, ::testing::Values(LllShade::Compute, LllShade::Fragment));
 
 TEST(LllViews, TilesViewDrawsTheGridOverTheLitImage) {
   const Scene scene = viewScene();
-  for (const char* shade : {"compute", "fragment"}) {
-    const ViewRender r = renderView(scene, "tiles", shade);
+  for (const LllShade shade : {LllShade::Compute, LllShade::Fragment}) {
+    const ViewRender r = renderView(scene, DebugView::Tiles, shade);
     const uint32_t tile = findTechnique("lll").defaultTile;  // renderView's (no --tile)
     uint32_t grid = 0, gridYellow = 0, inside = 0, insideYellow = 0;
     for (uint32_t y = 0; y < r.hdr.height; ++y) {
@@ -111,8 +111,8 @@ TEST(LllViews, TilesViewDrawsTheGridOverTheLitImage) {
 // shows all three states (reached, listed but out of range, unlisted).
 TEST(LllViews, BoundsViewAgreesAcrossShadingPaths) {
   const Scene scene = viewScene();
-  const ViewRender compute = renderView(scene, "bounds", "compute");
-  const ViewRender fragment = renderView(scene, "bounds", "fragment");
+  const ViewRender compute = renderView(scene, DebugView::Bounds, LllShade::Compute);
+  const ViewRender fragment = renderView(scene, DebugView::Bounds, LllShade::Fragment);
   uint32_t differing = 0, grey = 0, coloured = 0;
   for (uint32_t y = 0; y < compute.hdr.height; ++y) {
     for (uint32_t x = 0; x < compute.hdr.width; ++x) {

@@ -128,9 +128,9 @@ TEST(LocalShadowViews, CoverTheLightsReach) {
 
 TEST(LocalShadowOptions, RefusesValuesOutOfRange) {
   RenderSettings s;
-  s.shadows = "all";
+  s.shadows = ShadowMode::All;
   EXPECT_EQ(localShadowOptions(s).lights, s.shadowLights);
-  s.shadows = "sun";
+  s.shadows = ShadowMode::Sun;
   EXPECT_EQ(localShadowOptions(s).lights, 0u) << "only --shadows all shadows local lights";
   s.shadowLights = 5000;
   EXPECT_THROW(localShadowOptions(s), InputError);
@@ -147,15 +147,15 @@ TEST(LocalShadows, MatchForwardInEveryTechnique) {
   RenderSettings settings;
   settings.width = 160;
   settings.height = 90;
-  settings.shadows = "all";
+  settings.shadows = ShadowMode::All;
   settings.shadowLights = 16;
   const test::Rendered onGbuffer = test::render(scene, test::reference(settings));
   EXPECT_EQ(test::stat(onGbuffer, "light-shadows"), 16.0);
   RenderSettings visibility = test::reference(settings);
-  visibility.surfaces = "visibility";
+  visibility.surfaces = SurfaceSource::Visibility;
   const test::Rendered onVisibility = test::render(scene, visibility);
   RenderSettings unshadowed = test::reference(settings);
-  unshadowed.shadows = "sun";
+  unshadowed.shadows = ShadowMode::Sun;
   EXPECT_LT(test::psnr(test::render(scene, unshadowed).ldr, onGbuffer.ldr), 40.0) << "no shadow in view";
   for (const char* technique : {"lll", "tiled", "clustered", "deferred", "prepass"}) {
     settings.technique = technique;
@@ -170,7 +170,7 @@ TEST(LocalShadows, MatchForwardInEveryTechnique) {
 // particle), per pixel and once per particle.
 TEST(LocalShadows, ShadowTheSmokeAsForwardDoes) {
   RenderSettings settings;
-  settings.shadows = "all";
+  settings.shadows = ShadowMode::All;
   settings.shadowLights = 16;
   test::expectSmokeLitAsForward(loadScene(SceneRequest{"atrium", 0, 1}), settings, "light-shadowed smoke");
 }
@@ -185,12 +185,12 @@ TEST(LocalShadows, ComputeRasterizedShadowsMatchTheHardwares) {
     settings.width = 160;
     settings.height = 90;
     settings.technique = "lll";
-    settings.shadows = "all";
+    settings.shadows = ShadowMode::All;
     settings.shadowLights = 16;
     settings.shadowLightResolution = texels;
-    settings.shadowRaster = "hardware";
+    settings.shadowRaster = RasterChoice::Hardware;
     const test::Rendered hardware = test::render(scene, settings);
-    settings.shadowRaster = "compute";
+    settings.shadowRaster = RasterChoice::Compute;
     const test::Rendered compute = test::render(scene, settings);
     EXPECT_EQ(test::stat(compute, "light-shadow-compute-raster"), 1.0);
     test::expectWithinBound(compute.ldr, hardware.ldr, test::kSameImage,
@@ -222,7 +222,7 @@ TEST(LocalShadows, ThreeHundredSpotsShadowTheRight64) {
   settings.width = 96;
   settings.height = 54;
   settings.technique = "lll";
-  settings.shadows = "all";
+  settings.shadows = ShadowMode::All;
   settings.shadowLights = 64;
   Context& context = test::gpuContext();
   const size_t before = context.validationMessages().size();
@@ -244,7 +244,7 @@ TEST(LocalShadows, AnAtlasTooLargeForTheDeviceIsRefused) {
   RenderSettings settings;
   settings.width = 64;
   settings.height = 36;
-  settings.shadows = "all";
+  settings.shadows = ShadowMode::All;
   settings.shadowLights = 1024;
   settings.shadowLightResolution = 4096;
   const std::string message = test::refusalOf(scene, settings);  // a 40 GiB atlas

@@ -23,7 +23,7 @@ constexpr uint32_t kMaxSlots = gpu::kMaxLights;
 
 // The Cornell room with three random lights that orbit (seed 5), placed where they are at `seconds`;
 // with `gi` (vpl, vpl-only) the VPLs of 20,000 photons merged to 512 follow them.
-SceneRequest movingCornellRequest(float seconds, const std::string& gi = "none") {
+SceneRequest movingCornellRequest(float seconds, GiMode gi = GiMode::None) {
   SceneRequest request{"cornell"};
   request.extraLights = 3;
   request.seed = 5;
@@ -161,7 +161,7 @@ TEST(MovingVpls, FullSlotsAreCountedNotOverrun) {
 
 // The bench moves its lights in a copy of a cached scene: the copy's VPLs move, the original's stay.
 TEST(MovingVpls, ACopyOfTheSceneMovesOnItsOwn) {
-  const Scene original = loadScene(movingCornellRequest(0.0f, "vpl"));
+  const Scene original = loadScene(movingCornellRequest(0.0f, GiMode::Vpl));
   ASSERT_TRUE(original.movingIndirect);
   Scene copy = original;
   ASSERT_TRUE(copy.movingIndirect);
@@ -177,7 +177,7 @@ TEST(MovingVpls, ACopyOfTheSceneMovesOnItsOwn) {
 // Through the renderer: after moveLightsTo the image is the one of a scene that simply holds the
 // moved lights, and it is not the first frame's.
 TEST(MovingVpls, TheRendererDrawsTheVplsThatMoved) {
-  SceneRequest request = movingCornellRequest(0.0f, "vpl-only");
+  SceneRequest request = movingCornellRequest(0.0f, GiMode::VplOnly);
   request.gi.retrace = 1u << 20;
   Scene scene = loadScene(request);
   ASSERT_TRUE(scene.movingIndirect);

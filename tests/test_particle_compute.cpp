@@ -29,7 +29,7 @@ constexpr ImageBound kAtlasBound{45.0, 4, 0.99, 24};
 
 struct ComputeCase {
   const char* preset;
-  const char* lighting;
+  ParticleLighting lighting;
   const char* technique;
 };
 
@@ -37,8 +37,8 @@ void PrintTo(const ComputeCase& c, std::ostream* os) {
   *os << c.preset << " " << c.lighting << " " << c.technique;
 }
 
-ParticleFrame renderWith(const ComputeCase& c, const char* render, uint32_t width, uint32_t height,
-                         uint32_t count, const char* resolution = "full") {
+ParticleFrame renderWith(const ComputeCase& c, ParticleRender render, uint32_t width, uint32_t height,
+                         uint32_t count, ParticleResolution resolution = ParticleResolution::Full) {
   static const Scene scene = loadScene(SceneRequest{"atrium", 0, 1});
   RenderSettings settings = settingsFor(c.technique, width, height);
   settings.particles = c.preset;
@@ -54,39 +54,41 @@ class ComputeMatchesRaster : public ::testing::TestWithParam<ComputeCase> {};
 // 160 x 90: ten by six tiles, the last row cut at 10 of 16 pixels.
 TEST_P(ComputeMatchesRaster, SameParticlesSameImage) {
   const ComputeCase c = GetParam();
-  const ParticleFrame raster = renderWith(c, "raster", 160, 90, 1024);
-  const ParticleFrame compute = renderWith(c, "compute", 160, 90, 1024);
+  const ParticleFrame raster = renderWith(c, ParticleRender::Raster, 160, 90, 1024);
+  const ParticleFrame compute = renderWith(c, ParticleRender::Compute, 160, 90, 1024);
   EXPECT_EQ(stat(raster.image, "particle_render_compute"), 0.0);
   EXPECT_EQ(stat(compute.image, "particle_render_compute"), 1.0);
   EXPECT_GT(compute.counters.dispatch.w, 100u);
   EXPECT_EQ(compute.counters.dispatch.w, raster.counters.dispatch.w);
   EXPECT_GT(stat(compute.image, "particle_tile_entries_used"), double(compute.counters.dispatch.w) / 2);
-  test::expectWithinBound(
-      compute.image.ldr, raster.image.ldr, test::kSmokeBound,
-      std::string("compute particles ") + c.preset + " " + c.lighting + "-lit " + c.technique);
+  test::expectWithinBound(compute.image.ldr, raster.image.ldr, test::kSmokeBound,
+                          fmt::format("compute particles {} {}-lit {}", c.preset, c.lighting, c.technique));
   // The particles are in the picture: the scene without them differs.
   static const Scene scene = loadScene(SceneRequest{"atrium", 0, 1});
   const test::Rendered clear = test::render(scene, settingsFor(c.technique, 160, 90));
   EXPECT_LT(test::psnr(clear.ldr, compute.image.ldr), 55.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    PresetsAndLightings, ComputeMatchesRaster,
-    ::testing::Values(ComputeCase{"smoke", "pixel", "lll"}, ComputeCase{"smoke", "vertex", "lll"},
-                      ComputeCase{"smoke", "atlas", "lll"}, ComputeCase{"smoke", "pixel", "forward"},
-                      ComputeCase{"sparks", "pixel", "lll"}, ComputeCase{"dust", "pixel", "lll"}),
-    [](const auto& info) {
-      return std::string(info.param.preset) + "_" + info.param.lighting + "_" + info.param.technique;
-    });
+INSTANTIATE_TEST_SUITE_P(PresetsAndLightings, ComputeMatchesRaster,
+                         ::testing::Values(ComputeCase{"smoke", ParticleLighting::Pixel, "lll"},
+                                           ComputeCase{"smoke", ParticleLighting::Vertex, "lll"},
+                                           ComputeCase{"smoke", ParticleLighting::Atlas, "lll"},
+                                           ComputeCase{"smoke", ParticleLighting::Pixel, "forward"},
+                                           ComputeCase{"sparks", ParticleLighting::Pixel, "lll"},
+                                           ComputeCase{"dust", ParticleLighting::Pixel, "lll"}),
+                         [](const auto& info) {
+                           return fmt::format("{}_{}_{}", info.param.preset, info.param.lighting,
+                                              info.param.technique);
+                         });
 
 // 40,000 puffs on 64 x 36 pixels (four by three tiles): each tile's list is cut in slabs of the
 // draw order, a slab holds more particles than the shared sort takes (they are marked in a bitmap
 // of the slab's keys and read back in order), and the first frame's entry array (64 a tile, or one
 // a particle) is too small, so the frame is drawn again with a larger one.
 TEST(ComputeParticles, CrowdedTilesAndAGrownEntryArray) {
-  const ComputeCase c{"smoke", "vertex", "lll"};
-  const ParticleFrame raster = renderWith(c, "raster", 64, 36, 40000);
-  const ParticleFrame compute = renderWith(c, "compute", 64, 36, 40000);
+  const ComputeCase c{"smoke", ParticleLighting::Vertex, "lll"};
+  const ParticleFrame raster = renderWith(c, ParticleRender::Raster, 64, 36, 40000);
+  const ParticleFrame compute = renderWith(c, ParticleRender::Compute, 64, 36, 40000);
   EXPECT_EQ(stat(compute.image, "particle_tile_slabs"),
             double(std::bit_ceil(40000u / gpu::kParticlesPerSlab)));
   EXPECT_GT(stat(compute.image, "particle_tile_slabs"), 1.0);
@@ -108,9 +110,9 @@ TEST(ComputeParticles, CrowdedTilesAndAGrownEntryArray) {
 // 40,000 puffs at 320 x 180 make 20 x 12 tiles of 8 slabs, 1,920 cells in two blocks, and the
 // second block's cells start where the first block's end.
 TEST(ComputeParticles, TheCellsAreSummedInBlocks) {
-  const ComputeCase c{"smoke", "vertex", "lll"};
-  const ParticleFrame raster = renderWith(c, "raster", 320, 180, 40000);
-  const ParticleFrame compute = renderWith(c, "compute", 320, 180, 40000);
+  const ComputeCase c{"smoke", ParticleLighting::Vertex, "lll"};
+  const ParticleFrame raster = renderWith(c, ParticleRender::Raster, 320, 180, 40000);
+  const ParticleFrame compute = renderWith(c, ParticleRender::Compute, 320, 180, 40000);
   const double tiles =
       double(divideRoundingUp(320u, gpu::kParticleTileSize) * divideRoundingUp(180u, gpu::kParticleTileSize));
   const double cells = stat(compute.image, "particle_tile_slabs") * tiles;
@@ -122,9 +124,12 @@ TEST(ComputeParticles, TheCellsAreSummedInBlocks) {
 // The light atlas (4 x 4 texels a particle, interpolated) against lighting every pixel: the same
 // lights, sampled coarsely across each puff. The bound is what it costs (lavapipe and the H200).
 TEST(ComputeParticles, AtlasLightingIsCloseToPixelLighting) {
-  const ParticleFrame pixel = renderWith(ComputeCase{"smoke", "pixel", "lll"}, "compute", 160, 90, 1024);
-  const ParticleFrame atlas = renderWith(ComputeCase{"smoke", "atlas", "lll"}, "compute", 160, 90, 1024);
-  const ParticleFrame vertex = renderWith(ComputeCase{"smoke", "vertex", "lll"}, "compute", 160, 90, 1024);
+  const ParticleFrame pixel = renderWith(ComputeCase{"smoke", ParticleLighting::Pixel, "lll"},
+                                         ParticleRender::Compute, 160, 90, 1024);
+  const ParticleFrame atlas = renderWith(ComputeCase{"smoke", ParticleLighting::Atlas, "lll"},
+                                         ParticleRender::Compute, 160, 90, 1024);
+  const ParticleFrame vertex = renderWith(ComputeCase{"smoke", ParticleLighting::Vertex, "lll"},
+                                          ParticleRender::Compute, 160, 90, 1024);
   const ImageDifference a =
       test::expectWithinBound(atlas.image.ldr, pixel.image.ldr, kAtlasBound, "atlas vs pixel lighting");
   const ImageDifference v = compareImages(vertex.image.ldr, pixel.image.ldr);
@@ -135,10 +140,11 @@ TEST(ComputeParticles, AtlasLightingIsCloseToPixelLighting) {
 // Half and quarter resolution against full: the same particles blended on 2 x 2 and 4 x 4 blocks
 // and upsampled with the depth. The bounds are what they cost (lavapipe and the H200).
 TEST(ComputeParticles, HalfAndQuarterResolutionAgainstFull) {
-  const ComputeCase c{"smoke", "atlas", "lll"};
-  const ParticleFrame full = renderWith(c, "compute", 320, 180, 1024);
-  const ParticleFrame half = renderWith(c, "compute", 320, 180, 1024, "half");
-  const ParticleFrame quarter = renderWith(c, "compute", 320, 180, 1024, "quarter");
+  const ComputeCase c{"smoke", ParticleLighting::Atlas, "lll"};
+  const ParticleFrame full = renderWith(c, ParticleRender::Compute, 320, 180, 1024);
+  const ParticleFrame half = renderWith(c, ParticleRender::Compute, 320, 180, 1024, ParticleResolution::Half);
+  const ParticleFrame quarter =
+      renderWith(c, ParticleRender::Compute, 320, 180, 1024, ParticleResolution::Quarter);
   EXPECT_EQ(stat(half.image, "particle_resolution_scale"), 2.0);
   EXPECT_EQ(stat(quarter.image, "particle_resolution_scale"), 4.0);
   const ImageDifference h =
@@ -156,9 +162,9 @@ TEST(ComputeParticles, SlabsSharedOutToSeveralWorkgroups) {
   RenderSettings settings = settingsFor("lll", 128, 72);
   settings.particles = "smoke";
   settings.particleCount = 40000;
-  settings.particleLighting = "vertex";
-  settings.particleRender = "compute";
-  settings.particleResolution = "half";
+  settings.particleLighting = ParticleLighting::Vertex;
+  settings.particleRender = ParticleRender::Compute;
+  settings.particleResolution = ParticleResolution::Half;
   const ParticleFrame many = renderParticles(scene, settings, kSmokeSteps);
   settings.particleTileGroups = 1;
   const ParticleFrame one = renderParticles(scene, settings, kSmokeSteps);
@@ -178,8 +184,8 @@ TEST(ComputeParticles, SparseTilesUseOneGroup) {
   RenderSettings settings = settingsFor("lll", 160, 90);
   settings.particles = "dust";
   settings.particleCount = 16384;  // four slabs: one a group
-  settings.particleLighting = "vertex";
-  settings.particleRender = "compute";
+  settings.particleLighting = ParticleLighting::Vertex;
+  settings.particleRender = ParticleRender::Compute;
   settings.particleTileGroups = 4;
   const ParticleFrame many = renderParticles(scene, settings, kSmokeSteps);
   settings.particleTileGroups = 1;
@@ -210,9 +216,9 @@ TEST(ComputeParticles, GroupsBehindAnOpaqueTileStop) {
   RenderSettings settings = settingsFor("lll", 128, 72);
   settings.camera = "0,1.5,4,0,1.5,0";
   settings.particles = writePreset(fog, "opaque-fog");
-  settings.particleLighting = "vertex";
-  settings.particleRender = "compute";
-  settings.particleResolution = "half";
+  settings.particleLighting = ParticleLighting::Vertex;
+  settings.particleRender = ParticleRender::Compute;
+  settings.particleResolution = ParticleResolution::Half;
   settings.particleTileGroups = 4;  // a group per slab
   const ParticleFrame many = renderParticles(scene, settings, 60);
   settings.particleTileGroups = 1;
@@ -235,10 +241,10 @@ TEST(ComputeParticles, AMillionSlotsTwoStepsInDrawAFrame) {
   RenderSettings settings = settingsFor("lll", 128, 72);
   settings.particles = "smoke";
   settings.particleCount = gpu::kMaxParticles;
-  settings.particleLighting = "vertex";
-  settings.particleRender = "raster";
+  settings.particleLighting = ParticleLighting::Vertex;
+  settings.particleRender = ParticleRender::Raster;
   const ParticleFrame raster = renderParticles(scene, settings, 2);
-  settings.particleRender = "compute";
+  settings.particleRender = ParticleRender::Compute;
   const ParticleFrame compute = renderParticles(scene, settings, 2);
   EXPECT_EQ(raster.particles.size(), size_t(gpu::kMaxParticles));
   EXPECT_GT(compute.counters.dispatch.w, 1000u);  // a million / 6 s spawned a second, for 1/30 s
@@ -252,9 +258,9 @@ TEST(ComputeParticles, AMillionSlotsTwoStepsInDrawAFrame) {
 // a GPU the sum over a list can round differently from run to run (the H200 showed it), as every
 // lll-lit pixel can.
 TEST(ComputeParticles, ASeedGivesTheSameImageTwice) {
-  const ComputeCase c{"smoke", "pixel", "forward"};
-  const ParticleFrame a = renderWith(c, "compute", 96, 54, 1024);
-  const ParticleFrame b = renderWith(c, "compute", 96, 54, 1024);
+  const ComputeCase c{"smoke", ParticleLighting::Pixel, "forward"};
+  const ParticleFrame a = renderWith(c, ParticleRender::Compute, 96, 54, 1024);
+  const ParticleFrame b = renderWith(c, ParticleRender::Compute, 96, 54, 1024);
   ASSERT_EQ(a.image.hdr.rgba.size(), b.image.hdr.rgba.size());
   EXPECT_EQ(
       std::memcmp(a.image.hdr.rgba.data(), b.image.hdr.rgba.data(), a.image.hdr.rgba.size() * sizeof(float)),

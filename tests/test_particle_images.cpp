@@ -24,7 +24,7 @@ using namespace test;
 
 struct LightingCase {
   const char* technique;
-  const char* lighting;
+  ParticleLighting lighting;
 };
 
 void PrintTo(const LightingCase& c, std::ostream* os) {
@@ -87,16 +87,18 @@ TEST_P(ParticleLightingTest, RedLightTintsOnlyTheParticlesInItsRange) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TechniquesAndLightings, ParticleLightingTest,
-                         ::testing::Values(LightingCase{"forward", "pixel"},
-                                           LightingCase{"forward", "vertex"}, LightingCase{"lll", "pixel"},
-                                           LightingCase{"lll", "vertex"}, LightingCase{"lll", "atlas"}),
+                         ::testing::Values(LightingCase{"forward", ParticleLighting::Pixel},
+                                           LightingCase{"forward", ParticleLighting::Vertex},
+                                           LightingCase{"lll", ParticleLighting::Pixel},
+                                           LightingCase{"lll", ParticleLighting::Vertex},
+                                           LightingCase{"lll", ParticleLighting::Atlas}),
                          [](const auto& info) {
-                           return std::string(info.param.technique) + "_" + info.param.lighting;
+                           return fmt::format("{}_{}", info.param.technique, info.param.lighting);
                          });
 
 // The default scene's smoke plume 5 s after it started (its puffs live 5 to 8 s), 1,024 particles,
 // small enough for lavapipe. Forward is the reference: on the geometry (test::reference).
-ParticleFrame smokeFrame(const std::string& technique, const std::string& lighting) {
+ParticleFrame smokeFrame(const std::string& technique, ParticleLighting lighting) {
   static const Scene scene = loadScene(SceneRequest{"atrium", 0, 1});
   RenderSettings settings = settingsFor(technique, 128, 72);
   if (technique == "forward") settings = test::reference(settings);
@@ -106,7 +108,7 @@ ParticleFrame smokeFrame(const std::string& technique, const std::string& lighti
   return renderParticles(scene, settings, kSmokeSteps);
 }
 
-class SmokeMatchesForward : public ::testing::TestWithParam<const char*> {};
+class SmokeMatchesForward : public ::testing::TestWithParam<ParticleLighting> {};
 
 // The light lists (lll) and the light grids (tiled, clustered: smoke in front of the opaque
 // surfaces walks their front slice) light the smoke as every light does.
@@ -116,7 +118,7 @@ TEST_P(SmokeMatchesForward, InLllTiledAndClustered) {
   for (const char* technique : {"lll", "tiled", "clustered"}) {
     const ParticleFrame frame = smokeFrame(technique, GetParam());
     test::expectWithinBound(frame.image.ldr, forward.image.ldr, test::kSmokeBound,
-                            std::string(technique) + " smoke " + GetParam() + "-lit");
+                            fmt::format("{} smoke {}-lit", technique, GetParam()));
   }
   // The smoke is really in the picture: forward without it differs.
   RenderSettings clear = settingsFor("forward", 128, 72);
@@ -124,8 +126,9 @@ TEST_P(SmokeMatchesForward, InLllTiledAndClustered) {
   EXPECT_LT(test::psnr(noSmoke.ldr, forward.image.ldr), 30.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Lightings, SmokeMatchesForward, ::testing::Values("pixel", "vertex"),
-                         [](const auto& info) { return std::string(info.param); });
+INSTANTIATE_TEST_SUITE_P(Lightings, SmokeMatchesForward,
+                         ::testing::Values(ParticleLighting::Pixel, ParticleLighting::Vertex),
+                         [](const auto& info) { return std::string(nameOf(info.param)); });
 
 double totalLuminance(const HdrImage& image) {
   double sum = 0.0;
@@ -135,9 +138,9 @@ double totalLuminance(const HdrImage& image) {
 }
 
 TEST(SmokeInOtherTechniques, DeferredAndPrepassLightItForwardDeferredUnlitLeavesItDark) {
-  const ParticleFrame forward = smokeFrame("forward", "pixel");
-  const ParticleFrame deferred = smokeFrame("deferred", "pixel");
-  const ParticleFrame prepass = smokeFrame("prepass", "pixel");
+  const ParticleFrame forward = smokeFrame("forward", ParticleLighting::Pixel);
+  const ParticleFrame deferred = smokeFrame("deferred", ParticleLighting::Pixel);
+  const ParticleFrame prepass = smokeFrame("prepass", ParticleLighting::Pixel);
   test::expectWithinBound(deferred.image.ldr, forward.image.ldr, test::kSmokeBound,
                           "deferred smoke pixel-lit");
   test::expectWithinBound(prepass.image.ldr, forward.image.ldr, test::kPrepassBound,
@@ -146,7 +149,7 @@ TEST(SmokeInOtherTechniques, DeferredAndPrepassLightItForwardDeferredUnlitLeaves
   RenderSettings settings = settingsFor("deferred", 128, 72);
   settings.particles = "smoke";
   settings.particleCount = 1024;
-  settings.deferredTranslucent = "unlit";
+  settings.deferredTranslucent = TranslucentLighting::Unlit;
   const ParticleFrame unlit = renderParticles(scene, settings, kSmokeSteps);
   // Unlit smoke covers the lit scene with grey-black (the seeds' Figure 1.1).
   EXPECT_LT(totalLuminance(unlit.image.hdr), 0.9 * totalLuminance(forward.image.hdr));
@@ -260,10 +263,11 @@ TEST(GlassAndParticles, AParticleBehindAPaneIsSeenThroughIt) {
   const std::string presetPath = writePreset(preset, "behind-pane");
   struct Case {
     const char* technique;
-    const char* render;
+    ParticleRender render;
   };
-  for (const Case c : {Case{"forward", "raster"}, Case{"forward", "compute"}, Case{"lll", "compute"}}) {
-    SCOPED_TRACE(std::string(c.technique) + " " + c.render);
+  for (const Case c : {Case{"forward", ParticleRender::Raster}, Case{"forward", ParticleRender::Compute},
+                       Case{"lll", ParticleRender::Compute}}) {
+    SCOPED_TRACE(fmt::format("{} {}", c.technique, c.render));
     RenderSettings settings = settingsFor(c.technique, 160, 90);
     const Rendered withoutPuff[2] = {render(paneScene(false), settings), render(paneScene(true), settings)};
     settings.particles = presetPath;
@@ -301,8 +305,8 @@ TEST(GlassAndParticles, GroupsMergedOnBothSidesOfThePane) {
   RenderSettings settings = settingsFor("lll", 160, 90);
   settings.particles = writePreset(preset, "through-pane");
   settings.particleEmitter = "0,0,1";  // the sphere about the pane
-  settings.particleRender = "compute";
-  settings.particleResolution = "half";
+  settings.particleRender = ParticleRender::Compute;
+  settings.particleResolution = ParticleResolution::Half;
   settings.particleTileGroups = 4;
   const ParticleFrame many = renderParticles(paneScene(true), settings, 50);
   settings.particleTileGroups = 1;

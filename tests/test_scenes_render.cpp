@@ -49,19 +49,20 @@ const Scene& sceneFor(const SceneCase& c) {
 struct TechniqueCase {
   const char* name;
   const char* technique;
-  const char* lllShade;
-  const char* surfaces;
+  LllShade lllShade;
+  SurfaceSource surfaces;
 };
-constexpr TechniqueCase kTechniques[] = {{"forward", "forward", "compute", "visibility"},
-                                         {"forward_gbuffer", "forward", "compute", "gbuffer"},
-                                         {"lll", "lll", "compute", "visibility"},
-                                         {"lll_gbuffer", "lll", "compute", "gbuffer"},
-                                         {"lll_fragment", "lll", "fragment", "visibility"},
-                                         {"deferred", "deferred", "compute", "visibility"},
-                                         {"prepass", "prepass", "compute", "visibility"},
-                                         {"tiled", "tiled", "compute", "visibility"},
-                                         {"clustered", "clustered", "compute", "visibility"},
-                                         {"clustered_gbuffer", "clustered", "compute", "gbuffer"}};
+constexpr TechniqueCase kTechniques[] = {
+    {"forward", "forward", LllShade::Compute, SurfaceSource::Visibility},
+    {"forward_gbuffer", "forward", LllShade::Compute, SurfaceSource::Gbuffer},
+    {"lll", "lll", LllShade::Compute, SurfaceSource::Visibility},
+    {"lll_gbuffer", "lll", LllShade::Compute, SurfaceSource::Gbuffer},
+    {"lll_fragment", "lll", LllShade::Fragment, SurfaceSource::Visibility},
+    {"deferred", "deferred", LllShade::Compute, SurfaceSource::Visibility},
+    {"prepass", "prepass", LllShade::Compute, SurfaceSource::Visibility},
+    {"tiled", "tiled", LllShade::Compute, SurfaceSource::Visibility},
+    {"clustered", "clustered", LllShade::Compute, SurfaceSource::Visibility},
+    {"clustered_gbuffer", "clustered", LllShade::Compute, SurfaceSource::Gbuffer}};
 
 void PrintTo(const TechniqueCase& t, std::ostream* os) {
   *os << t.name;
@@ -174,7 +175,7 @@ TEST(DeviceLimits, SurfaceRebuildRefusesMoreVerticesThanAStorageBufferHolds) {
   const std::string message = test::refusalOf(scene, settings);
   EXPECT_NE(message.find(std::to_string(fit + 1) + " vertices"), std::string::npos) << message;
   EXPECT_NE(message.find("--surfaces gbuffer"), std::string::npos) << message;
-  settings.surfaces = "gbuffer";
+  settings.surfaces = SurfaceSource::Gbuffer;
   EXPECT_GT(test::shareAboveBlack(test::render(scene, settings).ldr), 0.1);
 }
 
@@ -210,9 +211,9 @@ TEST(TexturedAssets, DataTexturesRenderThroughTheVisibilityBuffer) {
   settings.camera = "0.5,0.5,0.85,0.5,0.5,0";  // the quad fills the view
   for (const char* technique : {"forward", "lll", "deferred"}) {
     settings.technique = technique;
-    settings.surfaces = "visibility";
+    settings.surfaces = SurfaceSource::Visibility;
     const test::Rendered visibility = test::render(scene, settings);
-    settings.surfaces = "gbuffer";
+    settings.surfaces = SurfaceSource::Gbuffer;
     const test::Rendered gbuffer = test::render(scene, settings);
     test::expectWithinBound(visibility.ldr, gbuffer.ldr, test::kSameImage,
                             std::string("data textures, visibility vs gbuffer, ") + technique);

@@ -71,9 +71,9 @@ Context& unvalidatedContext() {
 struct SoakCase {
   const char* name;
   const char* technique;
-  const char* lllFill;
-  const char* lllShade;
-  const char* particleLighting;
+  LllFill lllFill;
+  LllShade lllShade;
+  ParticleLighting particleLighting;
 };
 
 class Soak : public ::testing::TestWithParam<SoakCase> {};
@@ -130,14 +130,16 @@ TEST_P(Soak, MemoryStaysFlatOverFrames) {
   EXPECT_LE(atEnd - atWarmup, kAllowedGrowthMiB);
 }
 
-INSTANTIATE_TEST_SUITE_P(Techniques, Soak,
-                         ::testing::Values(SoakCase{"forward", "forward", "compute", "compute", "pixel"},
-                                           SoakCase{"lll", "lll", "compute", "compute", "pixel"},
-                                           SoakCase{"lll_ray_fragment_vertexlit", "lll", "ray", "fragment",
-                                                    "vertex"},
-                                           SoakCase{"deferred", "deferred", "compute", "compute", "pixel"},
-                                           SoakCase{"prepass", "prepass", "compute", "compute", "pixel"}),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Techniques, Soak,
+    ::testing::Values(
+        SoakCase{"forward", "forward", LllFill::Compute, LllShade::Compute, ParticleLighting::Pixel},
+        SoakCase{"lll", "lll", LllFill::Compute, LllShade::Compute, ParticleLighting::Pixel},
+        SoakCase{"lll_ray_fragment_vertexlit", "lll", LllFill::Ray, LllShade::Fragment,
+                 ParticleLighting::Vertex},
+        SoakCase{"deferred", "deferred", LllFill::Compute, LllShade::Compute, ParticleLighting::Pixel},
+        SoakCase{"prepass", "prepass", LllFill::Compute, LllShade::Compute, ParticleLighting::Pixel}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace lll

@@ -60,10 +60,10 @@ TEST(Sun, ShadowsMatchForwardInEveryTechnique) {
   settings.height = 90;
   const test::Rendered onGbuffer = test::render(scene, test::reference(settings));
   RenderSettings visibility = test::reference(settings);
-  visibility.surfaces = "visibility";
+  visibility.surfaces = SurfaceSource::Visibility;
   const test::Rendered onVisibility = test::render(scene, visibility);
   RenderSettings unshadowed = test::reference(settings);
-  unshadowed.shadows = "none";
+  unshadowed.shadows = ShadowMode::None;
   EXPECT_LT(test::psnr(test::render(scene, unshadowed).ldr, onGbuffer.ldr), 30.0) << "no shadow in view";
   for (const char* technique : {"lll", "tiled", "clustered", "deferred", "prepass"}) {
     settings.technique = technique;
@@ -74,7 +74,7 @@ TEST(Sun, ShadowsMatchForwardInEveryTechnique) {
                             bound, std::string("sun-shadowed atrium ") + technique);
   }
   settings.technique = "lll";
-  settings.surfaces = "gbuffer";
+  settings.surfaces = SurfaceSource::Gbuffer;
   test::expectWithinBound(test::render(scene, settings).ldr, onGbuffer.ldr, test::kSameImage,
                           "sun-shadowed atrium lll on the raster G-buffer");
 }
@@ -88,9 +88,9 @@ TEST(Sun, ComputeRasterizedShadowsMatchTheHardwares) {
   settings.height = 90;
   settings.technique = "lll";
   settings.shadowResolution = 512;
-  settings.shadowRaster = "hardware";
+  settings.shadowRaster = RasterChoice::Hardware;
   const test::Rendered hardware = test::render(scene, settings);
-  settings.shadowRaster = "compute";
+  settings.shadowRaster = RasterChoice::Compute;
   test::expectWithinBound(test::render(scene, settings).ldr, hardware.ldr, test::kSameImage,
                           "sun shadow drawn in compute");
 }

@@ -111,14 +111,12 @@ TEST(SunShadowCascades, BadOptionsAreRefusedByName) {
       EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
     }
   };
-  refused([](RenderSettings& s) { s.shadows = "every"; }, "--shadows");
   refused([](RenderSettings& s) { s.cascades = 0; }, "--cascades");
   refused([](RenderSettings& s) { s.cascades = gpu::kMaxCascades + 1; }, "--cascades");
   refused([](RenderSettings& s) { s.shadowResolution = 8; }, "--shadow-resolution");
   refused([](RenderSettings& s) { s.shadowResolution = 100000; }, "--shadow-resolution");
-  refused([](RenderSettings& s) { s.shadowFilter = "vsm"; }, "--shadow-filter");
   RenderSettings none;
-  none.shadows = "none";
+  none.shadows = ShadowMode::None;
   EXPECT_EQ(sunShadowOptions(none).cascades, 0u);
 }
 

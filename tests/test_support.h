@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <ostream>
 #include <string>
 
 #include "core/errors.h"
@@ -17,6 +18,16 @@
 #include "render/renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_source.h"
+
+namespace lll {
+
+// An option's name in a test's failure message (EXPECT_... << LllFill::Ray) and a parameter's name.
+template <NamedEnum E>
+std::ostream& operator<<(std::ostream& out, E value) {
+  return out << nameOf(value);
+}
+
+}  // namespace lll
 
 namespace lll::test {
 
@@ -87,7 +98,7 @@ inline std::string refusalOf(const Scene& scene, const RenderSettings& settings)
 // default: depth order; test_glass.cpp checks it against the geometry pass's).
 inline RenderSettings reference(RenderSettings settings) {
   settings.technique = "forward";
-  settings.surfaces = "gbuffer";
+  settings.surfaces = SurfaceSource::Gbuffer;
   return settings;
 }
 

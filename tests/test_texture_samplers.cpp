@@ -23,11 +23,11 @@ constexpr uint32_t kWidth = 160, kHeight = 90;
 struct Path {
   const char* name;
   const char* technique;
-  const char* surfaces;
+  SurfaceSource surfaces;
 };
-constexpr Path kPaths[] = {{"forward fragment", "forward", "gbuffer"},
-                           {"lll visibility", "lll", "visibility"},
-                           {"deferred visibility", "deferred", "visibility"}};
+constexpr Path kPaths[] = {{"forward fragment", "forward", SurfaceSource::Gbuffer},
+                           {"lll visibility", "lll", SurfaceSource::Visibility},
+                           {"deferred visibility", "deferred", SurfaceSource::Visibility}};
 
 // One emissive quad, 2 wide and 1 high at distance 2, texture coordinates u from `u0` to `u1`
 // left to right and v from 0 to `vSize` top to bottom, lit by nothing else.

@@ -174,17 +174,18 @@ constexpr uint32_t kAllSlots = (1u << kTextureSlots) - 1;
 struct Path {
   const char* name;
   const char* technique;
-  const char* surfaces;
-  const char* raster;
+  SurfaceSource surfaces;
+  RasterChoice raster;
 };
-constexpr Path kPaths[] = {{"forward", "forward", "gbuffer", "hardware"},
-                           {"forward visibility", "forward", "visibility", "hardware"},
-                           {"lll visibility", "lll", "visibility", "hardware"},
-                           {"lll compute raster", "lll", "visibility", "compute"},
-                           {"lll fragment", "lll", "gbuffer", "hardware"},
-                           {"deferred", "deferred", "visibility", "hardware"},
-                           {"prepass", "prepass", "gbuffer", "hardware"},
-                           {"tiled", "tiled", "visibility", "hardware"}};
+constexpr Path kPaths[] = {
+    {"forward", "forward", SurfaceSource::Gbuffer, RasterChoice::Hardware},
+    {"forward visibility", "forward", SurfaceSource::Visibility, RasterChoice::Hardware},
+    {"lll visibility", "lll", SurfaceSource::Visibility, RasterChoice::Hardware},
+    {"lll compute raster", "lll", SurfaceSource::Visibility, RasterChoice::Compute},
+    {"lll fragment", "lll", SurfaceSource::Gbuffer, RasterChoice::Hardware},
+    {"deferred", "deferred", SurfaceSource::Visibility, RasterChoice::Hardware},
+    {"prepass", "prepass", SurfaceSource::Gbuffer, RasterChoice::Hardware},
+    {"tiled", "tiled", SurfaceSource::Visibility, RasterChoice::Hardware}};
 
 // `a` and `b` draw the same image through every path (the last bits: the same texture
 // coordinates or colours, one computed in a shader and one on the CPU).

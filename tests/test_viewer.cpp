@@ -125,6 +125,7 @@ TEST(InputScript, NamesTheFileAndLineOfABadEvent) {
       {"x key w down\n", "expected a frame number"},
       {"0 resize 0 10\n", "sizes must be 1 to 8192"},
       {"0 set colour red\n", "set 'colour'"},
+      {"0 set debug-view heat\n", "s.txt:1: set debug-view 'heat': expected none, heatmap, bounds or tiles"},
       {"0 key w sideways\n", "expected down or up"},
   };
   for (const auto& [text, message] : bad) {

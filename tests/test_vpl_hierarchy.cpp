@@ -154,9 +154,9 @@ TEST(VplHierarchy, CornellMatchesTheReferenceWithShortLists) {
   struct Run {
     double error, meanList;
   };
-  auto run = [&](const std::string& hierarchy, float cutoff) {
+  auto run = [&](GiHierarchy hierarchy, float cutoff) {
     SceneRequest request{"cornell"};
-    request.gi.mode = "vpl-only";
+    request.gi.mode = GiMode::VplOnly;
     request.gi.vplCount = 2048;
     request.gi.vplCutoff = cutoff;
     request.gi.hierarchy = hierarchy;
@@ -165,7 +165,8 @@ TEST(VplHierarchy, CornellMatchesTheReferenceWithShortLists) {
     // 8x8-pixel blocks: the reference's per-pixel noise averages down to a few percent.
     return Run{relativeBlockError(r.hdr, reference, 8), test::stat(r, "mean_list")};
   };
-  const Run whole = run("none", 1e-6f), cut = run("none", gi::kDefaultVplCutoff), lgh = run("grid", 1e-6f);
+  const Run whole = run(GiHierarchy::None, 1e-6f), cut = run(GiHierarchy::None, gi::kDefaultVplCutoff),
+            lgh = run(GiHierarchy::Grid, 1e-6f);
   std::printf(
       "[ lgh ] cornell, 2,048 VPLs: error %.4f whole-room ranges (mean list %.0f), %.4f default cutoff "
       "(%.0f), %.4f hierarchy (%.0f)\n",

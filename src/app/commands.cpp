@@ -99,11 +99,11 @@ int runRender(const RenderJob& job) {
   std::vector<std::string> warnings;
   IndirectLightReport gi;
   SlowWorkProgress photonProgress("tracing photons");
-  if (job.scene.gi.mode != "none") gi.progress = [&](double f) { photonProgress.update(f); };
+  if (job.scene.gi.mode != GiMode::None) gi.progress = [&](double f) { photonProgress.update(f); };
   Scene scene = loadScene(job.scene, &warnings, &gi);  // not const: --animate moves its lights
   photonProgress.finish();
   for (const std::string& w : warnings) fmt::print(stderr, "lll: warning: {}\n", w);
-  if (job.scene.gi.mode != "none") printIndirectLight(job.scene.gi, gi.stats);
+  if (job.scene.gi.mode != GiMode::None) printIndirectLight(job.scene.gi, gi.stats);
   particleOptions(scene, job.settings);  // a bad preset fails before Vulkan starts
   Context context(job.device);
   Renderer renderer(context, scene, job.settings);
@@ -151,7 +151,7 @@ int runReference(const ReferenceJob& job) {
     if (job.vpls != "unshadowed" && job.vpls != "shadowed")
       throw InputError(fmt::format("--vpls {}: expected unshadowed or shadowed", job.vpls));
     options.vpls = job.vpls == "shadowed" ? gi::VplGather::Shadowed : gi::VplGather::Unshadowed;
-    request.gi.mode = "vpl-only";
+    request.gi.mode = GiMode::VplOnly;
     request.gi.bounces = options.bounces;
   }
   gi::validateReferenceOptions(options);
@@ -220,10 +220,10 @@ int printLllMemory(const LllMemoryQuery& query) {
   if (query.width == 0 || query.height == 0 || query.tile == 0)
     throw InputError(fmt::format("lll-memory: width, height and tile must be positive (got {} x {}, tile {})",
                                  query.width, query.height, query.tile));
-  if (query.link != "compact" && query.link != "wide")
-    throw InputError(fmt::format("--link {}: expected compact or wide", query.link));
+  if (query.link == LllLink::Auto)
+    throw InputError("--link auto: lll-memory sizes one format, compact or wide");
   // The technique's two link layouts (shaders/shared/lll_types.h): compact 8 bytes, wide 16.
-  const uint32_t linkBytes = query.link == "wide" ? 16 : 8;
+  const uint32_t linkBytes = query.link == LllLink::Wide ? 16 : 8;
   const uint32_t slices = std::max(query.slices, 1u);
   const LllMemory m =
       estimateLllMemory(query.width, query.height, query.tile, query.linksPerTile, linkBytes, slices);

@@ -48,7 +48,7 @@ struct LllMemoryQuery {
   uint32_t height = 1080;
   uint32_t tile = kLllDefaultTile;
   uint32_t linksPerTile = 32;
-  std::string link = "compact";                  // compact (8-byte links) | wide (16-byte links)
+  LllLink link = LllLink::Compact;               // compact (8-byte links) | wide (16-byte links)
   uint32_t slices = RenderSettings{}.lllSlices;  // lists (heads) per tile, as --lll-slices
 };
 int printLllMemory(const LllMemoryQuery& query);

@@ -43,6 +43,17 @@ void rejectEmptyValues(const CLI::App& command) {
   for (const CLI::App* sub : command.get_subcommands()) rejectEmptyValues(*sub);
 }
 
+// An option naming one of an enum's values (core/enum_names.h): CLI11 checks the name against
+// `allowed` (default: all of them) and the option is stored as the enum, parsed once here.
+template <lll::NamedEnum E>
+CLI::Option* addChoice(CLI::App& cmd, const std::string& name, E& value, const std::string& help,
+                       std::vector<std::string> allowed = lll::enumNames<E>()) {
+  return cmd
+      .add_option_function<std::string>(
+          name, [&value](const std::string& text) { value = lll::enumFromName<E>(text).value(); }, help)
+      ->check(CLI::IsMember(std::move(allowed)));
+}
+
 void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   auto& s = job.settings;
   cmd.add_option("scene", job.scene.scene, "built-in scene name (see `lll scenes`) or .gltf/.glb path");
@@ -67,11 +78,10 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       ->check(finiteIn(0.0, lll::kMaxAnimationSeconds));
   cmd.add_flag("--animate", s.animateLights,
                "the --lights lights move 1/60 s each frame, from --time (0 unless given)");
-  cmd.add_option("--light-motion", s.lightMotion,
-                 "where moving lights are placed each frame: gpu (a pass writes their positions) | cpu "
-                 "(placed and uploaded) | auto (gpu unless the CPU reads them: deferred, prepass, "
-                 "--shadows all, --gi)")
-      ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
+  addChoice(cmd, "--light-motion", s.lightMotion,
+            "where moving lights are placed each frame: gpu (a pass writes their positions) | cpu "
+            "(placed and uploaded) | auto (gpu unless the CPU reads them: deferred, prepass, "
+            "--shadows all, --gi)");
   cmd.add_option("--exposure", s.exposure, "exposure multiplier before tonemapping")
       ->check(finiteIn(1e-6, 1e6));
   cmd.add_option("--ambient", s.ambient, "constant ambient radiance")->check(finiteIn(0.0, 1e3));
@@ -81,8 +91,7 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--tile", s.tileSize,
                  "light list tile size in pixels (default: lll 16, tiled and clustered 8)")
       ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u}));
-  cmd.add_option("--lll-fill", s.lllFill, "light linked list fill: shells | ray | compute")
-      ->check(CLI::IsMember({"shells", "ray", "compute"}));
+  addChoice(cmd, "--lll-fill", s.lllFill, "light linked list fill: shells | ray | compute");
   cmd.add_option("--lll-fill-splits", s.lllFillSplits,
                  "compute fill: workgroups sharing each 8x8-tile cell's lights (1 to 64; 0: a quarter of the "
                  "light count from 4 to 64; 64 on a CPU device)")
@@ -92,25 +101,18 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
          "lists per tile, one per depth slice: 1 (one list per tile) to 32; slices split the depth in "
          "front of the tile's nearest surface and, where deep, its surfaces' depth range")
       ->check(CLI::Range(0u, 32u));
-  cmd.add_option("--lll-link", s.lllLink, "link format: compact (8 B, <=256 lights) | wide (16 B) | auto")
-      ->check(CLI::IsMember({"compact", "wide", "auto"}));
-  cmd.add_option("--lll-shade", s.lllShade,
-                 "lll opaque shading: compute (thin G-buffer, list walk in a compute pass) | fragment")
-      ->check(CLI::IsMember({"compute", "fragment"}));
-  cmd.add_option(
-         "--surfaces", s.surfaces,
-         "opaque surfaces: visibility (one raster pass of triangle ids, surfaces rebuilt in compute) | "
-         "gbuffer (depth prepass, then geometry passes)")
-      ->check(CLI::IsMember({"visibility", "gbuffer"}));
-  cmd.add_option(
-         "--glass", s.glass,
-         "how glass is lit: compute (its fragments stored per pixel, then lit and blended in compute) | "
-         "raster (lit in the fragment shader and blended draw by draw)")
-      ->check(CLI::IsMember({"compute", "raster"}));
-  cmd.add_option("--raster", s.raster,
-                 "who rasterizes the visibility buffer: hardware | compute (64-bit atomics, one thread per "
-                 "small triangle) | auto (compute on a GPU, hardware on a CPU device)")
-      ->check(CLI::IsMember({"hardware", "compute", "auto"}));
+  addChoice(cmd, "--lll-link", s.lllLink, "link format: compact (8 B, <=256 lights) | wide (16 B) | auto");
+  addChoice(cmd, "--lll-shade", s.lllShade,
+            "lll opaque shading: compute (thin G-buffer, list walk in a compute pass) | fragment");
+  addChoice(cmd, "--surfaces", s.surfaces,
+            "opaque surfaces: visibility (one raster pass of triangle ids, surfaces rebuilt in compute) | "
+            "gbuffer (depth prepass, then geometry passes)");
+  addChoice(cmd, "--glass", s.glass,
+            "how glass is lit: compute (its fragments stored per pixel, then lit and blended in compute) | "
+            "raster (lit in the fragment shader and blended draw by draw)");
+  addChoice(cmd, "--raster", s.raster,
+            "who rasterizes the visibility buffer: hardware | compute (64-bit atomics, one thread per "
+            "small triangle) | auto (compute on a GPU, hardware on a CPU device)");
   cmd.add_option("--cluster-slices", s.clusterSlices,
                  "clustered: depth slices per tile between its nearest and farthest surface (1 to 32)")
       ->check(CLI::Range(1u, 32u));
@@ -118,10 +120,9 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
       "--sun", job.scene.suns,
       "a directional light, \"x,y,z,lux[,r,g,b]\": x,y,z towards the sun, its illuminance in lux and "
       "linear colour; repeatable (4 at most, with the scene's own)");
-  cmd.add_option("--shadows", s.shadows,
-                 "shadows: sun (the brightest directional light casts cascaded shadow maps) | all (the sun "
-                 "and the --shadow-lights most important spot and point lights) | none")
-      ->check(CLI::IsMember({"sun", "all", "none"}));
+  addChoice(cmd, "--shadows", s.shadows,
+            "shadows: sun (the brightest directional light casts cascaded shadow maps) | all (the sun "
+            "and the --shadow-lights most important spot and point lights) | none");
   cmd.add_option("--shadow-lights", s.shadowLights,
                  "--shadows all: how many local lights cast shadows each frame (0 to 1024)")
       ->check(CLI::Range(0u, 1024u));
@@ -133,18 +134,14 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
   cmd.add_option("--cascades", s.cascades, "sun shadow cascades (1 to 4)")->check(CLI::Range(1u, 4u));
   cmd.add_option("--shadow-resolution", s.shadowResolution, "texels along each cascade's side (16 to 8192)")
       ->check(CLI::Range(16u, 8192u));
-  cmd.add_option("--shadow-filter", s.shadowFilter,
-                 "shadow filter: pcf (3x3 bilinear comparisons) | none (one texel)")
-      ->check(CLI::IsMember({"pcf", "none"}));
-  cmd.add_option("--shadow-raster", s.shadowRaster,
-                 "who draws the shadow casters: hardware | compute | auto (compute on a GPU, hardware on a "
-                 "CPU device)")
-      ->check(CLI::IsMember({"hardware", "compute", "auto"}));
-  cmd.add_option(
-         "--gi", job.scene.gi.mode,
-         "indirect light: none | vpl (instant radiosity: photons traced from the lights leave virtual "
-         "point lights) | vpl-only (the virtual point lights without the direct lights)")
-      ->check(CLI::IsMember({"none", "vpl", "vpl-only"}));
+  addChoice(cmd, "--shadow-filter", s.shadowFilter,
+            "shadow filter: pcf (3x3 bilinear comparisons) | none (one texel)");
+  addChoice(cmd, "--shadow-raster", s.shadowRaster,
+            "who draws the shadow casters: hardware | compute | auto (compute on a GPU, hardware on a "
+            "CPU device)");
+  addChoice(cmd, "--gi", job.scene.gi.mode,
+            "indirect light: none | vpl (instant radiosity: photons traced from the lights leave virtual "
+            "point lights) | vpl-only (the virtual point lights without the direct lights)");
   cmd.add_option("--photons", job.scene.gi.photons, "--gi: photons traced from the lights")
       ->check(CLI::Range(1u, lll::gi::kMaxPhotons));
   cmd.add_option("--bounces", job.scene.gi.bounces,
@@ -164,12 +161,11 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
                  "--gi: every virtual point light's range in metres instead of --vpl-cutoff's (a range that "
                  "does not shrink as --vpl-count grows)")
       ->check(finiteIn(0.0, 1e6));
-  cmd.add_option("--vpl-hierarchy", job.scene.gi.hierarchy,
-                 "--gi: grid (the default: a lighting grid hierarchy, the deposits merged on grids of "
-                 "doubling cells, each level's VPLs lighting a band of distances; --vpl-count is its finest "
-                 "level's) | none (one grid, ranges from --vpl-cutoff or --vpl-range; either of those, or "
-                 "--vpl-count 0, asks for it)")
-      ->check(CLI::IsMember({"none", "grid"}));
+  addChoice(cmd, "--vpl-hierarchy", job.scene.gi.hierarchy,
+            "--gi: grid (the default: a lighting grid hierarchy, the deposits merged on grids of "
+            "doubling cells, each level's VPLs lighting a band of distances; --vpl-count is its finest "
+            "level's) | none (one grid, ranges from --vpl-cutoff or --vpl-range; either of those, or "
+            "--vpl-count 0, asks for it)");
   cmd.add_option("--vpl-alpha", job.scene.gi.vplAlpha,
                  "--vpl-hierarchy grid: the radius of a level's band in its cells (larger: more accurate, "
                  "longer light lists)")
@@ -184,34 +180,27 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
          "gathers the others from its neighbours on the same surface (1: every pixel evaluates every "
          "VPL; opaque surfaces drawn from the visibility buffer only; 1 to 4)")
       ->check(CLI::Range(1u, lll::gpu::kMaxVplInterleave));
-  cmd.add_option("--debug-view", s.debugView,
-                 "none | heatmap | bounds | tiles (lll; heatmap and tiles: tiled, clustered)")
-      ->check(CLI::IsMember({"none", "heatmap", "bounds", "tiles"}));
-  cmd.add_option(
-         "--deferred-translucent", s.deferredTranslucent,
-         "deferred: glass and smoke left unlit (as in the seeds' Figure 1.1) or lit by a forward pass")
-      ->check(CLI::IsMember({"unlit", "forward"}));
-  cmd.add_option("--aa", s.antiAliasing, "none | edge (deferred: edge-detect anti-aliasing)")
-      ->check(CLI::IsMember({"none", "edge"}));
+  addChoice(cmd, "--debug-view", s.debugView,
+            "none | heatmap | bounds | tiles (lll; heatmap and tiles: tiled, clustered)");
+  addChoice(cmd, "--deferred-translucent", s.deferredTranslucent,
+            "deferred: glass and smoke left unlit (as in the seeds' Figure 1.1) or lit by a forward pass");
+  addChoice(cmd, "--aa", s.antiAliasing, "none | edge (deferred: edge-detect anti-aliasing)");
   CLI::Option* particles = cmd.add_option(
       "--particles", s.particles,
       "particle preset: a built-in name (smoke, sparks, dust) or a .json file; the emitter sits "
       "at the scene's smoke source");
   // Without --particles these would be silently ignored.
-  cmd.add_option("--particle-lighting", s.particleLighting,
-                 "light particles per pixel, on a 4x4 atlas per particle interpolated per pixel (atlas), "
-                 "or once per particle at its centre (vertex)")
-      ->check(CLI::IsMember({"pixel", "atlas", "vertex"}))
+  addChoice(cmd, "--particle-lighting", s.particleLighting,
+            "light particles per pixel, on a 4x4 atlas per particle interpolated per pixel (atlas), "
+            "or once per particle at its centre (vertex)")
       ->needs(particles);
-  cmd.add_option("--particle-render", s.particleRender,
-                 "draw particles as quads through the rasterizer, or blend them per tile in compute "
-                 "(auto: compute on a GPU, raster on a CPU device)")
-      ->check(CLI::IsMember({"auto", "raster", "compute"}))
+  addChoice(cmd, "--particle-render", s.particleRender,
+            "draw particles as quads through the rasterizer, or blend them per tile in compute "
+            "(auto: compute on a GPU, raster on a CPU device)")
       ->needs(particles);
-  cmd.add_option("--particle-resolution", s.particleResolution,
-                 "blend particles at full, half or quarter resolution, upsampled with the depth "
-                 "(compute renderer)")
-      ->check(CLI::IsMember({"full", "half", "quarter"}))
+  addChoice(cmd, "--particle-resolution", s.particleResolution,
+            "blend particles at full, half or quarter resolution, upsampled with the depth "
+            "(compute renderer)")
       ->needs(particles);
   cmd.add_option("--particle-tile-groups", s.particleTileGroups,
                  "compute renderer: workgroups each particle tile's slabs are shared out to (default: "
@@ -258,8 +247,7 @@ void addReferenceOptions(CLI::App& cmd, lll::ReferenceJob& job) {
   cmd.add_option("--vpl-count", gi.vplCount, "--vpls: as `render --vpl-count`")
       ->check(CLI::Range(0u, lll::gpu::kMaxLights))
       ->needs(vpls);
-  cmd.add_option("--vpl-hierarchy", gi.hierarchy, "--vpls: as `render --vpl-hierarchy` (grid | none)")
-      ->check(CLI::IsMember({"none", "grid"}))
+  addChoice(cmd, "--vpl-hierarchy", gi.hierarchy, "--vpls: as `render --vpl-hierarchy` (grid | none)")
       ->needs(vpls);
   cmd.add_option("--vpl-alpha", gi.vplAlpha, "--vpls: as `render --vpl-alpha`")
       ->check(finiteIn(lll::gi::kMinHierarchyAlpha, lll::gi::kMaxHierarchyAlpha))
@@ -309,9 +297,8 @@ void addLllMemoryOptions(CLI::App& cmd, lll::LllMemoryQuery& query) {
   cmd.add_option("--links-per-tile", query.linksPerTile, "average light list length the pool is sized for")
       ->check(CLI::Range(1u, 1u << 16))
       ->capture_default_str();
-  cmd.add_option("--link", query.link, "link format: compact (8 B) | wide (16 B)")
-      ->check(CLI::IsMember({"compact", "wide"}))
-      ->capture_default_str();
+  addChoice(cmd, "--link", query.link, "link format: compact (8 B) | wide (16 B)", {"compact", "wide"})
+      ->default_str("compact");
   cmd.add_option("--lll-slices", query.slices, "lists (depth slices) per tile, as lll render's --lll-slices")
       ->check(CLI::Range(1u, 32u))
       ->capture_default_str();
@@ -333,14 +320,14 @@ std::string giOptionConflict(const CLI::App& cmd, lll::GiRequest& gi) {
           "--vpl-alpha sets the lighting grid hierarchy's accuracy, but {} asks for one grid "
           "(--vpl-hierarchy none)",
           single);
-    gi.hierarchy = "none";
+    gi.hierarchy = lll::GiHierarchy::None;
   }
-  if (single && gi.hierarchy == "grid")
+  if (single && gi.hierarchy == lll::GiHierarchy::Grid)
     return fmt::format(
         "{}: the lighting grid hierarchy (--vpl-hierarchy grid) sets every VPL's range from "
         "its level and needs a count; leave --vpl-hierarchy out or make it none",
         single);
-  if (gi.hierarchy != "grid" && cmd.count("--vpl-alpha") > 0)
+  if (gi.hierarchy != lll::GiHierarchy::Grid && cmd.count("--vpl-alpha") > 0)
     return "--vpl-alpha: it sets the lighting grid hierarchy's accuracy, but --vpl-hierarchy is none";
   return {};
 }

@@ -188,7 +188,7 @@ Measured measure(Context& context, Caches& caches, const Scenario& s, FrameCount
   r.techniqueStats = renderer.stats();
   r.memory = lightingMemory(s.settings, r.techniqueStats);
   if (!lightUpdateMs.empty()) r.techniqueStats.emplace_back("light-update-cpu-ms", median(lightUpdateMs));
-  if (s.scene.gi.mode != "none") {
+  if (s.scene.gi.mode != GiMode::None) {
     const gi::PhotonStats& g = caches.scenes.photonStats();
     r.techniqueStats.insert(r.techniqueStats.end(), {{"gi-photons", double(g.photons)},
                                                      {"gi-deposits", double(g.deposits)},

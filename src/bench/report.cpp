@@ -33,6 +33,20 @@ nlohmann::json namedValues(const NamedValues& values) {
   return j;
 }
 
+// An option's name in the results, "" where it does not apply.
+std::string nameIf(bool applies, NamedEnum auto value) {
+  return applies ? std::string(nameOf(value)) : std::string();
+}
+
+// The option named at `key` of a result read back from `path`.
+template <NamedEnum E>
+E enumAt(const nlohmann::json& result, const char* key, const std::filesystem::path& path) {
+  const std::string name = result.at(key).get<std::string>();
+  if (const std::optional<E> value = enumFromName<E>(name)) return *value;
+  throw InputError(
+      fmt::format("{}: \"{}\": \"{}\" is not one of {}", path.string(), key, name, enumChoices<E>()));
+}
+
 nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
   const Scenario& s = r.scenario;
   nlohmann::json j = {
@@ -48,18 +62,18 @@ nlohmann::json resultJson(const BenchReport& report, const ScenarioResult& r) {
       {"technique", s.settings.technique},
       {"label", techniqueLabel(s.settings)},
       {"series", seriesLabel(s)},
-      {"fill", s.settings.technique == "lll" ? s.settings.lllFill : ""},
-      {"shade", s.settings.technique == "lll" ? s.settings.lllShade : ""},
-      {"surfaces", s.settings.surfaces},
-      {"glass", s.settings.glass},
-      {"raster", s.settings.raster},
+      {"fill", nameIf(s.settings.technique == "lll", s.settings.lllFill)},
+      {"shade", nameIf(s.settings.technique == "lll", s.settings.lllShade)},
+      {"surfaces", nameOf(s.settings.surfaces)},
+      {"glass", nameOf(s.settings.glass)},
+      {"raster", nameOf(s.settings.raster)},
       {"tile", tileSizeFor(s.settings)},  // the technique's default where the scenario names none
       {"moving_lights", s.settings.animateLights},
       {"particles", s.settings.particles},
       {"particle_count", s.settings.particleCount},
-      {"particle_lighting", s.settings.particles.empty() ? "" : s.settings.particleLighting},
-      {"particle_render", s.settings.particles.empty() ? "" : s.settings.particleRender},
-      {"particle_resolution", s.settings.particles.empty() ? "" : s.settings.particleResolution},
+      {"particle_lighting", nameIf(!s.settings.particles.empty(), s.settings.particleLighting)},
+      {"particle_render", nameIf(!s.settings.particles.empty(), s.settings.particleRender)},
+      {"particle_resolution", nameIf(!s.settings.particles.empty(), s.settings.particleResolution)},
       {"status", statusName(r.status)},
       {"message", r.message},
       {"device", report.device.name},
@@ -204,12 +218,14 @@ BenchReport readResultsJson(const std::filesystem::path& path) {
       s.settings.height = r.at("height").get<uint32_t>();
       s.settings.technique = r.at("technique").get<std::string>();
       if (s.settings.technique == "lll") {
-        s.settings.lllFill = r.at("fill").get<std::string>();
-        s.settings.lllShade = r.at("shade").get<std::string>();
+        s.settings.lllFill = enumAt<LllFill>(r, "fill", path);
+        s.settings.lllShade = enumAt<LllShade>(r, "shade", path);
       }
-      s.settings.surfaces = r.at("surfaces").get<std::string>();
-      s.settings.glass = r.value("glass", std::string("raster"));
-      s.settings.raster = r.at("raster").get<std::string>();
+      s.settings.surfaces = enumAt<SurfaceSource>(r, "surfaces", path);
+      // Results from before --glass compute lit glass in the fragment shader.
+      s.settings.glass =
+          r.contains("glass") ? enumAt<GlassLighting>(r, "glass", path) : GlassLighting::Raster;
+      s.settings.raster = enumAt<RasterChoice>(r, "raster", path);
       s.settings.tileSize = r.at("tile").get<uint32_t>();
       s.settings.animateLights = r.value("moving_lights", false);
       s.scene.movingLights = s.settings.animateLights;

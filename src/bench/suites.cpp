@@ -27,7 +27,7 @@ struct Size {
   uint32_t height;
 };
 
-const std::vector<std::string> kLllFills = {"shells", "ray", "compute"};
+const LllFill kLllFills[] = {LllFill::Shells, LllFill::Ray, LllFill::Compute};
 
 // A scenario of `suite` rendering `scene` at `size` with default settings.
 Scenario makeScenario(const std::string& suite, const std::string& name, const SceneRequest& scene,
@@ -55,18 +55,19 @@ std::vector<Scenario> perTechnique(const Scenario& base, const std::vector<std::
       out.push_back(s);
       continue;
     }
-    for (const std::string& fill : kLllFills) {
+    for (const LllFill fill : kLllFills) {
       s.settings.lllFill = fill;
       out.push_back(s);
     }
-    s.settings.lllFill = "compute";
-    s.settings.raster = "hardware";  // the visibility buffer drawn by the hardware, whatever auto picks
+    s.settings.lllFill = LllFill::Compute;
+    s.settings.raster =
+        RasterChoice::Hardware;  // the visibility buffer drawn by the hardware, whatever auto picks
     out.push_back(s);
-    s.settings.raster = "auto";
-    s.settings.surfaces = "gbuffer";
+    s.settings.raster = RasterChoice::Auto;
+    s.settings.surfaces = SurfaceSource::Gbuffer;
     out.push_back(s);
-    s.settings.surfaces = "visibility";
-    s.settings.lllShade = "fragment";
+    s.settings.surfaces = SurfaceSource::Visibility;
+    s.settings.lllShade = LllShade::Fragment;
     out.push_back(s);
   }
   return out;
@@ -242,7 +243,7 @@ std::vector<Scenario> movingSuite(const SuiteOptions& options) {
     // the GPU's lights-move pass saves ("light-update-cpu-ms").
     Scenario cpu = base;
     cpu.settings.technique = "lll";
-    cpu.settings.lightMotion = "cpu";
+    cpu.settings.lightMotion = LightPlacement::Cpu;
     cpu.series = techniqueLabel(cpu.settings) + "/cpu-motion";
     out.push_back(cpu);
   }
@@ -294,14 +295,16 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   const uint32_t rasterMost = options.quick ? 4096 : 65536;
   std::vector<Scenario> out;
-  auto add = [&](const char* preset, uint32_t particles, const char* lighting,
-                 const std::vector<std::string>& techniques, const std::vector<std::string>& renders,
-                 const std::string& resolution) {
-    for (const std::string& render : renders) {
-      const uint32_t most = std::string(lighting) == "pixel" ? 1024 : rasterMost;
-      if (render == "raster" && particles > most) continue;
+  auto add = [&](const char* preset, uint32_t particles, ParticleLighting lighting,
+                 const std::vector<std::string>& techniques, const std::vector<ParticleRender>& renders,
+                 ParticleResolution resolution) {
+    for (const ParticleRender render : renders) {
+      const uint32_t most = lighting == ParticleLighting::Pixel ? 1024 : rasterMost;
+      if (render == ParticleRender::Raster && particles > most) continue;
       const std::string name = std::string(preset) == "smoke" ? "" : std::string(preset) + " ";
-      const std::string how = resolution == "full" ? render : render + " " + resolution;
+      const std::string how = resolution == ParticleResolution::Full
+                                  ? fmt::format("{}", render)
+                                  : fmt::format("{} {}", render, resolution);
       Scenario base =
           makeScenario("smoke", fmt::format("{}{} particles {}-lit, {}", name, particles, lighting, how),
                        SceneRequest{kDefaultSceneName, 256, 1}, size);
@@ -316,16 +319,18 @@ std::vector<Scenario> smokeSuite(const SuiteOptions& options) {
       }
     }
   };
+  using enum ParticleLighting;
+  const std::vector<ParticleRender> both = {ParticleRender::Compute, ParticleRender::Raster};
   for (const uint32_t particles : counts) {
-    for (const char* lighting : {"pixel", "atlas", "vertex"})
-      add("smoke", particles, lighting, {"lll", "forward"}, {"compute", "raster"}, "full");
-    for (const char* resolution : {"half", "quarter"})
-      for (const char* lighting : {"atlas", "vertex"})
-        add("smoke", particles, lighting, {"lll"}, {"compute"}, resolution);
+    for (const ParticleLighting lighting : {Pixel, Atlas, Vertex})
+      add("smoke", particles, lighting, {"lll", "forward"}, both, ParticleResolution::Full);
+    for (const ParticleResolution resolution : {ParticleResolution::Half, ParticleResolution::Quarter})
+      for (const ParticleLighting lighting : {Atlas, Vertex})
+        add("smoke", particles, lighting, {"lll"}, {ParticleRender::Compute}, resolution);
   }
   if (options.particleCounts.empty())
     for (const char* preset : {"sparks", "dust"})
-      add(preset, rasterMost, "atlas", {"lll"}, {"compute", "raster"}, "full");
+      add(preset, rasterMost, Atlas, {"lll"}, both, ParticleResolution::Full);
   return out;
 }
 
@@ -345,12 +350,12 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   SceneRequest scene{kDefaultSceneName, 0, 1};
   scene.suns = {kBenchSun};
   std::vector<Scenario> out;
-  auto add = [&](const std::vector<std::string>& techniques, const std::string& shadows, uint32_t cascades,
-                 uint32_t texels, const std::string& raster = "auto") {
-    std::string how = shadows == "none"
+  auto add = [&](const std::vector<std::string>& techniques, ShadowMode shadows, uint32_t cascades,
+                 uint32_t texels, RasterChoice raster = RasterChoice::Auto) {
+    std::string how = shadows == ShadowMode::None
                           ? "no shadow"
                           : fmt::format("{} cascade{} of {}", cascades, cascades == 1 ? "" : "s", texels);
-    if (raster != "auto") how += ", " + raster + " raster";
+    if (raster != RasterChoice::Auto) how += fmt::format(", {} raster", raster);
     Scenario base = makeScenario("shadows", "sun, " + how, scene, size);
     base.settings.shadows = shadows;
     base.settings.cascades = cascades;
@@ -361,16 +366,16 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
       out.push_back(s);
     }
   };
-  add(registeredTechniques(), "none", 4, resolution);
-  add(registeredTechniques(), "sun", 4, resolution);
+  add(registeredTechniques(), ShadowMode::None, 4, resolution);
+  add(registeredTechniques(), ShadowMode::Sun, 4, resolution);
   const auto addLights = [&](const std::vector<std::string>& techniques, uint32_t lights,
-                             const std::string& raster = "auto", const SceneRequest* other = nullptr) {
+                             RasterChoice raster = RasterChoice::Auto, const SceneRequest* other = nullptr) {
     const SceneRequest& where = other ? *other : scene;
     std::string how = fmt::format("{}{} shadowed {}{}", where.suns.empty() ? "" : "sun + ", lights,
                                   where.scene == kSpotsScene ? "spot" : "light", lights == 1 ? "" : "s");
-    if (raster != "auto") how += ", " + raster + " raster";
+    if (raster != RasterChoice::Auto) how += fmt::format(", {} raster", raster);
     Scenario base = makeScenario("shadows", how, where, size);
-    base.settings.shadows = "all";
+    base.settings.shadows = ShadowMode::All;
     base.settings.cascades = 4;
     base.settings.shadowResolution = resolution;
     base.settings.shadowLights = lights;
@@ -386,23 +391,23 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
   const SceneRequest sunless{kDefaultSceneName, 0, 1};
   {
     Scenario base = makeScenario("shadows", "no sun, no shadow", sunless, size);
-    base.settings.shadows = "none";
+    base.settings.shadows = ShadowMode::None;
     for (Scenario s : perTechnique(base, registeredTechniques(), false)) {
       s.series = fmt::format("{}, no sun, no shadow", techniqueLabel(s.settings));
       out.push_back(s);
     }
   }
-  for (uint32_t lights : kLightCounts) addLights(registeredTechniques(), lights, "auto", &sunless);
+  for (uint32_t lights : kLightCounts)
+    addLights(registeredTechniques(), lights, RasterChoice::Auto, &sunless);
   // Who draws the local lights' casters, where auto picks compute.
   if (!options.cpuDevice)
-    for (uint32_t lights : {16u, 64u}) addLights({"lll"}, lights, "hardware");
+    for (uint32_t lights : {16u, 64u}) addLights({"lll"}, lights, RasterChoice::Hardware);
   // The measure, the sun and 64 shadowed spots: the atrium with its lights turned into spots,
   // against the same scene without shadows and with the sun's alone.
   SceneRequest spots = scene;
   spots.scene = kSpotsScene;
-  for (const char* shadows : {"none", "sun"}) {
-    Scenario base =
-        makeScenario("shadows", shadows == std::string("none") ? "no shadow" : "sun", spots, size);
+  for (const ShadowMode shadows : {ShadowMode::None, ShadowMode::Sun}) {
+    Scenario base = makeScenario("shadows", shadows == ShadowMode::None ? "no shadow" : "sun", spots, size);
     base.settings.shadows = shadows;
     base.settings.cascades = 4;
     base.settings.shadowResolution = resolution;
@@ -411,16 +416,16 @@ std::vector<Scenario> shadowsSuite(const SuiteOptions& options) {
       out.push_back(s);
     }
   }
-  for (uint32_t lights : {16u, 64u}) addLights({"lll"}, lights, "auto", &spots);
-  if (!options.cpuDevice) addLights({"lll"}, 64, "hardware", &spots);
+  for (uint32_t lights : {16u, 64u}) addLights({"lll"}, lights, RasterChoice::Auto, &spots);
+  if (!options.cpuDevice) addLights({"lll"}, 64, RasterChoice::Hardware, &spots);
   // On a CPU device the compute rows are left out: its storage buffers cannot hold the keys of the
   // larger atlases, and auto draws with the hardware there anyway.
-  const std::vector<std::string> rasters = options.cpuDevice
-                                               ? std::vector<std::string>{"hardware"}
-                                               : std::vector<std::string>{"hardware", "compute"};
-  for (const std::string& raster : rasters) {
-    for (uint32_t cascades : {1u, 2u, 4u}) add({"lll"}, "sun", cascades, resolution, raster);
-    for (uint32_t texels : {resolution / 2, resolution * 2}) add({"lll"}, "sun", 4, texels, raster);
+  const std::vector<RasterChoice> rasters = options.cpuDevice
+                                                ? std::vector{RasterChoice::Hardware}
+                                                : std::vector{RasterChoice::Hardware, RasterChoice::Compute};
+  for (const RasterChoice raster : rasters) {
+    for (uint32_t cascades : {1u, 2u, 4u}) add({"lll"}, ShadowMode::Sun, cascades, resolution, raster);
+    for (uint32_t texels : {resolution / 2, resolution * 2}) add({"lll"}, ShadowMode::Sun, 4, texels, raster);
   }
   return out;
 }
@@ -451,12 +456,12 @@ VplReachSpec hierarchyReach(float alpha) {
 SceneRequest vplScene(const char* scene, uint32_t vpls, const VplReachSpec& reach,
                       const SuiteOptions& options) {
   SceneRequest request{scene, 0, 1};
-  request.gi.mode = "vpl-only";
+  request.gi.mode = GiMode::VplOnly;
   request.gi.vplCount = vpls;
   request.gi.photons = options.quick ? 20000 : std::max(100000u, 3 * vpls);  // ~2 deposits a photon
   request.gi.vplCutoff = reach.cutoff;
   request.gi.vplRange = reach.range;
-  request.gi.hierarchy = reach.alpha > 0.0f ? "grid" : "none";
+  request.gi.hierarchy = reach.alpha > 0.0f ? GiHierarchy::Grid : GiHierarchy::None;
   if (reach.alpha > 0.0f) request.gi.vplAlpha = reach.alpha;
   return request;
 }
@@ -572,10 +577,10 @@ std::vector<Scenario> giMovingSuite(const SuiteOptions& options) {
   const Size size = options.quick ? Size{48, 27} : Size{1920, 1080};
   SceneRequest request{kDefaultSceneName, options.quick ? 8u : 256u, 1};
   request.movingLights = true;
-  request.gi.mode = "vpl";
+  request.gi.mode = GiMode::Vpl;
   request.gi.vplCount = options.quick ? 64 : gi::kDefaultVplCount;
   request.gi.photons = options.quick ? 20000 : gi::kDefaultPhotons;
-  request.gi.hierarchy = "none";  // as measured before the hierarchy (bench/README.md)
+  request.gi.hierarchy = GiHierarchy::None;  // as measured before the hierarchy (bench/README.md)
   request.gi.vplCutoff = kGiShortCutoff;
   std::vector<Scenario> out;
   const uint32_t budget = options.quick ? 1024 : gi::kDefaultRetracePhotons;
@@ -642,9 +647,11 @@ std::string lllVariant(const RenderSettings& settings) {
   const uint32_t slices = lllListsPerTile(settings);
   const std::string sliced =
       slices != lllListsPerTile(RenderSettings{}) ? fmt::format("/slices{}", slices) : "";
-  if (settings.lllShade == "fragment") return settings.lllFill + "/fragment-shade" + sliced;
-  if (settings.surfaces == "gbuffer") return settings.lllFill + "/gbuffer" + sliced;
-  return (settings.raster == "hardware" ? settings.lllFill + "/hardware-raster" : settings.lllFill) + sliced;
+  const std::string_view fill = nameOf(settings.lllFill);
+  if (settings.lllShade == LllShade::Fragment) return fmt::format("{}/fragment-shade{}", fill, sliced);
+  if (settings.surfaces == SurfaceSource::Gbuffer) return fmt::format("{}/gbuffer{}", fill, sliced);
+  if (settings.raster == RasterChoice::Hardware) return fmt::format("{}/hardware-raster{}", fill, sliced);
+  return fmt::format("{}{}", fill, sliced);
 }
 
 std::string techniqueLabel(const RenderSettings& settings) {

@@ -46,15 +46,11 @@ constexpr uint32_t kOutside = 0;
 constexpr uint32_t kInside = 1;
 
 bool forwardLitTranslucents(const RenderSettings& settings) {
-  if (settings.deferredTranslucent != "unlit" && settings.deferredTranslucent != "forward")
-    throw InputError("--deferred-translucent " + settings.deferredTranslucent + ": use unlit or forward");
-  return settings.deferredTranslucent == "forward";
+  return settings.deferredTranslucent == TranslucentLighting::Forward;
 }
 
 bool edgeAntiAliasing(const RenderSettings& settings) {
-  if (settings.antiAliasing != "none" && settings.antiAliasing != "edge")
-    throw InputError("--aa " + settings.antiAliasing + ": use none or edge");
-  return settings.antiAliasing == "edge";
+  return settings.antiAliasing == AntiAliasing::Edge;
 }
 
 class Deferred final : public Technique {

@@ -22,12 +22,10 @@ namespace {
 // Initial index entries per tile (grown on overflow, grownCapacity).
 constexpr uint64_t kInitialEntriesPerTile = 32;
 
-uint32_t parseGridDebugView(const std::string& name) {
-  if (name == "none") return gpu::kDebugNone;
-  if (name == "heatmap") return gpu::kDebugHeatmap;
-  if (name == "tiles") return gpu::kDebugTiles;
-  throw InputError(
-      fmt::format("--debug-view {}: the tiled and clustered techniques show none, heatmap or tiles", name));
+uint32_t gridDebugView(DebugView view) {
+  if (view == DebugView::Bounds)
+    throw InputError("--debug-view bounds: the tiled and clustered techniques show none, heatmap or tiles");
+  return debugViewCode(view);
 }
 
 class LightGrid final : public Technique {
@@ -80,8 +78,8 @@ LightGrid::LightGrid(Context& context, const GpuScene& scene, const RenderSettin
       tiles_(tilesX_ * tilesY_),
       maxEntries_(storageBufferCapacity(context, 4)) {
   validateTileSize(settings.tileSize);
-  uniforms_.params = glm::uvec4(slices, 0, parseGridDebugView(settings.debugView),
-                                cellSplitsFor(context, scene.lightCount()));
+  uniforms_.params =
+      glm::uvec4(slices, 0, gridDebugView(settings.debugView), cellSplitsFor(context, scene.lightCount()));
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   uniformBuffer_ = Buffer(context, sizeof(gpu::GridUniforms), storage, MemoryUse::Upload, "grid uniforms");
   tileRange_ = Buffer(context, uint64_t(tiles_) * 8, storage, MemoryUse::Device, "grid tile ranges");

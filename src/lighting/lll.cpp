@@ -52,42 +52,17 @@ const std::initializer_list<Binding> kBindings = {
     {13, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
 };
 
-LllFill parseFill(const std::string& name) {
-  if (name == "shells") return LllFill::Shells;
-  if (name == "ray") return LllFill::Ray;
-  if (name == "compute") return LllFill::Compute;
-  throw InputError(fmt::format("--lll-fill {}: expected shells, ray or compute", name));
-}
-
-// true: opaque surfaces are lit in a compute pass over a thin G-buffer; false: in the fragment
-// shader of a second geometry pass (the chapter's forward shading).
-bool parseComputeShading(const std::string& name) {
-  if (name == "compute") return true;
-  if (name == "fragment") return false;
-  throw InputError(fmt::format("--lll-shade {}: expected compute or fragment", name));
-}
-
 // shaders/common/lll_data.glsl's kLinkFormat.
 constexpr uint32_t kLinkFormatConstant = 42;
 
-uint32_t parseLinkFormat(const std::string& name, uint32_t lightCount) {
+// The shaders' link format (kLinkCompact or kLinkWide) for --lll-link and the scene's lights.
+uint32_t linkFormatFor(LllLink link, uint32_t lightCount) {
   const bool fitsCompact = lightCount <= gpu::kCompactLinkMaxLights;
-  if (name == "wide" || (name == "auto" && !fitsCompact)) return gpu::kLinkWide;
-  if (name == "compact" || name == "auto") {
-    if (!fitsCompact)
-      throw InputError(fmt::format("--lll-link compact: {} lights, but compact links index at most {}",
-                                   lightCount, gpu::kCompactLinkMaxLights));
-    return gpu::kLinkCompact;
-  }
-  throw InputError(fmt::format("--lll-link {}: expected compact, wide or auto", name));
-}
-
-uint32_t parseDebugView(const std::string& name) {
-  if (name == "none") return gpu::kDebugNone;
-  if (name == "heatmap") return gpu::kDebugHeatmap;
-  if (name == "bounds") return gpu::kDebugBounds;
-  if (name == "tiles") return gpu::kDebugTiles;
-  throw InputError(fmt::format("--debug-view {}: expected none, heatmap, bounds or tiles", name));
+  if (link == LllLink::Wide || (link == LllLink::Auto && !fitsCompact)) return gpu::kLinkWide;
+  if (!fitsCompact)
+    throw InputError(fmt::format("--lll-link compact: {} lights, but compact links index at most {}",
+                                 lightCount, gpu::kCompactLinkMaxLights));
+  return gpu::kLinkCompact;
 }
 
 // Indexed mesh of a light shell on the GPU.
@@ -185,13 +160,15 @@ class LightLinkedList final : public Technique {
 LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const RenderSettings& settings,
                                  const FrameTargets& targets, const VisibilityBuffer* visibility)
     : context_(context),
-      fill_(parseFill(settings.lllFill)),
-      opaqueShading_(!parseComputeShading(settings.lllShade) ? OpaqueShading::Geometry
+      fill_(settings.lllFill),
+      // --lll-shade fragment: opaque surfaces lit in the fragment shader of a second geometry pass
+      // (the chapter's forward shading); compute: in a compute pass over a thin G-buffer.
+      opaqueShading_(settings.lllShade == LllShade::Fragment ? OpaqueShading::Geometry
                      : visibility                            ? OpaqueShading::Visibility
                                                              : OpaqueShading::GBuffer),
-      linkFormat_(parseLinkFormat(settings.lllLink, scene.lightCount())),
+      linkFormat_(linkFormatFor(settings.lllLink, scene.lightCount())),
       linkBytes_(linkFormat_ == gpu::kLinkCompact ? 8 : 16),
-      autoLinkFormat_(settings.lllLink == "auto") {
+      autoLinkFormat_(settings.lllLink == LllLink::Auto) {
   const uint32_t tile = settings.tileSize;
   validateTileSize(tile);
   tilesX_ = divideRoundingUp(targets.width, tile);
@@ -211,7 +188,7 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
   if (const uint32_t k = vplInterleaveIn(scene, opaqueShading_, settings.vplInterleave); k > 1)
     classes_ = 1 + k * k;  // at most gpu::kMaxLllListClasses (the compute fill's shared arrays)
   uniforms_.slicing = glm::uvec4(slices_, classes_, 0, 0);
-  uniforms_.params = glm::uvec4(0, 0, parseDebugView(settings.debugView), fillSplits_);
+  uniforms_.params = glm::uvec4(0, 0, debugViewCode(settings.debugView), fillSplits_);
   uniforms_.grid = glm::vec4(float(targets.width) / float(tilesX_ * tile),
                              float(targets.height) / float(tilesY_ * tile), 0.0f, 0.0f);
   // Half a tile's diagonal in pixels, 10% more for the rays' divergence across the tile.

@@ -18,8 +18,6 @@ namespace lll {
 // 110 (bench/README.md, 2026-12-03); Bezrati and ThreeL use 8.
 inline constexpr uint32_t kLllDefaultTile = 16;
 
-enum class LllFill { Shells, Ray, Compute };
-
 struct LightLinkRecord {
   uint32_t light;
   float minDepth;

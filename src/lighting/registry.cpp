@@ -22,7 +22,7 @@ bool always(const RenderSettings&) {
   return true;
 }
 bool lllFragmentShading(const RenderSettings& settings) {
-  return settings.lllShade == "fragment";
+  return settings.lllShade == LllShade::Fragment;
 }
 }  // namespace
 

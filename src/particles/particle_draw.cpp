@@ -13,27 +13,6 @@
 
 namespace lll {
 
-ParticleLighting parseParticleLighting(const std::string& name) {
-  if (name == "pixel") return ParticleLighting::Pixel;
-  if (name == "vertex") return ParticleLighting::Vertex;
-  if (name == "atlas") return ParticleLighting::Atlas;
-  throw InputError(fmt::format("--particle-lighting {}: expected pixel, atlas or vertex", name));
-}
-
-uint32_t parseParticleResolution(const std::string& name) {
-  if (name == "full") return 1;
-  if (name == "half") return 2;
-  if (name == "quarter") return 4;
-  throw InputError(fmt::format("--particle-resolution {}: expected full, half or quarter", name));
-}
-
-ParticleRender parseParticleRender(const std::string& name) {
-  if (name == "auto") return ParticleRender::Auto;
-  if (name == "raster") return ParticleRender::Raster;
-  if (name == "compute") return ParticleRender::Compute;
-  throw InputError(fmt::format("--particle-render {}: expected auto, raster or compute", name));
-}
-
 const ParticleSystem::DrawPipelines& ParticleSystem::pipelinesFor(const FrameContext& frame,
                                                                   const LightingInterface& lighting) {
   auto found = drawPipelines_.find(lighting.key());

@@ -29,9 +29,9 @@ std::optional<ParticleSystemOptions> particleOptions(const Scene& scene, const R
   if (settings.particles.empty()) return std::nullopt;
   ParticleSystemOptions options;
   options.preset = settingsParticlePreset(settings);
-  options.lighting = parseParticleLighting(settings.particleLighting);
-  options.render = parseParticleRender(settings.particleRender);
-  options.resolutionScale = parseParticleResolution(settings.particleResolution);
+  options.lighting = settings.particleLighting;
+  options.render = settings.particleRender;
+  options.resolutionScale = particleResolutionScale(settings.particleResolution);
   options.tileGroups = settings.particleTileGroups;
   if (options.resolutionScale > 1 && options.render == ParticleRender::Raster)
     throw InputError(

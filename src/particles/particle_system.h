@@ -24,6 +24,7 @@
 #include "particles/bitonic_sort.h"
 #include "particles/presets.h"
 #include "render/lighting_interface.h"
+#include "render/settings.h"
 #include "shared/light_bins_types.h"
 #include "shared/particle_types.h"
 
@@ -32,17 +33,6 @@ namespace lll {
 class Context;
 struct FrameContext;
 struct FrameTargets;
-
-// How a technique lights its particles.
-// Where lighting is evaluated (--particle-lighting).
-enum class ParticleLighting {
-  Pixel,   // every covered pixel, with a sphere-like normal across the quad
-  Vertex,  // once per particle at its centre, in compute (particles-light), facing the camera
-  Atlas,   // on a few texels per particle in compute (particles-light), interpolated per pixel
-};
-
-// Throws InputError for anything but "pixel", "atlas" or "vertex".
-ParticleLighting parseParticleLighting(const std::string& name);
 
 // Which particles a draw blends, by depth against the scene's glass (ParticleSystem::draw).
 enum class ParticleLayer {
@@ -63,20 +53,6 @@ const Image& particleSampledDepth(const FrameTargets& targets, ParticleLayer lay
 const Image& particleGlassDepth(const FrameTargets& targets, ParticleLayer layer);
 const char* particlePassSuffix(ParticleLayer layer);
 
-// How the particles reach the frame (--particle-render).
-enum class ParticleRender {
-  Auto,     // compute on a GPU, raster on a CPU device (see ParticleSystem's constructor)
-  Raster,   // camera-facing quads blended back to front by the rasterizer (particle_draw.cpp)
-  Compute,  // tiles of a compute pass blending each pixel front to back (particle_tiles.cpp)
-};
-
-// Throws InputError for anything but "auto", "raster" or "compute".
-ParticleRender parseParticleRender(const std::string& name);
-
-// --particle-resolution: frame pixels per particle pixel along each axis, 1 (full), 2 (half) or 4
-// (quarter). Throws InputError for any other name.
-uint32_t parseParticleResolution(const std::string& name);
-
 // The compute renderer's workgroups a tile when --particle-tile-groups does not say: slabs x scale
 // / 8, at least 4 (or one a slab) and at most kParticleMaxGroups, fitted on the H200
 // (particle_tiles.cpp, bench/README.md).
@@ -89,7 +65,7 @@ struct ParticleSystemOptions {
   uint32_t seed = 1;
   ParticleLighting lighting = ParticleLighting::Pixel;
   ParticleRender render = ParticleRender::Auto;
-  uint32_t resolutionScale = 1;  // parseParticleResolution; above 1 needs the compute renderer
+  uint32_t resolutionScale = 1;  // particleResolutionScale; above 1 needs the compute renderer
   uint32_t tileGroups = 0;       // the compute renderer's workgroups a tile (1 to 8); 0: its choice
 };
 

@@ -17,6 +17,7 @@
 #include "particles/particle_setup.h"
 #include "scene/light_animation.h"
 #include "scene/lights.h"
+#include "shared/lll_types.h"
 
 namespace lll {
 
@@ -40,6 +41,20 @@ constexpr uint32_t kParticleStepsPerSubmission = 256;
 void validateTileSize(uint32_t tile) {
   if (tile == 0 || tile > gpu::kMaxTileSize || (tile & (tile - 1)) != 0)
     throw InputError(fmt::format("--tile {}: expected 1, 2, 4, 8 or 16", tile));
+}
+
+uint32_t debugViewCode(DebugView view) {
+  switch (view) {
+    case DebugView::None:
+      return gpu::kDebugNone;
+    case DebugView::Heatmap:
+      return gpu::kDebugHeatmap;
+    case DebugView::Bounds:
+      return gpu::kDebugBounds;
+    case DebugView::Tiles:
+      return gpu::kDebugTiles;
+  }
+  throw std::invalid_argument("debugViewCode: not a DebugView");
 }
 
 void validateResolution(uint32_t width, uint32_t height) {
@@ -103,21 +118,17 @@ void Renderer::createLitPasses() {
   lit_.reset();
   lit_ = std::make_unique<LitPasses>(context_, *gpuScene_, targets_, visibility_.get(),
                                      technique_->opaqueShading(), technique_->lighting(),
-                                     settings_.glass == "compute", settings_.vplInterleave,
+                                     settings_.glass == GlassLighting::Compute, settings_.vplInterleave,
                                      /*lastShading=*/!particles_);
 }
 
 void Renderer::chooseSurfaces() {
-  const std::string& raster = settings_.raster;
-  if (raster != "hardware" && raster != "compute" && raster != "auto")
-    throw InputError(fmt::format("--raster {}: expected hardware, compute or auto", raster));
-  if (settings_.surfaces == "gbuffer") {
-    if (raster == "compute")
+  const RasterChoice raster = settings_.raster;
+  if (settings_.surfaces == SurfaceSource::Gbuffer) {
+    if (raster == RasterChoice::Compute)
       throw InputError("--raster compute rasterizes the visibility buffer: it needs --surfaces visibility");
     return;
   }
-  if (settings_.surfaces != "visibility")
-    throw InputError(fmt::format("--surfaces {}: expected visibility or gbuffer", settings_.surfaces));
   surfacesFallback_ = VisibilityBuffer::problem(context_, *gpuScene_);
   if (surfacesFallback_.empty()) {
     std::string computeProblem = ComputeRaster::problem(context_, settings_.width, settings_.height);
@@ -127,16 +138,17 @@ void Renderer::chooseSurfaces() {
           "--technique {} (with these options) draws opaque geometry again with an EQUAL depth test, "
           "which needs the hardware pass's depth",
           settings_.technique);
-    if (raster == "compute" && !computeProblem.empty())
+    if (raster == RasterChoice::Compute && !computeProblem.empty())
       throw InputError(fmt::format("--raster compute: {}", computeProblem));
     // auto: compute where the measurement says it wins (bench/README.md, "Compute rasterization").
     const bool compute =
-        raster == "compute" || (raster == "auto" && computeProblem.empty() && computeRasterWins(context_));
+        raster == RasterChoice::Compute ||
+        (raster == RasterChoice::Auto && computeProblem.empty() && computeRasterWins(context_));
     visibility_ =
         std::make_unique<VisibilityBuffer>(context_, *gpuScene_, compute, settings_.width, settings_.height);
     return;
   }
-  if (raster == "compute")
+  if (raster == RasterChoice::Compute)
     throw InputError(
         fmt::format("--raster compute: the visibility buffer is unavailable: {}", surfacesFallback_));
   fmt::print(stderr, "lll: warning: --surfaces visibility: {}; rendering with --surfaces gbuffer\n",
@@ -219,10 +231,11 @@ void Renderer::updateUniforms() {
   u.counts = glm::uvec4(gpuScene_->lightCount(), tile, divideRoundingUp(settings_.width, tile),
                         divideRoundingUp(settings_.height, tile));
   u.ambient = glm::vec4(glm::vec3(settings_.ambient), settings_.exposure);
-  const bool debugColors = settings_.debugView == "heatmap" || settings_.debugView == "bounds";
-  u.display =
-      glm::uvec4(debugColors ? gpu::kDisplayDebug : gpu::kDisplayFilmic,
-                 settings_.debugView == "heatmap" ? kHeatmapScale : 0u, 0u, gpuScene_->firstTrailingVpl());
+  const bool debugColors =
+      settings_.debugView == DebugView::Heatmap || settings_.debugView == DebugView::Bounds;
+  u.display = glm::uvec4(debugColors ? gpu::kDisplayDebug : gpu::kDisplayFilmic,
+                         settings_.debugView == DebugView::Heatmap ? kHeatmapScale : 0u, 0u,
+                         gpuScene_->firstTrailingVpl());
   const std::vector<DirectionalLight>& suns = gpuScene_->scene().directionalLights;
   u.display.z = uint32_t(std::min<size_t>(suns.size(), gpu::kMaxDirectionalLights));  // loaders refuse more
   // The sun that casts the shadow goes first (shaders read its shadow as the first's).
@@ -264,9 +277,7 @@ FrameResult Renderer::renderFrame(bool capture) {
 
 // --light-motion: the GPU places moving lights unless something reads their positions on the CPU.
 void Renderer::chooseLightMotion() {
-  const std::string& motion = settings_.lightMotion;
-  if (motion != "auto" && motion != "gpu" && motion != "cpu")
-    throw InputError(fmt::format("--light-motion {}: expected auto, gpu or cpu", motion));
+  const LightPlacement motion = settings_.lightMotion;
   std::string cpuReader;
   if (findTechnique(settings_.technique).readsLightsOnCpu)
     cpuReader = fmt::format("--technique {} places its light volumes on the CPU", settings_.technique);
@@ -274,9 +285,9 @@ void Renderer::chooseLightMotion() {
     cpuReader = "--shadows all places the lights' shadow views on the CPU";
   else if (scene_.movingIndirect)
     cpuReader = "--gi traces the moving lights' photons on the CPU";
-  if (motion == "gpu" && !cpuReader.empty())
+  if (motion == LightPlacement::Gpu && !cpuReader.empty())
     throw InputError(fmt::format("--light-motion gpu: {}", cpuReader));
-  if (motion == "cpu" || !cpuReader.empty() || scene_.lightAnimation.empty()) return;
+  if (motion == LightPlacement::Cpu || !cpuReader.empty() || scene_.lightAnimation.empty()) return;
   movingLights_ = std::make_unique<MovingLights>(context_, scene_.lightAnimation);
 }
 

@@ -53,6 +53,8 @@ struct FrameResult {
 
 // Throws InputError unless `tile` is 1, 2, 4, 8 or 16 (gpu::kMaxTileSize).
 void validateTileSize(uint32_t tile);
+// The shaders' code of a debug view (shared/lll_types.h's kDebugNone, kDebugHeatmap, ...).
+uint32_t debugViewCode(DebugView view);
 // Checks a requested resolution; throws InputError for zero, negative-as-huge or oversized values.
 void validateResolution(uint32_t width, uint32_t height);
 

@@ -19,8 +19,6 @@ namespace lll {
 namespace {
 
 void validateGi(const GiRequest& gi) {
-  if (gi.mode != "none" && gi.mode != "vpl" && gi.mode != "vpl-only")
-    throw InputError(fmt::format("--gi {}: expected none, vpl or vpl-only", gi.mode));
   if (gi.photons < 1 || gi.photons > gi::kMaxPhotons)
     throw InputError(fmt::format("--photons {}: expected 1 to {}", gi.photons, gi::kMaxPhotons));
   if (gi.bounces < 1 || gi.bounces > gi::kMaxBounces)
@@ -38,16 +36,14 @@ void validateGi(const GiRequest& gi) {
   if (!(gi.vplRange >= 0.0f && gi.vplRange <= 1e6f))
     throw InputError(
         fmt::format("--vpl-range {}: expected metres in [0, 1e6] (0: from --vpl-cutoff)", gi.vplRange));
-  if (gi.hierarchy != "none" && gi.hierarchy != "grid")
-    throw InputError(fmt::format("--vpl-hierarchy {}: expected none or grid", gi.hierarchy));
   if (!(gi.vplAlpha >= gi::kMinHierarchyAlpha && gi.vplAlpha <= gi::kMaxHierarchyAlpha))
     throw InputError(fmt::format("--vpl-alpha {}: expected {} to {} (cells)", gi.vplAlpha,
                                  gi::kMinHierarchyAlpha, gi::kMaxHierarchyAlpha));
-  if (gi.hierarchy == "grid" && gi.vplCount == 0)
+  if (gi.hierarchy == GiHierarchy::Grid && gi.vplCount == 0)
     throw InputError(
         "--vpl-count 0: the lighting grid hierarchy (--vpl-hierarchy grid, the default) needs a count to "
         "choose its finest cells; add --vpl-hierarchy none to keep every deposit as its own light");
-  if (gi.hierarchy == "grid" && gi.vplRange > 0.0f)
+  if (gi.hierarchy == GiHierarchy::Grid && gi.vplRange > 0.0f)
     throw InputError(
         fmt::format("--vpl-range {}: the lighting grid hierarchy (--vpl-hierarchy grid, the "
                     "default) sets every VPL's range; add --vpl-hierarchy none for a fixed range",
@@ -65,12 +61,12 @@ void addIndirectLight(Scene& scene, const SceneRequest& request, std::vector<std
   options.vplCount = request.gi.vplCount;
   options.cutoff = request.gi.vplCutoff;
   options.range = request.gi.vplRange;
-  options.hierarchy = request.gi.hierarchy == "grid";
+  options.hierarchy = request.gi.hierarchy == GiHierarchy::Grid;
   options.alpha = request.gi.vplAlpha;
   options.seed = request.seed;
   if (report) options.progress = report->progress;
   gi::PhotonStats stats;
-  const bool vplOnly = request.gi.mode == "vpl-only";
+  const bool vplOnly = request.gi.mode == GiMode::VplOnly;
   const uint64_t others = vplOnly ? 0 : scene.lights.size();
   std::vector<Light> vpls;
   if (request.movingLights && !scene.lightAnimation.empty() && request.gi.retrace > 0) {
@@ -201,7 +197,7 @@ Scene loadScene(const SceneRequest& request, std::vector<std::string>* warnings,
       warnings->push_back("--time/--animate move the --lights lights, and there are none: nothing moves");
   }
   addSuns(scene, request.suns);
-  if (request.gi.mode != "none") addIndirectLight(scene, request, warnings, gi);
+  if (request.gi.mode != GiMode::None) addIndirectLight(scene, request, warnings, gi);
   return scene;
 }
 

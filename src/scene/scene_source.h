@@ -1,10 +1,13 @@
 #pragma once
 // Turns the SCENE argument into a Scene: a built-in name or a .gltf/.glb path; then adds the
 // seeded random lights asked for with --lights.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 
+#include "core/enum_names.h"
 #include "gi/photons.h"
 #include "scene/scene.h"
 
@@ -13,18 +16,31 @@ namespace lll {
 // Largest --light-range-scale: beyond it every random light covers the whole default scene.
 inline constexpr float kMaxLightRangeScale = 16.0f;
 
+// --gi: none | vpl | vpl-only (the VPLs alone: the indirect light by itself).
+enum class GiMode : uint8_t { None, Vpl, VplOnly };
+template <>
+struct EnumNames<GiMode> {
+  static constexpr std::array<std::string_view, 3> names{"none", "vpl", "vpl-only"};
+};
+
+// --vpl-hierarchy: grid (the lighting grid hierarchy over the VPLs, gi/vpl_hierarchy.h) | none (one
+// grid, ranges from --vpl-cutoff or --vpl-range).
+enum class GiHierarchy : uint8_t { None, Grid };
+template <>
+struct EnumNames<GiHierarchy> {
+  static constexpr std::array<std::string_view, 2> names{"none", "grid"};
+};
+
 // --gi: instant radiosity (gi/photons.h). Photons are traced from the scene's lights, the --lights
 // included, and the virtual point lights they leave are added to the scene as lights.
 struct GiRequest {
-  std::string mode = "none";  // none | vpl | vpl-only (the VPLs alone: the indirect light by itself)
+  GiMode mode = GiMode::None;
   uint32_t photons = gi::kDefaultPhotons;
   uint32_t bounces = gi::kDefaultBounces;
   uint32_t vplCount = gi::kDefaultVplCount;  // 0: one VPL per deposit, unmerged
   float vplCutoff = gi::kDefaultVplCutoff;
-  float vplRange = 0.0f;  // metres; 0: from the cutoff
-  // grid | none: the lighting grid hierarchy over the VPLs (gi/vpl_hierarchy.h), with its accuracy;
-  // none: one grid, ranges from vplCutoff or vplRange.
-  std::string hierarchy = "grid";
+  float vplRange = 0.0f;                      // metres; 0: from the cutoff
+  GiHierarchy hierarchy = GiHierarchy::Grid;  // with vplAlpha, its accuracy
   float vplAlpha = gi::kDefaultHierarchyAlpha;
   // With moving lights: their photons traced again per frame (gi/moving_vpls.h); 0: the VPLs stay
   // where the photons were first traced.

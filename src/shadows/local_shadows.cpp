@@ -50,9 +50,9 @@ LocalShadowOptions localShadowOptions(const RenderSettings& s) {
   if (s.shadowLightResolution < 16 || s.shadowLightResolution > 4096)
     throw InputError(
         fmt::format("--shadow-light-resolution {}: expected 16 to 4096 texels", s.shadowLightResolution));
-  o.lights = s.shadows == "all" ? s.shadowLights : 0;
+  o.lights = s.shadows == ShadowMode::All ? s.shadowLights : 0;
   o.resolution = s.shadowLightResolution;
-  o.filter = s.shadowFilter == "none" ? gpu::kShadowFilterNone : gpu::kShadowFilterPcf;
+  o.filter = s.shadowFilter == ShadowFilter::None ? gpu::kShadowFilterNone : gpu::kShadowFilterPcf;
   o.raster = s.shadowRaster;
   return o;
 }

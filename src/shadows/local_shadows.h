@@ -56,7 +56,7 @@ struct LocalShadowOptions {
   uint32_t lights = 0;        // K, the most lights that cast each frame; 0: none
   uint32_t resolution = 512;  // texels along each view's side
   uint32_t filter = gpu::kShadowFilterPcf;
-  std::string raster = "auto";  // hardware | compute | auto, as the sun's (--shadow-raster)
+  RasterChoice raster = RasterChoice::Auto;  // as the sun's (--shadow-raster)
 };
 
 // The options `settings` ask for (--shadows all, --shadow-lights, --shadow-light-resolution,

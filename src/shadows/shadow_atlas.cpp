@@ -19,10 +19,10 @@ ShadowAtlas::ShadowAtlas(Context& context, const GpuScene& scene, const ShadowAt
     casters_ = std::make_unique<ShadowCasters>(context, scene);
     // auto: compute where it fits, on a GPU (bench/README.md, "The sun's shadow").
     const std::string problem = ShadowRaster::problem(context, desc.width, desc.height);
-    if (desc.raster == "compute" && !problem.empty())
+    if (desc.raster == RasterChoice::Compute && !problem.empty())
       throw InputError(fmt::format("{}: {}", desc.request, problem));
-    compute =
-        desc.raster == "compute" || (desc.raster == "auto" && problem.empty() && !context.isCpuDevice());
+    compute = desc.raster == RasterChoice::Compute ||
+              (desc.raster == RasterChoice::Auto && problem.empty() && !context.isCpuDevice());
   }
   // The compute rasterizer writes an R32F atlas itself, unless the hardware must draw alpha-masked
   // casters over its depths: then they are copied into a D32 one.

@@ -11,6 +11,7 @@
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
+#include "render/settings.h"
 #include "shadows/shadow_casters.h"
 
 namespace lll {
@@ -23,11 +24,11 @@ struct FrameContext;
 struct ShadowAtlasDesc {
   uint32_t width = 1;
   uint32_t height = 1;
-  uint32_t maxViews = 0;        // 0: nothing casts; the atlas is cleared each frame and never drawn
-  std::string raster = "auto";  // hardware | compute | auto (compute on a GPU where it fits)
-  std::string pass;             // the passes' names ("shadow-sun")
-  std::string image;            // the image's name ("sun-shadow-atlas")
-  std::string request;          // the options that asked for it, for a refusal ("--shadow-raster compute")
+  uint32_t maxViews = 0;  // 0: nothing casts; the atlas is cleared each frame and never drawn
+  RasterChoice raster = RasterChoice::Auto;  // auto: compute on a GPU where it fits
+  std::string pass;                          // the passes' names ("shadow-sun")
+  std::string image;                         // the image's name ("sun-shadow-atlas")
+  std::string request;  // the options that asked for it, for a refusal ("--shadow-raster compute")
 };
 
 class ShadowAtlas {

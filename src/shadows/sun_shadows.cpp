@@ -40,20 +40,14 @@ std::pair<float, float> sliceSphere(float d0, float d1, float diagonal) {
 
 SunShadowOptions sunShadowOptions(const RenderSettings& s) {
   SunShadowOptions o;
-  if (s.shadows != "sun" && s.shadows != "all" && s.shadows != "none")
-    throw InputError(fmt::format("--shadows {}: expected sun, all or none", s.shadows));
   if (s.cascades < 1 || s.cascades > gpu::kMaxCascades)
     throw InputError(fmt::format("--cascades {}: expected 1 to {}", s.cascades, gpu::kMaxCascades));
   if (s.shadowResolution < 16 || s.shadowResolution > 8192)
     throw InputError(fmt::format("--shadow-resolution {}: expected 16 to 8192 texels", s.shadowResolution));
-  if (s.shadowFilter != "pcf" && s.shadowFilter != "none")
-    throw InputError(fmt::format("--shadow-filter {}: expected pcf or none", s.shadowFilter));
-  if (s.shadowRaster != "hardware" && s.shadowRaster != "compute" && s.shadowRaster != "auto")
-    throw InputError(fmt::format("--shadow-raster {}: expected hardware, compute or auto", s.shadowRaster));
   o.raster = s.shadowRaster;
-  o.cascades = s.shadows == "none" ? 0 : s.cascades;
+  o.cascades = s.shadows == ShadowMode::None ? 0 : s.cascades;
   o.resolution = s.shadowResolution;
-  o.filter = s.shadowFilter == "pcf" ? gpu::kShadowFilterPcf : gpu::kShadowFilterNone;
+  o.filter = s.shadowFilter == ShadowFilter::Pcf ? gpu::kShadowFilterPcf : gpu::kShadowFilterNone;
   return o;
 }
 

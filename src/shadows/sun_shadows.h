@@ -44,7 +44,7 @@ struct SunShadowOptions {
   uint32_t cascades = 4;       // 1 to kMaxCascades; 0: the sun casts no shadow
   uint32_t resolution = 2048;  // texels along each cascade's side
   uint32_t filter = gpu::kShadowFilterPcf;
-  std::string raster = "auto";  // hardware | compute | auto
+  RasterChoice raster = RasterChoice::Auto;
 };
 
 // The options `settings` ask for (--shadows, --cascades, --shadow-resolution, --shadow-filter),

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "render/settings.h"
 
 namespace lll::view {
 
@@ -90,6 +91,9 @@ std::vector<ScriptEvent> parseInputScript(const std::string& text, const std::st
     if (!firsts.empty() && std::find(firsts.begin(), firsts.end(), e.args[0]) == firsts.end())
       throw InputError(fmt::format("{}: {} '{}': expected one of {}", e.where, e.verb, e.args[0],
                                    fmt::join(firsts, ", ")));
+    if (e.verb == "set" && e.args[0] == "debug-view" && !enumFromName<DebugView>(e.args[1]))
+      throw InputError(
+          fmt::format("{}: set debug-view '{}': expected {}", e.where, e.args[1], enumChoices<DebugView>()));
     if (e.verb == "key" && e.args[1] != "down" && e.args[1] != "up")
       throw InputError(fmt::format("{}: key {} '{}': expected down or up", e.where, e.args[0], e.args[1]));
     if (e.verb == "look" || e.verb == "wheel" || e.verb == "resize")

@@ -317,7 +317,7 @@ void Viewer::applyScriptSet(const ScriptEvent& e) {
   if (option == "technique")
     settings_.technique = value;  // an unknown name fails in rebuild(), shown as a message
   else if (option == "debug-view")
-    settings_.debugView = value;
+    settings_.debugView = enumFromName<DebugView>(value).value();  // checked by parseInputScript
   else if (option == "exposure")
     settings_.exposure = std::clamp(scriptNumber(e, 1), 1e-6f, 1e6f);
   else if (option == "lights")

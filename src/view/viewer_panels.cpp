@@ -32,6 +32,14 @@ bool choice(const char* label, T& value, const std::vector<T>& options) {
   return changed;
 }
 
+// A combo box over every value of an option, by name.
+template <NamedEnum E>
+bool choice(const char* label, E& value) {
+  std::vector<E> options;
+  for (size_t i = 0; i < EnumNames<E>::names.size(); ++i) options.push_back(static_cast<E>(i));
+  return choice(label, value, options);
+}
+
 // A number field that applies on Enter or when left (editing a light count must not reload the
 // scene at every keystroke).
 bool committedUint(const char* label, uint32_t& value, uint32_t lo, uint32_t hi) {
@@ -117,24 +125,24 @@ void Viewer::drawControls() {
     std::vector<std::string> names;
     for (const TechniqueInfo& t : techniques()) names.push_back(t.name);
     choice("technique", settings_.technique, names);
-    choice("debug view", settings_.debugView, {"none", "heatmap", "bounds", "tiles"});
+    choice("debug view", settings_.debugView);
     choice("tile (0: the technique's)", settings_.tileSize, {0, 1, 2, 4, 8, 16});
     if (settings_.technique == "lll") {
-      choice("fill", settings_.lllFill, {"compute", "shells", "ray"});
-      if (settings_.lllFill == "compute")
+      choice("fill", settings_.lllFill);
+      if (settings_.lllFill == LllFill::Compute)
         committedUint("fill splits (0: auto)", settings_.lllFillSplits, 0, 64);
       choice("slices", settings_.lllSlices, {1, 2, 4, 8, 16, 32});
-      choice("link", settings_.lllLink, {"auto", "compact", "wide"});
-      choice("shade", settings_.lllShade, {"compute", "fragment"});
+      choice("link", settings_.lllLink);
+      choice("shade", settings_.lllShade);
     }
     if (settings_.technique == "clustered") choice("cluster slices", settings_.clusterSlices, {4, 8, 16, 32});
     if (settings_.technique == "deferred") {
-      choice("translucent", settings_.deferredTranslucent, {"forward", "unlit"});
-      choice("anti-aliasing", settings_.antiAliasing, {"none", "edge"});
+      choice("translucent", settings_.deferredTranslucent);
+      choice("anti-aliasing", settings_.antiAliasing);
     }
-    choice("surfaces", settings_.surfaces, {"visibility", "gbuffer"});
-    choice("glass", settings_.glass, {"compute", "raster"});
-    choice("raster", settings_.raster, {"auto", "hardware", "compute"});
+    choice("surfaces", settings_.surfaces);
+    choice("glass", settings_.glass);
+    choice("raster", settings_.raster);
   }
   if (ImGui::CollapsingHeader("Lights")) {
     committedUint("random lights", request_.extraLights, 0, gpu::kMaxLights);
@@ -169,30 +177,30 @@ void Viewer::drawControls() {
     if (edited) request_.suns = suns;
   }
   if (ImGui::CollapsingHeader("Shadows")) {
-    choice("shadows", settings_.shadows, {"sun", "all", "none"});
-    if (settings_.shadows == "all") committedUint("shadow lights", settings_.shadowLights, 0, 1024);
+    choice("shadows", settings_.shadows);
+    if (settings_.shadows == ShadowMode::All) committedUint("shadow lights", settings_.shadowLights, 0, 1024);
     choice("cascades", settings_.cascades, {1, 2, 3, 4});
     choice("cascade texels", settings_.shadowResolution, {512, 1024, 2048, 4096});
-    choice("filter", settings_.shadowFilter, {"pcf", "none"});
-    if (settings_.shadows == "all")
+    choice("filter", settings_.shadowFilter);
+    if (settings_.shadows == ShadowMode::All)
       choice("light shadow texels", settings_.shadowLightResolution, {128, 256, 512, 1024, 2048});
-    choice("shadow raster", settings_.shadowRaster, {"auto", "hardware", "compute"});
+    choice("shadow raster", settings_.shadowRaster);
   }
   if (ImGui::CollapsingHeader("Indirect light")) {
-    choice("gi", request_.gi.mode, {"none", "vpl", "vpl-only"});
+    choice("gi", request_.gi.mode);
     committedUint("photons", request_.gi.photons, 1, gi::kMaxPhotons);
     committedUint("bounces", request_.gi.bounces, 1, gi::kMaxBounces);
     committedUint("VPL count", request_.gi.vplCount, 0, gpu::kMaxLights);
     // The lighting grid hierarchy (gi/vpl_hierarchy.h): its levels' bands replace cutoff and range.
-    choice("VPL hierarchy", request_.gi.hierarchy, {"none", "grid"});
-    if (request_.gi.hierarchy == "grid") {
+    choice("VPL hierarchy", request_.gi.hierarchy);
+    if (request_.gi.hierarchy == GiHierarchy::Grid) {
       float alpha = request_.gi.vplAlpha;
       ImGui::DragFloat("hierarchy alpha", &alpha, 0.05f, gi::kMinHierarchyAlpha, gi::kMaxHierarchyAlpha,
                        "%.2f");
       if (ImGui::IsItemDeactivatedAfterEdit())
         request_.gi.vplAlpha = std::clamp(alpha, gi::kMinHierarchyAlpha, gi::kMaxHierarchyAlpha);
     }
-    if (request_.gi.hierarchy != "grid") {  // the hierarchy's bands set the ranges
+    if (request_.gi.hierarchy != GiHierarchy::Grid) {  // the hierarchy's bands set the ranges
       float cutoff = request_.gi.vplCutoff;
       ImGui::DragFloat("VPL cutoff", &cutoff, 1e-5f, 1e-9f, 1.0f, "%.2e", ImGuiSliderFlags_Logarithmic);
       if (ImGui::IsItemDeactivatedAfterEdit()) request_.gi.vplCutoff = std::clamp(cutoff, 1e-9f, 1.0f);
@@ -216,9 +224,9 @@ void Viewer::drawControls() {
     }
     if (!settings_.particles.empty()) {
       committedUint("count (0: preset's)", settings_.particleCount, 0, 1000000);
-      choice("lighting", settings_.particleLighting, {"pixel", "atlas", "vertex"});
-      choice("render", settings_.particleRender, {"auto", "raster", "compute"});
-      choice("resolution", settings_.particleResolution, {"full", "half", "quarter"});
+      choice("lighting", settings_.particleLighting);
+      choice("render", settings_.particleRender);
+      choice("resolution", settings_.particleResolution);
       if (ImGui::Button("edit preset")) {
         editorOpen_ = true;
         if (!edited_) loadPresetForEditing();
