@@ -98,16 +98,6 @@ VkPipelineLayout createLayout(Context& context, VkDescriptorSetLayout pushSet,
 
 }  // namespace
 
-PipelineLayout::PipelineLayout(Context& context, std::initializer_list<Binding> bindings, uint32_t pushBytes,
-                               VkShaderStageFlags pushStages, std::vector<VkDescriptorSetLayout> extraSets)
-    : context_(&context) {
-  std::vector<VkDescriptorSetLayoutBinding> vkBindings;
-  for (const Binding& b : bindings) vkBindings.push_back({b.binding, b.type, 1, b.stages, nullptr});
-  pushSet_ = createPushSetLayout(context, vkBindings);
-  layout_ = createLayout(context, pushSet_, extraSets, pushBytes, pushStages);
-  for (const VkDescriptorSetLayoutBinding& b : vkBindings) pushBindings_.push_back(b.binding);
-}
-
 PipelineLayout::PipelineLayout(Context& context, std::initializer_list<std::string_view> shaders,
                                std::vector<VkDescriptorSetLayout> extraSets,
                                const SpecializationConstants& constants)

@@ -14,12 +14,6 @@ namespace lll {
 
 class Context;
 
-struct Binding {
-  uint32_t binding;
-  VkDescriptorType type;
-  VkShaderStageFlags stages;
-};
-
 struct ShaderInterface;
 
 // Specialization constant values by constant_id.
@@ -34,10 +28,6 @@ class PipelineLayout {
   PipelineLayout(Context& context, std::initializer_list<std::string_view> shaders,
                  std::vector<VkDescriptorSetLayout> extraSets = {},
                  const SpecializationConstants& constants = {});
-  // set 0: push descriptors with `bindings`; then `extraSets` (not owned); push constants of
-  // `pushBytes` visible to `pushStages`.
-  PipelineLayout(Context& context, std::initializer_list<Binding> bindings, uint32_t pushBytes = 0,
-                 VkShaderStageFlags pushStages = 0, std::vector<VkDescriptorSetLayout> extraSets = {});
   ~PipelineLayout();
   PipelineLayout(PipelineLayout&& other) noexcept;
   PipelineLayout& operator=(PipelineLayout&& other) noexcept;

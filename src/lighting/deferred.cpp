@@ -33,14 +33,6 @@ namespace {
 constexpr VkFormat kAccumulationFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr double kDepthAndAccumulationBytesPerPixel = 4 + 16;
 
-const std::initializer_list<Binding> kEdgeAaBindings = {
-    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-    {5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-    {6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-    {7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-    {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-};
-
 // Light-volume draw groups: which side of the volume the camera is on picks the pipeline.
 constexpr uint32_t kOutside = 0;
 constexpr uint32_t kInside = 1;
@@ -57,7 +49,7 @@ class Deferred final : public Technique {
  public:
   Deferred(Context& context, const GpuScene& scene, const RenderSettings& settings,
            const FrameTargets& targets, const VisibilityBuffer* visibility)
-      : lightLayout_(context, kLightVolumeBindings),
+      : lightLayout_(context, {"lighting/light_volume.vert", "lighting/deferred_light.frag"}),
         gbuffer_(context, scene, targets, kAccumulationFormat, false, visibility),
         volumes_(context, uint32_t(scene.scene().lights.size())),
         lightFragments_(context),
@@ -67,7 +59,7 @@ class Deferred final : public Technique {
     const VkImageUsageFlags usage =
         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
     accumulation_ = Image(context, targets.width, targets.height, kAccumulationFormat, usage, "accumulation");
-    resolveLayout_ = PipelineLayout(context, kEdgeAaBindings);
+    resolveLayout_ = PipelineLayout(context, {"lighting/deferred_edge_aa.comp"});
     resolvePipeline_ = Pipeline(context, resolveLayout_, "lighting/deferred_edge_aa.comp",
                                 SpecializationConstants{{0, edgeAa_ ? 1u : 0u}});
     createLightPipelines(context);

@@ -32,26 +32,6 @@ constexpr uint32_t kBoundsLayers = 8;
 // Shell meshes of the raster fills: sphere, cone, box (the fill_shell.vert specialization).
 constexpr uint32_t kShellShapes = 3;
 
-constexpr VkShaderStageFlags kAllStages =
-    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
-
-const std::initializer_list<Binding> kBindings = {
-    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kAllStages},
-    {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-    {13, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kAllStages},
-};
-
 // shaders/common/lll_data.glsl's kLinkFormat.
 constexpr uint32_t kLinkFormatConstant = 42;
 
@@ -241,9 +221,11 @@ void LightLinkedList::allocatePool(uint64_t links) {
 }
 
 void LightLinkedList::createPipelines() {
-  layout_ = PipelineLayout(context_, kBindings);
-  fillLayout_ = PipelineLayout(context_, kBindings, sizeof(gpu::FillPush), VK_SHADER_STAGE_VERTEX_BIT);
   const SpecializationConstants constants = linkConstants();
+  // Layouts as the shaders declare them: one for the compute passes, one for the shell fills.
+  layout_ = PipelineLayout(
+      context_, {"lighting/lll/tile_depth.comp", "lighting/lll/stats.comp", "lighting/lll/fill_compute.comp"},
+      {}, constants);
   tileDepthPipeline_ = Pipeline(context_, layout_, "lighting/lll/tile_depth.comp", constants);
   statsPipeline_ = Pipeline(context_, layout_, "lighting/lll/stats.comp", constants);
   if (fill_ == LllFill::Compute)
@@ -253,6 +235,7 @@ void LightLinkedList::createPipelines() {
   fill.vertexShader = "lighting/lll/fill_shell.vert";
   fill.fragmentShader =
       fill_ == LllFill::Ray ? "lighting/lll/fill_ray.frag" : "lighting/lll/fill_shells.frag";
+  fillLayout_ = PipelineLayout(context_, {fill.vertexShader, fill.fragmentShader}, {}, constants);
   fill.vertexInput = VertexInput::Position;
   fill.depthTest = false;  // the software depth test against the tile depth replaces it
   fill.depthWrite = false;
@@ -424,7 +407,7 @@ void LightLinkedList::drawShellBatch(FrameContext& frame, uint32_t first, uint32
     const Pipeline& pipeline = backFaces ? shellBack_[shape] : shellFront_[shape];
     pipeline.bind(cmd);
     descriptors(frame).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fillLayout_);
-    vkCmdPushConstants(cmd, fillLayout_.handle(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(push), &push);
+    vkCmdPushConstants(cmd, fillLayout_.handle(), kGraphicsStages, 0, sizeof(push), &push);
     const VkDeviceSize offset = 0;
     VkBuffer vertices = r.mesh.vertices.handle();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);

@@ -114,7 +114,7 @@ class Prepass final : public Technique {
                     {"common/mesh.vert", "lighting/prepass_normals.frag", "lighting/prepass_combine.frag"},
                     {scene.materialSetLayout()}),
         sunShadowLayout_(context, {"lighting/prepass_sun_shadow.comp"}),
-        lightLayout_(context, kLightVolumeBindings),
+        lightLayout_(context, {"lighting/light_volume.vert", "lighting/prepass_light.frag"}),
         depthStencilFormat_(depthStencilFormat(context)),
         volumes_(context, uint32_t(scene.scene().lights.size())),
         pixels_(double(targets.width) * targets.height) {

@@ -22,21 +22,6 @@ struct FrameContext;
 
 enum class VolumeShape : uint32_t { Sphere, Cone };
 
-// Set 0 of a light-volume pass (shaders/lighting/light_volume.glsl): frame uniforms (0), lights (1),
-// the placed volumes (3), the depth (5), the local lights' shadows (28, 29), all written by
-// addBindings, and up to two of the technique's own screen targets (6, 7: deferred's G-buffer,
-// prepass's normals).
-inline const std::initializer_list<Binding> kLightVolumeBindings = {
-    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-    {5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {28, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {29, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
-};
-
 struct PlacedLightVolume {
   gpu::LightVolume gpu;
   VolumeShape shape = VolumeShape::Sphere;
@@ -84,8 +69,9 @@ class LightVolumeDraws {
   const LightVolumeCounts& counts() const { return counts_; }
   std::vector<VolumeRun> runs() const;
 
-  // The bindings every light-volume pass shares (0, 1, 3, 5, 28, 29 of kLightVolumeBindings) for
-  // `frame`.
+  // The bindings every light-volume pass shares (shaders/lighting/light_volume.glsl: frame uniforms
+  // 0, lights 1, the placed volumes 3, the depth 5, the local lights' shadows 28, 29) for `frame`;
+  // a technique adds its own screen targets.
   DescriptorWriter& addBindings(DescriptorWriter& writer, const FrameContext& frame) const;
   void bindGeometry(VkCommandBuffer cmd) const;
   // Draws volumes [first, first + count) of prepare()'s list, which must all have `shape`.

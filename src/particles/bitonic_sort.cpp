@@ -43,8 +43,7 @@ BitonicSort::BitonicSort(Context& context, uint32_t count)
       block_(chooseBlock(context.properties().limits)),
       threads_(chooseThreads(context.properties().limits, block_)),
       padded_(std::max(std::bit_ceil(std::max(count, 1u)), block_)),
-      layout_(context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT}},
-              sizeof(gpu::SortPush), VK_SHADER_STAGE_COMPUTE_BIT) {
+      layout_(context, {"particles/sort_local.comp", "particles/sort_global.comp"}) {
   sortBlocks_ = Pipeline(context, layout_, "particles/sort_local.comp", {threads_, 0, block_});
   mergeInBlocks_ = Pipeline(context, layout_, "particles/sort_local.comp", {threads_, 1, block_});
   for (uint32_t steps = 1; steps <= kMaxFusedSteps; ++steps)

@@ -56,11 +56,6 @@ DescriptorWriter meshPassDescriptors(const FrameContext& frame) {
   return writer;
 }
 
-PipelineLayout meshPassLayout(Context& context, const GpuScene& scene) {
-  return PipelineLayout(context, kMeshPassBindings, sizeof(gpu::DrawPush), kGraphicsStages,
-                        {scene.materialSetLayout()});
-}
-
 void drawSceneIntoHdr(FrameContext& frame, const Pipeline& pipeline, const PipelineLayout& layout,
                       DrawFilter filter, bool clearHdr) {
   const FrameTargets& t = frame.targets;

@@ -94,17 +94,9 @@ void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
 inline constexpr VkShaderStageFlags kGraphicsStages =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
-// Set 0 of a mesh pass: frame uniforms (0), lights (1), materials (2); meshPassDescriptors writes it,
-// and the sun's shadow (26, 27) for the passes that light (their reflected layouts have them).
-inline const std::initializer_list<Binding> kMeshPassBindings = {
-    {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kGraphicsStages},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-};
+// Set 0 of a mesh pass: frame uniforms (0), lights (1), materials (2), and the shadows for the
+// passes that light; each pass's reflected layout takes the bindings its shaders declare.
 DescriptorWriter meshPassDescriptors(const FrameContext& frame);
-// The layout of a pass that draws the scene with kMeshPassBindings: set 0 pushed, set 1 the
-// material's textures, the per-draw push constants.
-PipelineLayout meshPassLayout(Context& context, const GpuScene& scene);
 
 // The specialization constants of common/brdf.glsl: whether the scene has spot and box lights, so a
 // pass can compile the other light types' branches out of its light evaluation.

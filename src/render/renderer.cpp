@@ -88,7 +88,8 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   chooseLightMotion();
   updateUniforms();
 
-  depthLayout_ = meshPassLayout(context, *gpuScene_);
+  depthLayout_ = PipelineLayout(context, {"common/mesh.vert", "common/depth_mask.frag"},
+                                {gpuScene_->materialSetLayout()});
   GraphicsPipelineDesc depth;
   depth.vertexShader = "common/mesh.vert";
   depth.depthFormat = kDepthFormat;
@@ -96,10 +97,7 @@ Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& s
   depth.fragmentShader = "common/depth_mask.frag";
   depthMask_ = Pipeline(context, depthLayout_, depth);
 
-  tonemapLayout_ =
-      PipelineLayout(context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-                               {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-                               {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}});
+  tonemapLayout_ = PipelineLayout(context, {"post/tonemap.comp"});
   tonemap_ = Pipeline(context, tonemapLayout_, "post/tonemap.comp");
   if (auto options = particleOptions(scene, settings))
     particles_ = std::make_unique<ParticleSystem>(context, *options);
