@@ -7,7 +7,7 @@
 #include <string>
 
 #include "render/image_compare.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 
 namespace lll::test {
 

@@ -88,7 +88,7 @@ TEST(GiReferenceBrdf, AttenuationIsTheRenderersWindowedInverseSquare) {
 TEST(GiReferenceCamera, RaysGoThroughTheRenderersPixelCentres) {
   const Camera camera{"c", {1, 2, 3}, {-2, 0.5f, -1}, {0, 1, 0}, 1.1f};
   const uint32_t width = 40, height = 30;
-  // render/renderer.cpp's matrices: lookAt, reverse-Z perspective, Vulkan's y down.
+  // renderer/renderer.cpp's matrices: lookAt, reverse-Z perspective, Vulkan's y down.
   glm::mat4 proj = glm::perspectiveRH_ZO(camera.yfov, float(width) / float(height), 100.0f, 0.01f);
   proj[1][1] *= -1.0f;
   const glm::mat4 inverse = glm::inverse(proj * glm::lookAt(camera.eye, camera.target, camera.up));

@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "render/image_compare.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
 #include "test_support.h"

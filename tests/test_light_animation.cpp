@@ -13,7 +13,7 @@
 #include "core/errors.h"
 #include "image_bound.h"
 #include "render/image_io.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "scene/light_animation.h"
 #include "scene/scene_source.h"
 #include "test_support.h"

@@ -7,7 +7,7 @@
 
 #include "core/errors.h"
 #include "render/frame.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_source.h"
 #include "shared/gpu_types.h"

@@ -11,7 +11,7 @@
 #include "core/errors.h"
 #include "gi/moving_vpls.h"
 #include "gi_test_support.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "scene/scene_source.h"
 #include "shared/limits.h"
 #include "test_support.h"

@@ -15,7 +15,7 @@
 #include "core/errors.h"
 #include "gpu/context.h"
 #include "image_bound.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_source.h"
 

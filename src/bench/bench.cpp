@@ -20,7 +20,7 @@
 #include "lighting/technique.h"
 #include "particles/presets.h"
 #include "render/image_compare.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "scene/light_animation.h"
 
 namespace lll::bench {

@@ -72,7 +72,7 @@ struct RadianceImage {
   const glm::vec3& at(uint32_t x, uint32_t y) const { return rgb[size_t(y) * width + x]; }
 };
 
-// The rays through pixel centres of the renderer's view and projection (render/renderer.cpp:
+// The rays through pixel centres of the renderer's view and projection (renderer/renderer.cpp:
 // lookAt with the camera's up, or -z when up is along the view; perspective at yfov and the image's
 // aspect ratio; row 0 at the top).
 class PixelRays {

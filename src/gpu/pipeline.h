@@ -134,4 +134,15 @@ class DescriptorWriter {
   std::vector<Entry> entries_;
 };
 
+// Something whose resources the passes after it read through their set 0 (the sun's and the local
+// lights' shadows): it adds its writes to a pass's, so that the frame's shared code binds it
+// without knowing what it is.
+class DescriptorSource {
+ public:
+  virtual void bind(DescriptorWriter& writer) const = 0;
+
+ protected:
+  ~DescriptorSource() = default;
+};
+
 }  // namespace lll

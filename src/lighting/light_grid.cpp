@@ -11,7 +11,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/vk_check.h"
 #include "lighting/light_bins.h"
-#include "render/renderer.h"
+#include "render/frame.h"
 #include "shared/grid_types.h"
 #include "shared/lll_types.h"
 

@@ -15,9 +15,8 @@
 #include "gpu/vk_check.h"
 #include "lighting/light_bins.h"
 #include "lighting/light_volumes.h"
-#include "particles/particle_system.h"
+#include "render/frame.h"
 #include "render/interleaved_vpls.h"
-#include "render/renderer.h"
 #include "render/visibility.h"
 #include "shared/lll_types.h"
 

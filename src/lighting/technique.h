@@ -12,7 +12,7 @@
 
 namespace lll {
 
-// The frame every technique shares (render/renderer.h): visibility (or depth) pass -> the
+// The frame every technique shares (renderer/renderer.h): visibility (or depth) pass -> the
 // technique's light data passes -> opaque shading (its own, or the shared pass through its lighting
 // interface) -> glass -> particles -> tonemap. A technique is the parts that are its own.
 class Technique {

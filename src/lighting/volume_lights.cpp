@@ -10,7 +10,6 @@
 #include "lighting/light_volumes.h"
 #include "render/frame.h"
 #include "render/gpu_scene.h"
-#include "shadows/local_shadows.h"
 
 namespace lll {
 

@@ -8,8 +8,6 @@
 #include "gpu/context.h"
 #include "particles/particle_system.h"
 #include "render/frame.h"
-#include "shadows/local_shadows.h"
-#include "shadows/sun_shadows.h"
 
 namespace lll {
 

@@ -6,10 +6,10 @@
 
 #include "core/errors.h"
 #include "gpu/context.h"
-#include "shadows/local_shadows.h"
-#include "shadows/sun_shadows.h"
 
 #include "gpu/pipeline.h"
+#include "shared/limits.h"
+#include "shared/lll_types.h"
 
 namespace lll {
 
@@ -44,6 +44,31 @@ void beginRendering(VkCommandBuffer cmd, uint32_t width, uint32_t height,
   const VkRect2D scissor{{0, 0}, {width, height}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+void validateTileSize(uint32_t tile) {
+  if (tile == 0 || tile > gpu::kMaxTileSize || (tile & (tile - 1)) != 0)
+    throw InputError(fmt::format("--tile {}: expected 1, 2, 4, 8 or 16", tile));
+}
+
+uint32_t debugViewCode(DebugView view) {
+  switch (view) {
+    case DebugView::None:
+      return gpu::kDebugNone;
+    case DebugView::Heatmap:
+      return gpu::kDebugHeatmap;
+    case DebugView::Bounds:
+      return gpu::kDebugBounds;
+    case DebugView::Tiles:
+      return gpu::kDebugTiles;
+  }
+  throw std::invalid_argument("debugViewCode: not a DebugView");
+}
+
+void validateResolution(uint32_t width, uint32_t height) {
+  if (width == 0 || height == 0 || width > gpu::kMaxImageSide || height > gpu::kMaxImageSide)
+    throw InputError(fmt::format("resolution {}x{}: width and height must be between 1 and {}", width, height,
+                                 gpu::kMaxImageSide));
 }
 
 DescriptorWriter meshPassDescriptors(const FrameContext& frame) {

@@ -17,9 +17,6 @@
 namespace lll {
 
 class Context;
-class ParticleSystem;
-class SunShadows;
-class LocalShadows;
 class VisibilityBuffer;
 
 // Screen-sized targets. Their layouts are the frame graph's business (render/frame_graph.h).
@@ -60,18 +57,15 @@ struct FrameContext {
   const gpu::FrameUniforms& uniforms;
   const RenderSettings& settings;
   bool capture;  // the frame is read back: techniques may add diagnostic passes (stats)
-  // With --particles: sorted and ready to draw; each technique draws them after its glass with
-  // particles->draw(frame, its shading). Null without particles.
-  ParticleSystem* particles = nullptr;
   // With --surfaces visibility: the visibility buffer drawn this frame (targets.visibility holds
   // its ids). Null with --surfaces gbuffer.
   const VisibilityBuffer* visibility = nullptr;
   // The sun's shadow (shadows/sun_shadows.h), drawn before any lighting: meshPassDescriptors binds
   // it for every pass that lights surfaces.
-  const SunShadows* shadows = nullptr;
+  const DescriptorSource* shadows = nullptr;
   // The local lights' shadows (shadows/local_shadows.h), drawn before any lighting: meshPassDescriptors
   // and the light volumes bind them for every pass that evaluates lights.
-  const LocalShadows* lightShadows = nullptr;
+  const DescriptorSource* lightShadows = nullptr;
 };
 
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
@@ -84,6 +78,18 @@ struct ColorTarget {
   bool clear;                      // clear to `clearValue`, else load
   VkClearColorValue clearValue{};  // zeros unless given
 };
+
+struct FrameResult {
+  std::vector<PassTime> passes;  // GPU time of each pass, then "frame"
+  uint32_t rerenders = 0;        // times the frame was recorded again (e.g. link pool growth)
+};
+
+// Throws InputError unless `tile` is 1, 2, 4, 8 or 16 (gpu::kMaxTileSize).
+void validateTileSize(uint32_t tile);
+// The shaders' code of a debug view (shared/lll_types.h's kDebugNone, kDebugHeatmap, ...).
+uint32_t debugViewCode(DebugView view);
+// Checks a requested resolution; throws InputError for zero, negative-as-huge or oversized values.
+void validateResolution(uint32_t width, uint32_t height);
 
 // Begins dynamic rendering over the whole frame, with viewport and scissor set.
 // depthLayout is DEPTH_ATTACHMENT_OPTIMAL for a writing pass, DEPTH_READ_ONLY_OPTIMAL otherwise.

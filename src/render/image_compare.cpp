@@ -1,5 +1,7 @@
 #include "render/image_compare.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>

@@ -4,7 +4,7 @@
 // (tests/image_compare.h); `lll bench` records it beside every timing.
 #include <cstddef>
 
-#include "render/renderer.h"
+#include "render/images.h"
 
 namespace lll {
 

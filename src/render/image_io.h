@@ -3,7 +3,7 @@
 // RGBA, via tinyexr) and PFM (linear float RGB, a trivial format written by hand).
 #include <filesystem>
 
-#include "render/renderer.h"
+#include "render/images.h"
 
 namespace lll {
 

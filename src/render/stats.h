@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "gpu/context.h"
-#include "render/renderer.h"
+#include "render/frame.h"
 
 namespace lll {
 

@@ -2,7 +2,7 @@
 // shaders/post/tonemap.comp's display path on the CPU, for images made without the GPU (the
 // path-traced reference): a PNG of the same radiance then matches `lll render --out` at the same
 // exposure, so the two can be compared side by side.
-#include "render/renderer.h"
+#include "render/images.h"
 
 namespace lll {
 

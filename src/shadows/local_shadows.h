@@ -84,7 +84,7 @@ struct LightView {
 // The views of `light` (one, or six cube faces +x, -x, +y, -y, +z, -z) for `resolution`-texel cells.
 std::vector<LightView> shadowViews(const Light& light, uint32_t resolution);
 
-class LocalShadows {
+class LocalShadows final : public DescriptorSource {
  public:
   // Throws InputError when the atlas for K lights does not fit this device's largest image.
   LocalShadows(Context& context, const GpuScene& scene, const LocalShadowOptions& options);
@@ -98,7 +98,7 @@ class LocalShadows {
   // (an untimed clear when none casts), leaving the atlas readable by every shader stage.
   void record(FrameContext& frame);
   // Bindings 28 (the views) and 29 (the atlas) of a pass that evaluates lights.
-  void bind(DescriptorWriter& writer) const;
+  void bind(DescriptorWriter& writer) const override;
   // The light array was written again (moved lights): the casting lights' views go back into it
   // with the next frame.
   void lightsRewritten();

@@ -61,7 +61,7 @@ int shadowCastingSun(const std::vector<DirectionalLight>& suns);
 gpu::SunShadow fitSunCascades(const gpu::FrameUniforms& frame, const glm::vec3& towardSun,
                               const Bounds& scene, const SunShadowOptions& options);
 
-class SunShadows {
+class SunShadows final : public DescriptorSource {
  public:
   // Throws InputError when the atlas would exceed the device's largest image.
   SunShadows(Context& context, const GpuScene& scene, const SunShadowOptions& options);
@@ -77,7 +77,7 @@ class SunShadows {
   // atlas readable by every shader stage for the rest of the frame.
   void record(FrameContext& frame);
   // Bindings 26 (the cascades) and 27 (the atlas) of a lit pass.
-  void bind(DescriptorWriter& writer) const;
+  void bind(DescriptorWriter& writer) const override;
 
   const gpu::SunShadow& cascades() const { return data_; }
   std::vector<std::pair<std::string, double>> stats() const;

@@ -1,4 +1,4 @@
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "render/compute_raster.h"
 #include "render/lit_passes.h"
 #include "render/visibility.h"
@@ -37,31 +37,6 @@ constexpr uint32_t kHeatmapScale = 32;
 constexpr uint32_t kParticleStepsPerSubmission = 256;
 
 }  // namespace
-
-void validateTileSize(uint32_t tile) {
-  if (tile == 0 || tile > gpu::kMaxTileSize || (tile & (tile - 1)) != 0)
-    throw InputError(fmt::format("--tile {}: expected 1, 2, 4, 8 or 16", tile));
-}
-
-uint32_t debugViewCode(DebugView view) {
-  switch (view) {
-    case DebugView::None:
-      return gpu::kDebugNone;
-    case DebugView::Heatmap:
-      return gpu::kDebugHeatmap;
-    case DebugView::Bounds:
-      return gpu::kDebugBounds;
-    case DebugView::Tiles:
-      return gpu::kDebugTiles;
-  }
-  throw std::invalid_argument("debugViewCode: not a DebugView");
-}
-
-void validateResolution(uint32_t width, uint32_t height) {
-  if (width == 0 || height == 0 || width > gpu::kMaxImageSide || height > gpu::kMaxImageSide)
-    throw InputError(fmt::format("resolution {}x{}: width and height must be between 1 and {}", width, height,
-                                 gpu::kMaxImageSide));
-}
 
 Renderer::Renderer(Context& context, const Scene& scene, const RenderSettings& settings)
     : context_(context),
@@ -359,10 +334,8 @@ void Renderer::recordFrame(VkCommandBuffer cmd, bool capture, bool advancePartic
   timer_.reset(cmd);
   FrameGraph graph(cmd, timer_);
   if (gpuLightTime_) movingLights_->record(graph, gpuScene_->lightBuffer(), *gpuLightTime_);
-  FrameContext frame{
-      context_,           cmd,       graph,   *gpuScene_,       targets_,          uniformBuffer_,
-      uniforms_,          settings_, capture, particles_.get(), visibility_.get(), shadows_.get(),
-      lightShadows_.get()};
+  FrameContext frame{context_,  cmd,       graph,   *gpuScene_,        targets_,       uniformBuffer_,
+                     uniforms_, settings_, capture, visibility_.get(), shadows_.get(), lightShadows_.get()};
   // The shadows first: every lighting pass after them reads them.
   shadows_->record(frame);
   lightShadows_->record(frame);

@@ -12,6 +12,7 @@
 #include "particles/particle_system.h"
 #include "render/frame.h"
 #include "render/gpu_scene.h"
+#include "render/images.h"
 #include "render/moving_lights.h"
 #include "render/settings.h"
 #include "scene/camera.h"
@@ -23,40 +24,6 @@ namespace lll {
 class Context;
 class VisibilityBuffer;
 class LitPasses;
-
-struct HdrImage {
-  uint32_t width = 0;
-  uint32_t height = 0;
-  std::vector<float> rgba;  // linear radiance, row 0 at the top
-  glm::vec4 at(uint32_t x, uint32_t y) const {
-    const float* p = &rgba[(size_t(y) * width + x) * 4];
-    return {p[0], p[1], p[2], p[3]};
-  }
-  // From linear RGB, alpha 1: radiance made on the CPU (the path-traced reference).
-  static HdrImage fromRgb(uint32_t width, uint32_t height, const std::vector<glm::vec3>& rgb) {
-    HdrImage image{width, height, std::vector<float>(rgb.size() * 4, 1.0f)};
-    for (size_t i = 0; i < rgb.size(); ++i) std::copy_n(&rgb[i].x, 3, &image.rgba[i * 4]);
-    return image;
-  }
-};
-
-struct LdrImage {
-  uint32_t width = 0;
-  uint32_t height = 0;
-  std::vector<uint8_t> rgba;  // sRGB-encoded, row 0 at the top
-};
-
-struct FrameResult {
-  std::vector<PassTime> passes;  // GPU time of each pass, then "frame"
-  uint32_t rerenders = 0;        // times the frame was recorded again (e.g. link pool growth)
-};
-
-// Throws InputError unless `tile` is 1, 2, 4, 8 or 16 (gpu::kMaxTileSize).
-void validateTileSize(uint32_t tile);
-// The shaders' code of a debug view (shared/lll_types.h's kDebugNone, kDebugHeatmap, ...).
-uint32_t debugViewCode(DebugView view);
-// Checks a requested resolution; throws InputError for zero, negative-as-huge or oversized values.
-void validateResolution(uint32_t width, uint32_t height);
 
 class Renderer {
  public:
