@@ -350,9 +350,7 @@ TEST_F(GiReferenceCli, BadInputToTheCommandFunctionNamesTheInputAndWritesNothing
   bad.out.reset();
   expectRefused(bad, "--out");
   bad = job;
-  bad.vpls = "sideways";
-  expectRefused(bad, "--vpls sideways");
-  bad.vpls = "shadowed";
+  bad.options.vpls = gi::VplGather::Shadowed;
   bad.options.indirectOnly = true;
   expectRefused(bad, "--indirect");
   bad.options.indirectOnly = false;

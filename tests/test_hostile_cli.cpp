@@ -102,6 +102,7 @@ TEST_F(HostileCli, EveryWordOptionRejectsHostileValues) {
       {{"bench", "--quick"}, "--suite"},
       {{"bench", "--quick", "--suite", "threel"}, "--technique"},
       {{"lll-memory"}, "--link"},
+      {{"reference", "cornell", "--out", outPng()}, "--vpls"},
   };
   for (const OptionCase& c : cases) {
     for (const std::string& value : words) {

@@ -147,10 +147,7 @@ int runReference(const ReferenceJob& job) {
   if (!job.out) throw InputError("--out: required, a .exr, .pfm or .png file");
   gi::ReferenceOptions options = job.options;
   SceneRequest request = job.scene;
-  if (!job.vpls.empty()) {
-    if (job.vpls != "unshadowed" && job.vpls != "shadowed")
-      throw InputError(fmt::format("--vpls {}: expected unshadowed or shadowed", job.vpls));
-    options.vpls = job.vpls == "shadowed" ? gi::VplGather::Shadowed : gi::VplGather::Unshadowed;
+  if (options.vpls != gi::VplGather::Off) {  // the scene's gi options apply to its VPLs
     request.gi.mode = GiMode::VplOnly;
     request.gi.bounces = options.bounces;
   }

@@ -37,7 +37,6 @@ struct ReferenceJob {
   uint32_t height = 720;
   float exposure = 1.0f;  // for a .png only: radiance files are written as computed
   gi::ReferenceOptions options;
-  std::string vpls;  // --vpls: empty, unshadowed or shadowed (the scene's gi options then apply)
   std::optional<std::string> out;  // .exr or .pfm: linear radiance; .png: tonemapped as `lll render`
 };
 int runReference(const ReferenceJob& job);

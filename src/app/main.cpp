@@ -234,12 +234,12 @@ void addReferenceOptions(CLI::App& cmd, lll::ReferenceJob& job) {
   cmd.add_option("--threads", o.threads, "threads (0: one per hardware thread)")
       ->check(CLI::Range(0u, lll::gi::kMaxReferenceThreads));
   CLI::Option* vpls =
-      cmd.add_option("--vpls", job.vpls,
-                     "instead of path tracing: the virtual point lights of `render --gi vpl-only` (photons "
-                     "traced with --bounces, merged as --vpl-count and --vpl-hierarchy say) summed at the "
-                     "camera's hits as the renderer lights them, unshadowed (as the renderer) or shadowed "
-                     "(a shadow ray to each VPL)")
-          ->check(CLI::IsMember({"unshadowed", "shadowed"}));
+      addChoice(cmd, "--vpls", o.vpls,
+                "instead of path tracing: the virtual point lights of `render --gi vpl-only` (photons "
+                "traced with --bounces, merged as --vpl-count and --vpl-hierarchy say) summed at the "
+                "camera's hits as the renderer lights them, unshadowed (as the renderer) or shadowed "
+                "(a shadow ray to each VPL)",
+                {"unshadowed", "shadowed"});
   auto& gi = job.scene.gi;
   cmd.add_option("--photons", gi.photons, "--vpls: photons traced from the lights")
       ->check(CLI::Range(1u, lll::gi::kMaxPhotons))

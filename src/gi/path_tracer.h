@@ -39,6 +39,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "core/enum_names.h"
 #include "gi/photons.h"
 #include "scene/scene.h"
 
@@ -51,7 +52,18 @@ inline constexpr uint32_t kMaxReferenceSpp = 1u << 16;
 inline constexpr size_t kAllLightsLimit = 64;
 inline constexpr uint32_t kMaxReferenceThreads = 1024;
 
-enum class VplGather { Off, Unshadowed, Shadowed };
+// --vpls of `lll reference`: path tracing (off), or the scene's VPLs summed at the camera's hits,
+// without or with a shadow ray to each.
+enum class VplGather : uint8_t { Off, Unshadowed, Shadowed };
+
+}  // namespace lll::gi
+
+template <>
+struct lll::EnumNames<lll::gi::VplGather> {
+  static constexpr std::array<std::string_view, 3> names{"off", "unshadowed", "shadowed"};
+};
+
+namespace lll::gi {
 
 struct ReferenceOptions {
   uint32_t spp = kDefaultReferenceSpp;  // samples per pixel, all through the pixel's centre
