@@ -44,7 +44,7 @@ std::vector<PassTime> AluProbe::run(uint32_t lights) {
       ScopedPass pass(timer_, cmd, name);
       pipeline.bind(cmd);
       DescriptorWriter()
-          .image(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, target_.view(), VK_IMAGE_LAYOUT_GENERAL)
+          .image(0, target_.view(), VK_IMAGE_LAYOUT_GENERAL)
           .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout);
       const glm::uvec4 push(lights, width_, height_, 0);
       vkCmdPushConstants(cmd, layout.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);

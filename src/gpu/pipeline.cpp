@@ -114,11 +114,14 @@ PipelineLayout::PipelineLayout(Context& context, std::initializer_list<std::stri
   // them (GpuScene::draw, for one) names the stages of a pass, not of each shader.
   layout_ = createLayout(context, pushSet_, extraSets, merged.pushConstantBytes,
                          merged.pushConstantBytes ? merged.stages : 0);
-  for (const VkDescriptorSetLayoutBinding& b : vkBindings) pushBindings_.push_back(b.binding);
+  for (const VkDescriptorSetLayoutBinding& b : vkBindings)
+    pushBindings_.emplace_back(b.binding, b.descriptorType);
 }
 
-bool PipelineLayout::hasPushBinding(uint32_t binding) const {
-  return std::find(pushBindings_.begin(), pushBindings_.end(), binding) != pushBindings_.end();
+VkDescriptorType PipelineLayout::pushBindingType(uint32_t binding) const {
+  for (const auto& [number, type] : pushBindings_)
+    if (number == binding) return type;
+  return VK_DESCRIPTOR_TYPE_MAX_ENUM;
 }
 
 PipelineLayout::~PipelineLayout() {
@@ -376,39 +379,42 @@ void Pipeline::bind(VkCommandBuffer cmd) const {
   if (bindPoint_ == VK_PIPELINE_BIND_POINT_GRAPHICS) vkCmdSetCullMode(cmd, cullMode_);
 }
 
-DescriptorWriter& DescriptorWriter::buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer,
-                                           VkDeviceSize offset, VkDeviceSize range) {
-  entries_.push_back({binding, type, {buffer, offset, range}, {}, false});
+DescriptorWriter& DescriptorWriter::storage(uint32_t binding, VkBuffer buffer, VkDeviceSize offset,
+                                            VkDeviceSize range) {
+  entries_.push_back({binding, {buffer, offset, range}, {}, false});
   return *this;
 }
 
-DescriptorWriter& DescriptorWriter::image(uint32_t binding, VkDescriptorType type, VkImageView view,
-                                          VkImageLayout layout, VkSampler sampler) {
-  entries_.push_back({binding, type, {}, {sampler, view, layout}, true});
+DescriptorWriter& DescriptorWriter::image(uint32_t binding, VkImageView view, VkImageLayout layout,
+                                          VkSampler sampler) {
+  entries_.push_back({binding, {}, {sampler, view, layout}, true});
   return *this;
 }
 
 void DescriptorWriter::push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
                             const PipelineLayout& layout) {
-  std::erase_if(entries_, [&](const Entry& e) { return !layout.hasPushBinding(e.binding); });
-  push(context, cmd, bindPoint, layout.handle());
-}
-
-void DescriptorWriter::push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
-                            VkPipelineLayout layout) {
   std::vector<VkWriteDescriptorSet> writes;
   for (const Entry& e : entries_) {
+    const VkDescriptorType type = layout.pushBindingType(e.binding);
+    if (type == VK_DESCRIPTOR_TYPE_MAX_ENUM) continue;
+    const bool imageType = type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE ||
+                           type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE ||
+                           type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    if (imageType != e.isImage)
+      throw std::logic_error(fmt::format("binding {}: the shaders declare {}, but {} was written to it",
+                                         e.binding, imageType ? "an image" : "a buffer",
+                                         e.isImage ? "an image" : "a buffer"));
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstBinding = e.binding;
     w.descriptorCount = 1;
-    w.descriptorType = e.type;
+    w.descriptorType = type;
     if (e.isImage)
       w.pImageInfo = &e.imageInfo;
     else
       w.pBufferInfo = &e.bufferInfo;
     writes.push_back(w);
   }
-  context.cmdPushDescriptorSet(cmd, bindPoint, layout, 0, uint32_t(writes.size()), writes.data());
+  context.cmdPushDescriptorSet(cmd, bindPoint, layout.handle(), 0, uint32_t(writes.size()), writes.data());
 }
 
 }  // namespace lll

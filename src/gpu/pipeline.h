@@ -33,15 +33,16 @@ class PipelineLayout {
   PipelineLayout& operator=(PipelineLayout&& other) noexcept;
 
   VkPipelineLayout handle() const { return layout_; }
-  // Whether set 0 has `binding` (a reflected layout has only the bindings its shaders use).
-  bool hasPushBinding(uint32_t binding) const;
+  // The type of `binding` in set 0, VK_DESCRIPTOR_TYPE_MAX_ENUM where set 0 has none (a reflected
+  // layout has only the bindings its shaders use).
+  VkDescriptorType pushBindingType(uint32_t binding) const;
 
  private:
   void release();
   Context* context_ = nullptr;
   VkDescriptorSetLayout pushSet_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  std::vector<uint32_t> pushBindings_;
+  std::vector<std::pair<uint32_t, VkDescriptorType>> pushBindings_;  // set 0's, by binding
 };
 
 enum class BlendMode { None, Additive, Alpha };
@@ -108,25 +109,24 @@ class Pipeline {
 };
 
 // Writes for one push-descriptor update, built fluently and recorded with push().
+// The descriptor types come from the layout the writes are pushed to, which has them from the
+// shaders (reflection): a write names a binding and what to bind, never the GLSL's type again.
 class DescriptorWriter {
  public:
-  DescriptorWriter& buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset = 0,
-                           VkDeviceSize range = VK_WHOLE_SIZE);
-  DescriptorWriter& storage(uint32_t binding, VkBuffer buffer) {
-    return this->buffer(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer);
-  }
-  DescriptorWriter& image(uint32_t binding, VkDescriptorType type, VkImageView view, VkImageLayout layout,
+  DescriptorWriter& storage(uint32_t binding, VkBuffer buffer, VkDeviceSize offset = 0,
+                            VkDeviceSize range = VK_WHOLE_SIZE);
+  // A sampled or storage image, or with `sampler` a combined image sampler.
+  DescriptorWriter& image(uint32_t binding, VkImageView view, VkImageLayout layout,
                           VkSampler sampler = VK_NULL_HANDLE);
-  void push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, VkPipelineLayout layout);
-  // Pushes the writes `layout`'s set 0 has a binding for and drops the others: passes share
-  // writers (frame, lists, surfaces) while each reflected layout has only what its shaders use.
+  // Pushes the writes `layout`'s set 0 has a binding for, typed as it declares them, and drops the
+  // others: passes share writers (frame, lists, surfaces) while each reflected layout has only what
+  // its shaders use.
   void push(Context& context, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
             const PipelineLayout& layout);
 
  private:
   struct Entry {
     uint32_t binding;
-    VkDescriptorType type;
     VkDescriptorBufferInfo bufferInfo;
     VkDescriptorImageInfo imageInfo;
     bool isImage;

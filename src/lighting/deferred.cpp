@@ -144,11 +144,8 @@ class Deferred final : public Technique {
           beginRendering(cmd, t.width, t.height, {{accumulation_.view(), false}}, t.depth.view(),
                          VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
           DescriptorWriter writer;
-          writer
-              .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target0().view(),
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-              .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+          writer.image(6, gbuffer_.target0().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(7, gbuffer_.target1().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
           volumes_.addBindings(writer, frame)
               .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lightLayout_);
           volumes_.bindGeometry(cmd);
@@ -173,13 +170,10 @@ class Deferred final : public Technique {
         [&](VkCommandBuffer cmd) {
           sunPipeline_.bind(cmd);
           meshPassDescriptors(frame)
-              .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(),
-                     VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-              .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target0().view(),
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-              .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-              .image(8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, accumulation_.view(), VK_IMAGE_LAYOUT_GENERAL)
+              .image(5, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+              .image(6, gbuffer_.target0().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(7, gbuffer_.target1().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(8, accumulation_.view(), VK_IMAGE_LAYOUT_GENERAL)
               .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, sunLayout_);
           dispatchPerPixel(cmd, t);
         });
@@ -195,13 +189,10 @@ class Deferred final : public Technique {
           resolvePipeline_.bind(cmd);
           DescriptorWriter()
               .storage(0, frame.uniformBuffer.handle())
-              .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, t.depth.view(),
-                     VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-              .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, accumulation_.view(),
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-              .image(7, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_.target1().view(),
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-              .image(8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+              .image(5, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+              .image(6, accumulation_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(7, gbuffer_.target1().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(8, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
               .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolveLayout_);
           dispatchPerPixel(cmd, t);
         });

@@ -133,8 +133,7 @@ void LightGrid::buildLightData(FrameContext& frame) {
                    [&](VkCommandBuffer cmd) {
                      tileRangePipeline_.bind(cmd);
                      descriptors(frame)
-                         .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                frame.targets.sampledDepth().view(),
+                         .image(9, frame.targets.sampledDepth().view(),
                                 sampledLayout(frame.targets.sampledDepth()), depthSampler_)
                          .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
                      vkCmdDispatch(cmd, divideRoundingUp(tilesX_, gpu::kTileGroupSize),

@@ -333,8 +333,7 @@ void LightLinkedList::reduceTileDepth(FrameContext& frame) {
                      // Only this pass samples the depth buffer: binding it while shading reads it as an
                      // attachment makes lavapipe resolve the depth image for every draw.
                      descriptors(frame)
-                         .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                frame.targets.sampledDepth().view(),
+                         .image(9, frame.targets.sampledDepth().view(),
                                 sampledLayout(frame.targets.sampledDepth()), depthSampler_)
                          .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
                      vkCmdDispatch(cmd, divideRoundingUp(tilesX_, gpu::kTileGroupSize),

@@ -241,12 +241,9 @@ class Prepass final : public Technique {
                      [&](VkCommandBuffer cmd) {
                        sunShadowPipeline_.bind(cmd);
                        meshPassDescriptors(frame)
-                           .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, frame.targets.depth.view(),
-                                  VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-                           .image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, normals_.view(),
-                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-                           .image(7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, sunShadow_.view(),
-                                  VK_IMAGE_LAYOUT_GENERAL)
+                           .image(5, frame.targets.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+                           .image(6, normals_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+                           .image(7, sunShadow_.view(), VK_IMAGE_LAYOUT_GENERAL)
                            .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, sunShadowLayout_);
                        dispatchPerPixel(cmd, frame.targets);
                      });
@@ -265,8 +262,7 @@ class Prepass final : public Technique {
                            cmd, t, {{diffuse_.view(), true}, {specular_.view(), true}}, depthStencil_.view(),
                            VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, false);
                        DescriptorWriter writer;
-                       writer.image(6, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, normals_.view(),
-                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+                       writer.image(6, normals_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
                        volumes_.addBindings(writer, frame)
                            .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lightLayout_);
                        volumes_.bindGeometry(cmd);
@@ -305,12 +301,9 @@ class Prepass final : public Technique {
                          VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
           combinePipeline_.bind(cmd);
           meshPassDescriptors(frame)
-              .image(3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, diffuse_.view(),
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-              .image(4, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, specular_.view(),
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-              .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, sunShadow_.view(),
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(3, diffuse_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(4, specular_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+              .image(5, sunShadow_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
               .push(frame.context, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, meshLayout_);
           frame.scene.draw(cmd, meshLayout_.handle(), DrawFilter::Opaque);
           vkCmdEndRendering(cmd);

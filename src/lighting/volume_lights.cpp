@@ -163,8 +163,7 @@ DescriptorWriter& LightVolumeDraws::addBindings(DescriptorWriter& writer, const 
   writer.storage(0, frame.uniformBuffer.handle())
       .storage(1, frame.scene.lightBuffer().handle())
       .storage(3, volumes_.handle())
-      .image(5, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, frame.targets.depth.view(),
-             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL);
+      .image(5, frame.targets.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL);
   if (frame.lightShadows) frame.lightShadows->bind(writer);
   return writer;
 }

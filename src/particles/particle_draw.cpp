@@ -66,8 +66,7 @@ DescriptorWriter ParticleSystem::systemDescriptors(const FrameContext& frame) co
       .storage(14, counters_.handle());
   if (radiance_) writer.storage(15, radiance_.handle());
   if (atlas_) writer.storage(22, atlas_.handle());
-  writer.image(31, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, noise_.view(),
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, noiseSampler_);
+  writer.image(31, noise_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, noiseSampler_);
   if (frame.shadows) frame.shadows->bind(writer);
   if (frame.lightShadows) frame.lightShadows->bind(writer);
   return writer;
@@ -162,10 +161,8 @@ void ParticleSystem::drawRaster(FrameContext& frame, const DrawPipelines& pipeli
                    VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
     (layer == ParticleLayer::BehindGlass ? pipelines.drawBehindGlass : pipelines.draw).bind(cmd);
     descriptors(frame, lighting)
-        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(),
-               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-        .image(25, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, glass.view(),
-               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+        .image(16, depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+        .image(25, glass.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
         .push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.drawLayout);
     vkCmdDrawIndirect(cmd, counters_.handle(), offsetof(gpu::ParticleCounters, draw), 1,
                       sizeof(VkDrawIndirectCommand));

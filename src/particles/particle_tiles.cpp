@@ -269,13 +269,11 @@ void ParticleSystem::composite(FrameContext& frame, const DrawPipelines& pipelin
         .storage(20, t.screen.handle())
         .storage(23, t.layers.handle())
         .storage(47, t.opaque.handle())
-        .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(), sampledLayout(depth),
-               depthSampler_)
-        .image(25, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, glass.view(), sampledLayout(glass),
-               depthSampler_)
-        .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
+        .image(16, depth.view(), sampledLayout(depth), depthSampler_)
+        .image(25, glass.view(), sampledLayout(glass), depthSampler_)
+        .image(24, t.layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
         .storage(36, layersBehind.handle())
-        .image(37, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, layerDepthBehind.view(), VK_IMAGE_LAYOUT_GENERAL);
+        .image(37, layerDepthBehind.view(), VK_IMAGE_LAYOUT_GENERAL);
     // Read only with atlas lighting (specialization constant 0 == 2); a stand-in otherwise.
     if (!atlas_) writer.storage(22, t.screen.handle());
     writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.compositeLayout);
@@ -317,20 +315,19 @@ void ParticleSystem::resolve(FrameContext& frame, ParticleLayer layer) {
       uses(targets.hdr, Use::StorageReadWrite, kCompute), uses(depth, Use::Sampled, kCompute),
       uses(t.headerBuffer, Use::StorageRead, kCompute), uses(layers, Use::StorageRead, kCompute),
       uses(layerDepth, Use::StorageRead, kCompute)};
-  frame.graph.pass(
-      std::string("particles-resolve") + particlePassSuffix(layer), used, [&](VkCommandBuffer cmd) {
-        t.resolve.bind(cmd);
-        DescriptorWriter()
-            .storage(0, frame.uniformBuffer.handle())
-            .storage(17, t.headerBuffer.handle())
-            .storage(23, layers.handle())
-            .image(16, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, depth.view(), sampledLayout(depth),
-                   depthSampler_)
-            .image(21, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-            .image(24, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
-            .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.resolveLayout);
-        dispatchPerPixel(cmd, targets);
-      });
+  frame.graph.pass(std::string("particles-resolve") + particlePassSuffix(layer), used,
+                   [&](VkCommandBuffer cmd) {
+                     t.resolve.bind(cmd);
+                     DescriptorWriter()
+                         .storage(0, frame.uniformBuffer.handle())
+                         .storage(17, t.headerBuffer.handle())
+                         .storage(23, layers.handle())
+                         .image(16, depth.view(), sampledLayout(depth), depthSampler_)
+                         .image(21, targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+                         .image(24, layerDepth.view(), VK_IMAGE_LAYOUT_GENERAL)
+                         .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, t.resolveLayout);
+                     dispatchPerPixel(cmd, targets);
+                   });
   frame.graph.barriers({uses(t.headerBuffer, Use::HostRead)});
 }
 

@@ -156,8 +156,8 @@ void ComputeRaster::record(FrameContext& frame, const Buffer& surfaceRecords, ui
       .storage(18, scene.positionBuffer().handle())
       .storage(19, scene.indexBuffer().handle())
       .storage(21, starts_.handle())
-      .image(20, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.visibility.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(26, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.rasterDepth.view(), VK_IMAGE_LAYOUT_GENERAL);
+      .image(20, t.visibility.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(26, t.rasterDepth.view(), VK_IMAGE_LAYOUT_GENERAL);
   work_.bind(writer);
   const auto pushConstants = [&](VkCommandBuffer cmd) {
     vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);

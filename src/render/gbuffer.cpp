@@ -49,9 +49,9 @@ void GBuffer::record(FrameContext& frame, const char* passName, const Image& acc
         [&](VkCommandBuffer cmd) {
           pipeline_.bind(cmd);
           DescriptorWriter writer = meshPassDescriptors(frame);
-          writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, accumulation.view(), VK_IMAGE_LAYOUT_GENERAL)
-              .image(14, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, target0_.view(), VK_IMAGE_LAYOUT_GENERAL)
-              .image(15, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, target1_.view(), VK_IMAGE_LAYOUT_GENERAL);
+          writer.image(13, accumulation.view(), VK_IMAGE_LAYOUT_GENERAL)
+              .image(14, target0_.view(), VK_IMAGE_LAYOUT_GENERAL)
+              .image(15, target1_.view(), VK_IMAGE_LAYOUT_GENERAL);
           frame.visibility->bindSurfaceData(writer, frame);
           writer.push(frame.context, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
           const VkDescriptorSet textures = frame.scene.textureTable();

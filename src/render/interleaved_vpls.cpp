@@ -97,9 +97,9 @@ void InterleavedVpls::dispatchClasses(VkCommandBuffer cmd) const {
 }
 
 DescriptorWriter& InterleavedVpls::bindImages(DescriptorWriter& writer) const {
-  return writer.image(38, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, indirect_.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(39, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, key_.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(48, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, albedoKey_.view(), VK_IMAGE_LAYOUT_GENERAL);
+  return writer.image(38, indirect_.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(39, key_.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(48, albedoKey_.view(), VK_IMAGE_LAYOUT_GENERAL);
 }
 
 void InterleavedVpls::dispatch(VkCommandBuffer cmd, const FrameTargets& targets) const {
@@ -112,11 +112,10 @@ void InterleavedVpls::dispatch(VkCommandBuffer cmd, const FrameTargets& targets)
 void InterleavedVpls::filter(FrameContext& frame) {
   const FrameTargets& t = frame.targets;
   // What both passes read: the frame's constants and the shading's two images, by texel fetches.
-  constexpr VkDescriptorType kFetched = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   auto bindShading = [&](DescriptorWriter& writer) -> DescriptorWriter& {
     return writer.storage(0, frame.uniformBuffer.handle())
-        .image(38, kFetched, indirect_.view(), sampledLayout(indirect_), nearest_)
-        .image(39, kFetched, key_.view(), sampledLayout(key_), nearest_);
+        .image(38, indirect_.view(), sampledLayout(indirect_), nearest_)
+        .image(39, key_.view(), sampledLayout(key_), nearest_);
   };
   frame.graph.pass("vpl-filter-rows",
                    {uses(indirect_, Use::Sampled, kCompute), uses(key_, Use::Sampled, kCompute),
@@ -125,8 +124,7 @@ void InterleavedVpls::filter(FrameContext& frame) {
                      rows_.bind(cmd);
                      DescriptorWriter writer;
                      bindShading(writer)
-                         .image(50, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, rowSums_.view(),
-                                VK_IMAGE_LAYOUT_GENERAL)
+                         .image(50, rowSums_.view(), VK_IMAGE_LAYOUT_GENERAL)
                          .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rowsLayout_);
                      dispatchPerPixel(cmd, t);
                    });
@@ -139,9 +137,9 @@ void InterleavedVpls::filter(FrameContext& frame) {
                      filter_.bind(cmd);
                      DescriptorWriter writer;
                      bindShading(writer)
-                         .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-                         .image(48, kFetched, albedoKey_.view(), sampledLayout(albedoKey_), nearest_)
-                         .image(50, kFetched, rowSums_.view(), sampledLayout(rowSums_), nearest_)
+                         .image(13, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+                         .image(48, albedoKey_.view(), sampledLayout(albedoKey_), nearest_)
+                         .image(50, rowSums_.view(), sampledLayout(rowSums_), nearest_)
                          .storage(44, header_.handle())
                          .storage(45, surfaces_.handle())
                          .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);

@@ -169,8 +169,7 @@ void LitPasses::shadeGlassInCompute(FrameContext& frame) {
                        VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, false);
         glassFragments_.bind(cmd);
         DescriptorWriter writer = meshPassDescriptors(frame);
-        if (glassTestsDepth_)
-          writer.image(36, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, opaqueDepth.view(), sampledLayout(opaqueDepth));
+        if (glassTestsDepth_) writer.image(36, opaqueDepth.view(), sampledLayout(opaqueDepth));
         bindGlassLists(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, glassFragmentsLayout_);
         frame.scene.draw(cmd, glassFragmentsLayout_.handle(), DrawFilter::Blend);
         vkCmdEndRendering(cmd);
@@ -220,8 +219,8 @@ void LitPasses::shadeGlassInCompute(FrameContext& frame) {
         DescriptorWriter writer = litDescriptors(frame);
         bindGlassLists(writer)
             .storage(43, glassPartLight_.handle())
-            .image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-            .image(40, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .image(13, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .image(40, t.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
             .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, glassLayout_);
         vkCmdDispatchIndirect(cmd, glassDispatch_.handle(), 0);
       });
@@ -274,12 +273,9 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
                        [&](VkCommandBuffer cmd) {
                          DescriptorWriter writer = litDescriptors(frame);
                          writer
-                             .image(9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, t.depth.view(),
-                                    VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
-                             .image(11, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target0().view(),
-                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-                             .image(12, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, gbuffer_->target1().view(),
-                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+                             .image(9, t.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, depthSampler_)
+                             .image(11, gbuffer_->target0().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+                             .image(12, gbuffer_->target1().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
                          dispatch(frame, cmd, writer);
                        });
       return;
@@ -295,8 +291,7 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
                        [&](VkCommandBuffer cmd) {
                          DescriptorWriter writer = litDescriptors(frame);
                          frame.visibility->bindSurfaceData(writer, frame);
-                         writer.image(40, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.ldr.view(),
-                                      VK_IMAGE_LAYOUT_GENERAL);
+                         writer.image(40, t.ldr.view(), VK_IMAGE_LAYOUT_GENERAL);
                          if (interleaved_) interleaved_->bindSlots(interleaved_->bindImages(writer));
                          const VkDescriptorSet textures = frame.scene.textureTable();
                          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, computeLayout_.handle(),
@@ -313,8 +308,7 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
                          [&](VkCommandBuffer cmd) {
                            vplClasses_.bind(cmd);
                            DescriptorWriter writer = litDescriptors(frame);
-                           writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, t.hdr.view(),
-                                        VK_IMAGE_LAYOUT_GENERAL);
+                           writer.image(13, t.hdr.view(), VK_IMAGE_LAYOUT_GENERAL);
                            interleaved_->bindSlots(writer).push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
                                                                 vplClassesLayout_);
                            interleaved_->dispatchClasses(cmd);
@@ -326,7 +320,7 @@ void LitPasses::shadeOpaque(FrameContext& frame) {
 
 void LitPasses::dispatch(FrameContext& frame, VkCommandBuffer cmd, DescriptorWriter& writer) {
   compute_.bind(cmd);
-  writer.image(13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, frame.targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+  writer.image(13, frame.targets.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
       .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, computeLayout_);
   if (interleaved_)
     interleaved_->dispatch(cmd, frame.targets);

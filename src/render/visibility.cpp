@@ -239,7 +239,7 @@ void VisibilityBuffer::bindSurfaceData(DescriptorWriter& writer, const FrameCont
       .storage(17, frame.scene.frameInstances().handle())
       .storage(18, frame.scene.vertexBuffer().handle())
       .storage(19, frame.scene.indexBuffer().handle())
-      .image(20, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, frame.targets.visibility.view(), VK_IMAGE_LAYOUT_GENERAL);
+      .image(20, frame.targets.visibility.view(), VK_IMAGE_LAYOUT_GENERAL);
 }
 
 SpecializationConstants VisibilityBuffer::surfaceConstants(const GpuScene& scene) const {

@@ -411,8 +411,8 @@ void Renderer::tonemap(FrameContext& frame) {
         tonemap_.bind(cmd);
         DescriptorWriter()
             .storage(0, uniformBuffer_.handle())
-            .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
-            .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets_.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .image(1, targets_.hdr.view(), VK_IMAGE_LAYOUT_GENERAL)
+            .image(2, targets_.ldr.view(), VK_IMAGE_LAYOUT_GENERAL)
             .push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapLayout_);
         dispatchPerPixel(cmd, targets_);
       });

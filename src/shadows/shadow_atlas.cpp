@@ -110,7 +110,7 @@ void ShadowAtlas::record(FrameContext& frame) const {
 }
 
 void ShadowAtlas::bind(DescriptorWriter& writer, uint32_t binding) const {
-  writer.image(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, image_.view(),
+  writer.image(binding, image_.view(),
                image_.format() == VK_FORMAT_D32_SFLOAT ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL
                                                        : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                sampler_);

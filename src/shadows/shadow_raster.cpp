@@ -112,7 +112,7 @@ void ShadowRaster::record(FrameContext& frame, const Image& atlas) const {
       .storage(21, starts_.handle())
       .storage(26, views_.handle());
   work_.bind(writer);
-  if (intoImage_) writer.image(30, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, atlas.view(), VK_IMAGE_LAYOUT_GENERAL);
+  if (intoImage_) writer.image(30, atlas.view(), VK_IMAGE_LAYOUT_GENERAL);
   const auto bindAll = [&](VkCommandBuffer cmd, const Pipeline& pipeline) {
     pipeline.bind(cmd);
     writer.push(context_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
