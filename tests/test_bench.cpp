@@ -585,6 +585,9 @@ TEST(BenchCharts, ReplotReadsWhatResultsJsonWrote) {
     const ScenarioResult &a = read.results[i], &b = written.results[i];
     EXPECT_EQ(a.scenario.suite, b.scenario.suite);
     EXPECT_EQ(techniqueLabel(a.scenario.settings), techniqueLabel(b.scenario.settings));
+    EXPECT_EQ(a.scenario.settings.surfaces, b.scenario.settings.surfaces);
+    EXPECT_EQ(a.scenario.settings.raster, b.scenario.settings.raster);
+    EXPECT_EQ(a.scenario.settings.glass, b.scenario.settings.glass);
     EXPECT_EQ(a.lightCount, b.lightCount);
     EXPECT_DOUBLE_EQ(a.memoryBytes(), b.memoryBytes());
     ASSERT_EQ(a.passes.size(), b.passes.size());
@@ -596,6 +599,27 @@ TEST(BenchCharts, ReplotReadsWhatResultsJsonWrote) {
   const auto charts = writeCharts(read, dir);
   if (gnuplotInstalled()) {
     EXPECT_EQ(charts.size(), 6u);
+  }
+  fs::remove_all(dir);
+}
+
+// An option's name that is none of its choices (a hand-edited file, a newer lll's) is bad input
+// naming the file, the field, the value and the choices.
+TEST(BenchCharts, AnUnknownOptionNameInResultsJsonIsBadInput) {
+  const fs::path dir = freshDir("bench-replot-option");
+  fs::create_directories(dir);
+  writeResultsJson(syntheticReport(), dir / "results.json");
+  nlohmann::json j = nlohmann::json::parse(readText(dir / "results.json"));
+  ASSERT_FALSE(j.at("results").empty());
+  j["results"][0]["surfaces"] = "mesh-shaders";
+  std::ofstream(dir / "results.json") << j.dump();
+  try {
+    readResultsJson(dir / "results.json");
+    ADD_FAILURE() << "read an unknown --surfaces";
+  } catch (const InputError& e) {
+    for (const std::string named : {(dir / "results.json").string(), std::string("surfaces"),
+                                    std::string("mesh-shaders"), std::string("visibility or gbuffer")})
+      EXPECT_NE(std::string(e.what()).find(named), std::string::npos) << e.what();
   }
   fs::remove_all(dir);
 }
