@@ -617,8 +617,8 @@ TEST(BenchCharts, AnUnknownOptionNameInResultsJsonIsBadInput) {
     readResultsJson(dir / "results.json");
     ADD_FAILURE() << "read an unknown --surfaces";
   } catch (const InputError& e) {
-    for (const std::string named : {(dir / "results.json").string(), std::string("surfaces"),
-                                    std::string("mesh-shaders"), std::string("visibility or gbuffer")})
+    for (const std::string& named : {(dir / "results.json").string(), std::string("surfaces"),
+                                     std::string("mesh-shaders"), std::string("visibility or gbuffer")})
       EXPECT_NE(std::string(e.what()).find(named), std::string::npos) << e.what();
   }
   fs::remove_all(dir);

@@ -27,8 +27,6 @@ struct Size {
   uint32_t height;
 };
 
-const LllFill kLllFills[] = {LllFill::Shells, LllFill::Ray, LllFill::Compute};
-
 // A scenario of `suite` rendering `scene` at `size` with default settings.
 Scenario makeScenario(const std::string& suite, const std::string& name, const SceneRequest& scene,
                       Size size) {
@@ -55,13 +53,13 @@ std::vector<Scenario> perTechnique(const Scenario& base, const std::vector<std::
       out.push_back(s);
       continue;
     }
-    for (const LllFill fill : kLllFills) {
+    for (const LllFill fill : enumValues<LllFill>()) {
       s.settings.lllFill = fill;
       out.push_back(s);
     }
     s.settings.lllFill = LllFill::Compute;
-    s.settings.raster =
-        RasterChoice::Hardware;  // the visibility buffer drawn by the hardware, whatever auto picks
+    // The visibility buffer drawn by the hardware, whatever auto picks.
+    s.settings.raster = RasterChoice::Hardware;
     out.push_back(s);
     s.settings.raster = RasterChoice::Auto;
     s.settings.surfaces = SurfaceSource::Gbuffer;

@@ -37,6 +37,14 @@ constexpr std::optional<E> enumFromName(std::string_view name) {
   return std::nullopt;
 }
 
+// Every value of E, in the enumerators' order.
+template <NamedEnum E>
+std::vector<E> enumValues() {
+  std::vector<E> values;
+  for (std::size_t i = 0; i < EnumNames<E>::names.size(); ++i) values.push_back(static_cast<E>(i));
+  return values;
+}
+
 template <NamedEnum E>
 std::vector<std::string> enumNames() {
   const auto& names = EnumNames<E>::names;

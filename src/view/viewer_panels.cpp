@@ -35,9 +35,7 @@ bool choice(const char* label, T& value, const std::vector<T>& options) {
 // A combo box over every value of an option, by name.
 template <NamedEnum E>
 bool choice(const char* label, E& value) {
-  std::vector<E> options;
-  for (size_t i = 0; i < EnumNames<E>::names.size(); ++i) options.push_back(static_cast<E>(i));
-  return choice(label, value, options);
+  return choice(label, value, enumValues<E>());
 }
 
 // A number field that applies on Enter or when left (editing a light count must not reload the
