@@ -94,9 +94,14 @@ void Buffer::upload(const void* data, VkDeviceSize bytes, VkDeviceSize offset) {
   }
   Buffer staging(*context_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
   std::memcpy(staging.mapped(), data, bytes);
+  copyFrom(staging, bytes, offset);
+}
+
+void Buffer::copyFrom(const Buffer& source, VkDeviceSize bytes, VkDeviceSize offset) {
+  if (bytes == 0) return;
   context_->submitAndWait([&](VkCommandBuffer cmd) {
     VkBufferCopy region{0, offset, bytes};
-    vkCmdCopyBuffer(cmd, staging.handle(), buffer_, 1, &region);
+    vkCmdCopyBuffer(cmd, source.handle(), buffer_, 1, &region);
   });
 }
 

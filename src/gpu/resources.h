@@ -38,6 +38,9 @@ class Buffer {
 
   // Copies bytes into the buffer: directly when mapped, else through a staging buffer.
   void upload(const void* data, VkDeviceSize bytes, VkDeviceSize offset = 0);
+  // Copies the first `bytes` of `source` (a buffer the CPU filled) to `offset` in this one, on the
+  // GPU, and waits for the copy.
+  void copyFrom(const Buffer& source, VkDeviceSize bytes, VkDeviceSize offset = 0);
   template <typename T>
   void upload(std::span<const T> items) {
     upload(items.data(), items.size_bytes());

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <execution>
 
 #include "core/errors.h"
 #include "gpu/context.h"
@@ -291,13 +292,22 @@ void GpuScene::uploadMaterials() {
 }
 
 void GpuScene::uploadLights(const std::vector<Light>& lights) {
-  std::vector<gpu::GpuLight> gpuLights;
-  gpuLights.reserve(lights.size());
-  for (const Light& light : lights) gpuLights.push_back(toGpuLight(light));
-  const VkDeviceSize bytes = gpuLights.size() * sizeof(gpu::GpuLight);
+  const VkDeviceSize bytes = lights.size() * sizeof(gpu::GpuLight);
   if (!lights_ || lights_.size() < bytes)
     lights_ = Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device, "lights");
-  lights_.upload(std::span<const gpu::GpuLight>(gpuLights));
+  // The records are converted on every core straight into the staging buffer. The first upload's
+  // staging is freed with it; from the second on (lights placed on the CPU every frame) it is kept
+  // for the next frame: a million lights' 64 MB were 90 ms a frame on a 2-core machine when each
+  // frame converted into a vector, allocated a new staging buffer and copied it there
+  // (bench/README.md, "CPU only, 2026-12-05 (third)").
+  Buffer temporary;
+  Buffer& staging = lightsUploaded_ ? lightStaging_ : temporary;
+  if (!staging || staging.size() < bytes)
+    staging = Buffer(context_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload, "light staging");
+  std::transform(std::execution::par, lights.begin(), lights.end(),
+                 static_cast<gpu::GpuLight*>(staging.mapped()), toGpuLight);
+  lights_.copyFrom(staging, bytes);
+  lightsUploaded_ = true;
   lightCount_ = uint32_t(lights.size());
   firstTrailingVpl_ = lightCount_;
   while (firstTrailingVpl_ > 0 && lights[firstTrailingVpl_ - 1].type == LightType::Vpl) --firstTrailingVpl_;
