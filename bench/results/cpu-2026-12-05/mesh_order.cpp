@@ -6,8 +6,8 @@
 // Built against the repository's build by build.sh; a measurement, not part of the product.
 #include <meshoptimizer.h>
 
-#include <algorithm>
 #include <fmt/format.h>
+#include <algorithm>
 
 #include "scene/scene_source.h"
 
@@ -36,7 +36,8 @@ int main(int argc, char** argv) {
         const double t = double(loaded.size()) / 3.0;
         const std::vector<unsigned>* orders[2] = {&loaded, &optimized};
         for (int o = 0; o < 2; ++o) {
-          const auto cache = meshopt_analyzeVertexCache(orders[o]->data(), orders[o]->size(), count, 32, 32, 32);
+          const auto cache =
+              meshopt_analyzeVertexCache(orders[o]->data(), orders[o]->size(), count, 32, 32, 32);
           const auto fetch =
               meshopt_analyzeVertexFetch(orders[o]->data(), orders[o]->size(), count, sizeof(lll::Vertex));
           acmr[o] += cache.acmr * t;
@@ -46,9 +47,10 @@ int main(int argc, char** argv) {
         triangles += t;
         ++primitives;
       }
-    fmt::print("{}: {} primitives, {} triangles, {} vertices; ACMR {:.3f} -> {:.3f}, ATVR {:.3f} -> {:.3f}, "
-               "overfetch {:.3f} -> {:.3f}\n",
-               argv[a], primitives, triangles, scene.vertices.size(), acmr[0] / triangles, acmr[1] / triangles,
-               atvr[0] / triangles, atvr[1] / triangles, overfetch[0] / triangles, overfetch[1] / triangles);
+    fmt::print(
+        "{}: {} primitives, {} triangles, {} vertices; ACMR {:.3f} -> {:.3f}, ATVR {:.3f} -> {:.3f}, "
+        "overfetch {:.3f} -> {:.3f}\n",
+        argv[a], primitives, triangles, scene.vertices.size(), acmr[0] / triangles, acmr[1] / triangles,
+        atvr[0] / triangles, atvr[1] / triangles, overfetch[0] / triangles, overfetch[1] / triangles);
   }
 }
