@@ -293,6 +293,7 @@ void GpuScene::uploadMaterials() {
 
 void GpuScene::uploadLights(const std::vector<Light>& lights) {
   const VkDeviceSize bytes = lights.size() * sizeof(gpu::GpuLight);
+  const bool uploadedBefore = bool(lights_);  // made here only
   if (!lights_ || lights_.size() < bytes)
     lights_ = Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device, "lights");
   // The records are converted on every core straight into the staging buffer. The first upload's
@@ -301,13 +302,12 @@ void GpuScene::uploadLights(const std::vector<Light>& lights) {
   // frame converted into a vector, allocated a new staging buffer and copied it there
   // (bench/README.md, "CPU only, 2026-12-05 (third)").
   Buffer temporary;
-  Buffer& staging = lightsUploaded_ ? lightStaging_ : temporary;
+  Buffer& staging = uploadedBefore ? lightStaging_ : temporary;
   if (!staging || staging.size() < bytes)
     staging = Buffer(context_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload, "light staging");
   std::transform(std::execution::par, lights.begin(), lights.end(),
                  static_cast<gpu::GpuLight*>(staging.mapped()), toGpuLight);
   lights_.copyFrom(staging, bytes);
-  lightsUploaded_ = true;
   lightCount_ = uint32_t(lights.size());
   firstTrailingVpl_ = lightCount_;
   while (firstTrailingVpl_ > 0 && lights[firstTrailingVpl_ - 1].type == LightType::Vpl) --firstTrailingVpl_;

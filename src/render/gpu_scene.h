@@ -144,7 +144,6 @@ class GpuScene {
   Buffer materials_;
   Buffer lights_;
   Buffer lightStaging_;  // kept once the lights are uploaded a second time (uploadLights)
-  bool lightsUploaded_ = false;
   uint32_t lightCount_ = 0;
   uint32_t firstTrailingVpl_ = 0;
   bool vplsTrail_ = true;
