@@ -88,14 +88,34 @@ vec3 pixelRay(vec2 fragCoord) {
   return reconstructPosition(fragCoord, 1.0) - frame.cameraPosition.xyz;
 }
 
-// Barycentrics (of p1 and p2) where `ray` from the eye meets the plane of the triangle p0 p1 p2,
-// and the ray parameter there.
-vec3 rayBarycentrics(vec3 ray, vec3 p0, vec3 e1, vec3 e2, vec3 n) {
-  float along = dot(ray, n);
-  float t = abs(along) > 1e-30 ? dot(p0 - frame.cameraPosition.xyz, n) / along : 0.0;
-  vec3 hit = frame.cameraPosition.xyz + t * ray - p0;
-  float area2 = max(dot(n, n), 1e-37);
-  return vec3(dot(cross(hit, e2), n) / area2, dot(cross(e1, hit), n) / area2, t);
+// What the barycentrics of every ray against one triangle share: with the hit h relative to p0,
+// the barycentric of p1 is n . (h x e2) / |n|^2 = h . (e2 x n) / |n|^2 and that of p2
+// n . (e1 x h) / |n|^2 = h . (n x e1) / |n|^2, so each is one dot product with a vector made once.
+struct TriangleRays {
+  vec3 n;          // e1 x e2
+  vec3 fromEye;    // p0 - the camera
+  float distance;  // n . fromEye
+  vec3 toB1, toB2;
+};
+
+TriangleRays triangleRays(vec3 p0, vec3 e1, vec3 e2) {
+  TriangleRays r;
+  r.n = cross(e1, e2);
+  r.fromEye = p0 - frame.cameraPosition.xyz;
+  r.distance = dot(r.fromEye, r.n);
+  float inverseArea2 = 1.0 / max(dot(r.n, r.n), 1e-37);
+  r.toB1 = cross(e2, r.n) * inverseArea2;
+  r.toB2 = cross(r.n, e1) * inverseArea2;
+  return r;
+}
+
+// Barycentrics (of p1 and p2) where `ray` from the eye meets the triangle's plane, and the ray
+// parameter there.
+vec3 rayBarycentrics(TriangleRays r, vec3 ray) {
+  float along = dot(ray, r.n);
+  float t = abs(along) > 1e-30 ? r.distance / along : 0.0;
+  vec3 hit = t * ray - r.fromEye;
+  return vec3(dot(hit, r.toB1), dot(hit, r.toB2), t);
 }
 
 // The geometry of the surface a pixel's id names.
@@ -120,15 +140,15 @@ SurfaceGeometry surfaceGeometry(uvec2 pixel, SurfaceRecord record, uint triangle
   vec3 p0 = (instance.model * vec4(v0.position, 1.0)).xyz;
   vec3 e1 = (instance.model * vec4(v1.position, 1.0)).xyz - p0;
   vec3 e2 = (instance.model * vec4(v2.position, 1.0)).xyz - p0;
-  vec3 n = cross(e1, e2);  // counter-clockwise: the side the rasterizer calls front
+  TriangleRays rays = triangleRays(p0, e1, e2);  // n counter-clockwise: the rasterizer's front
 
   // Derivatives as a rasterizer takes them: across the pixel's 2x2 quad, right column minus left
   // and bottom row minus top, so texture levels of detail match a fragment shader's.
   vec2 center = vec2(pixel) + 0.5;
   vec2 side = vec2((pixel.x & 1u) == 0u ? 1.0 : -1.0, (pixel.y & 1u) == 0u ? 1.0 : -1.0);
-  vec3 b = rayBarycentrics(pixelRay(center), p0, e1, e2, n);
-  vec3 bx = rayBarycentrics(pixelRay(center + vec2(side.x, 0.0)), p0, e1, e2, n);
-  vec3 by = rayBarycentrics(pixelRay(center + vec2(0.0, side.y)), p0, e1, e2, n);
+  vec3 b = rayBarycentrics(rays, pixelRay(center));
+  vec3 bx = rayBarycentrics(rays, pixelRay(center + vec2(side.x, 0.0)));
+  vec3 by = rayBarycentrics(rays, pixelRay(center + vec2(0.0, side.y)));
   vec2 dbx = (bx.xy - b.xy) * side.x, dby = (by.xy - b.xy) * side.y;
   SurfaceGeometry g;
   g.position = p0 + b.x * e1 + b.y * e2;
@@ -150,9 +170,10 @@ SurfaceGeometry surfaceGeometry(uvec2 pixel, SurfaceRecord record, uint triangle
   g.normal = normalMatrix * (w0 * v0.normal + b.x * v1.normal + b.y * v2.normal);
   mat3 linear = mat3(instance.model);
   vec3 objectTangent = w0 * v0.tangent.xyz + b.x * v1.tangent.xyz + b.y * v2.tangent.xyz;
-  // A primitive's vertices all have tangents (w = +-1 each) or none do (w = 0).
-  g.tangent = vec4(linear * objectTangent, v0.tangent.w * (determinant(linear) < 0.0 ? -1.0 : 1.0));
-  g.frontFacing = dot(n, frame.cameraPosition.xyz - p0) > 0.0;
+  // A primitive's vertices all have tangents (w = +-1 each) or none do (w = 0); a mirroring
+  // transform turns the bitangent (normalMatrix[0].w: the sign of the model's determinant).
+  g.tangent = vec4(linear * objectTangent, v0.tangent.w * instance.normalMatrix[0].w);
+  g.frontFacing = rays.distance < 0.0;  // n . (camera - p0) > 0
   return g;
 }
 

@@ -75,7 +75,8 @@ LLL_CHECK_SIZE(GpuMaterial, 96 + 8 * 16);
 struct MeshInstance {
   mat4 model;            // object to world
   vec4 normalMatrix[3];  // xyz: columns of the inverse transpose of model's 3x3 (its cofactors
-                         // when singular), computed on the CPU in double precision
+                         // when singular), computed on the CPU in double precision; [0].w the
+                         // sign of model's determinant (-1 mirrors, else 1), [1].w and [2].w 0
 };
 LLL_CHECK_SIZE(MeshInstance, 112);
 

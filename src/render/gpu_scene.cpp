@@ -21,7 +21,8 @@ constexpr uint32_t kTexturesPerMaterial = kTextureSlots;
 
 // The inverse transpose of the model's 3x3, which keeps normals perpendicular under non-uniform
 // scales: its cofactor matrix over the determinant. A singular transform (a scale of 0 flattens
-// the mesh) has no inverse; its cofactors still give the flattened surface's normal.
+// the mesh) has no inverse; its cofactors still give the flattened surface's normal. The first
+// column's w is the determinant's sign: -1 where the transform mirrors (the tangent frame turns).
 std::array<glm::vec4, 3> normalMatrix(const glm::mat4& model) {
   const glm::dvec3 c0(model[0]), c1(model[1]), c2(model[2]);
   const glm::dmat3 cofactors(glm::cross(c1, c2), glm::cross(c2, c0), glm::cross(c0, c1));
@@ -29,7 +30,7 @@ std::array<glm::vec4, 3> normalMatrix(const glm::mat4& model) {
   glm::dmat3 n = cofactors / det;
   for (int i = 0; i < 9; ++i)
     if (!std::isfinite(float(n[i / 3][i % 3]))) n = cofactors;
-  return {glm::vec4(glm::vec3(n[0]), 0.0f), glm::vec4(glm::vec3(n[1]), 0.0f),
+  return {glm::vec4(glm::vec3(n[0]), det < 0.0 ? -1.0f : 1.0f), glm::vec4(glm::vec3(n[1]), 0.0f),
           glm::vec4(glm::vec3(n[2]), 0.0f)};
 }
 
