@@ -2,7 +2,9 @@
 # Issue 11, 2026-12-06: why the group walk (g, run1) took 96 registers. base (f9824fe); g2, the
 # group walk over both of a tile's lists (no per-point walk needed where the tile holds the
 # workgroup); n, g2 with the per-point walk compiled out; u, g2 with the chunk loop not unrolled;
-# nu, both. lll render --frames 200 --stats at 1080p, two runs in rotating order; shader stats.
+# nu, both. Binaries: main + g-group-walk.patch + g2-on-g-two-lists.patch is g2; n, u and nu
+# add `#define EXP_NOFALLBACK` / `#define EXP_NOUNROLL` as the first lines of
+# shaders/lit/shade_visibility.comp.glsl; packed as .gpu/extra/lll_{base,g2,n,u,nu}. lll render --frames 200 --stats at 1080p, two runs in rotating order; shader stats.
 set -u
 source .gpu/setup.sh
 E=.gpu/extra
