@@ -4,7 +4,8 @@
 # workgroup); n, g2 with the per-point walk compiled out; u, g2 with the chunk loop not unrolled;
 # nu, both. Binaries: main + g-group-walk.patch + g2-on-g-two-lists.patch is g2; n, u and nu
 # add `#define EXP_NOFALLBACK` / `#define EXP_NOUNROLL` as the first lines of
-# shaders/lit/shade_visibility.comp.glsl; packed as .gpu/extra/lll_{base,g2,n,u,nu}. lll render --frames 200 --stats at 1080p, two runs in rotating order; shader stats.
+# shaders/lit/shade_visibility.comp.glsl; packed as .gpu/extra/lll_{base,g2,n,u,nu}.
+# lll render --frames 200 --stats at 1080p, two runs in rotating order; shader stats.
 set -u
 source .gpu/setup.sh
 E=.gpu/extra
