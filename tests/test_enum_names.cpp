@@ -43,6 +43,7 @@ TEST(EnumNames, EveryOptionsNamesParseBackToTheirValues) {
   expectNamesRoundTrip<LightPlacement>("--light-motion");
   expectNamesRoundTrip<LllFill>("--lll-fill");
   expectNamesRoundTrip<LllLink>("--lll-link");
+  expectNamesRoundTrip<LllRecords>("--lll-records");
   expectNamesRoundTrip<LllShade>("--lll-shade");
   expectNamesRoundTrip<SurfaceSource>("--surfaces");
   expectNamesRoundTrip<GlassLighting>("--glass");
@@ -86,6 +87,7 @@ TEST(EnumNames, RenderHelpOffersEveryName) {
   expectHelpOffers<LightPlacement>(r.output, "--light-motion");
   expectHelpOffers<LllFill>(r.output, "--lll-fill");
   expectHelpOffers<LllLink>(r.output, "--lll-link");
+  expectHelpOffers<LllRecords>(r.output, "--lll-records");
   expectHelpOffers<LllShade>(r.output, "--lll-shade");
   expectHelpOffers<SurfaceSource>(r.output, "--surfaces");
   expectHelpOffers<GlassLighting>(r.output, "--glass");

@@ -80,6 +80,7 @@ TEST_F(HostileCli, EveryWordOptionRejectsHostileValues) {
       {render, "--device"},
       {render, "--lll-fill"},
       {render, "--lll-link"},
+      {render, "--lll-records"},
       {render, "--lll-shade"},
       {render, "--light-motion"},
       {render, "--debug-view"},

@@ -425,6 +425,39 @@ TEST(LllImages, SliceHeadsPastTheDeviceLimitAreRefused) {
   }
 }
 
+// --lll-records: the opaque shading reads listed lights' records through the uniform block or the
+// storage buffer, with every light type (spots' and boxes' fields too) and the same image; auto
+// reads storage on a CPU device. Past the block's 256 records uniform is refused, naming it.
+TEST(LllImages, RecordsFromEitherBlockMatchForward) {
+  const Scene scene = test::awkwardLightsScene(40);
+  RenderSettings settings;
+  settings.width = 128;
+  settings.height = 128;
+  const test::Rendered reference = test::render(scene, test::reference(settings));
+  settings.technique = "lll";
+  for (const LllRecords records : {LllRecords::Uniform, LllRecords::Storage, LllRecords::Auto}) {
+    settings.lllRecords = records;
+    const test::Rendered lll = test::render(scene, settings);
+    const bool uniform =
+        records == LllRecords::Uniform || (records == LllRecords::Auto && !test::gpuContext().isCpuDevice());
+    EXPECT_EQ(test::stat(lll, "records_from_uniform_block"), uniform ? 1.0 : 0.0) << records;
+    test::expectWithinBound(lll.ldr, reference.ldr, test::kSameImage,
+                            fmt::format("lll/compute records from {} awkward lights", records));
+  }
+  settings.lllRecords = LllRecords::Uniform;
+  const Scene tooMany = test::awkwardLightsScene(gpu::kUniformLightRecords);
+  ASSERT_GT(tooMany.lights.size(), gpu::kUniformLightRecords);
+  try {
+    Renderer(test::gpuContext(), tooMany, settings);
+    ADD_FAILURE() << "uniform records of " << tooMany.lights.size() << " lights accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find(fmt::format("--lll-records uniform: {} lights", tooMany.lights.size())),
+        std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(LllImages, CompactLinksRefuseTooManyLights) {
   Scene scene = test::awkwardLightsScene(300);
   RenderSettings settings;

@@ -13,6 +13,8 @@ layout(std430, set = 0, binding = 0) readonly buffer FrameBlock {
 layout(std430, set = 0, binding = 1) readonly buffer LightBlock {
   GpuLight lights[];
 };
+// Binding 51: the first kUniformLightRecords of the same records as a uniform block, for the
+// interfaces that read them so (lighting/lll/lighting.glsl's lightRecord).
 layout(std430, set = 0, binding = 2) readonly buffer MaterialBlock {
   GpuMaterial materials[];
 };

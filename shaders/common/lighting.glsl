@@ -20,6 +20,10 @@
 //                                   shades in 18.7 ms against 23.1 on the H200); the particles, whose
 //                                   invocations hold points of many depths or tiles, keep nextLight
 //                                   (per-pixel smoke 56.6 -> 62.5 ms walking links)
+// and (defining LIGHTING_LIGHT_RECORD)
+//   GpuLight lightRecord(uint light);
+//                                   the record of a light its lists name, where the opaque shading
+//                                   pass reads it; by default lights[light]
 // and (defining LIGHTING_LIST_PARTS)
 //   LightCursor lightsAtPart(uvec2 pixel, float viewDepth, uint part);
 //                                   part `part` of lightsAt's lights, of as many disjoint parts as
@@ -41,6 +45,12 @@ LightCursor lightsAtInClass(uvec2 pixel, float viewDepth, uint vplClass) {
 bool nextLink(inout LightCursor cursor, out uint light, out bool listed) {
   listed = true;
   return nextLight(cursor, light);
+}
+#endif
+
+#ifndef LIGHTING_LIGHT_RECORD
+GpuLight lightRecord(uint light) {
+  return lights[light];
 }
 #endif
 

@@ -96,7 +96,7 @@ void main() {
     uint light;
     bool listed;
     while (nextLink(cursor, light, listed))
-      if (listed) addLight(sums, light, lights[light], s);
+      if (listed) addLight(sums, light, lightRecord(light), s);
   }
 #endif
   bool replaced = false;

@@ -8,6 +8,9 @@ LLL_NAMESPACE_BEGIN
 // Compact 8-byte links keep the light index in 8 bits (Bezrati 1.2.2): beyond this many lights
 // the 16-byte wide link is used.
 LLL_CONST(uint, kCompactLinkMaxLights, 256u);
+// Light records a uniform block holds (--lll-records uniform): 256 of 64 bytes, 16 KiB, the
+// smallest maxUniformBufferRange Vulkan allows.
+LLL_CONST(uint, kUniformLightRecords, 256u);
 // Compact links keep "next" in 24 bits; 0xFFFFFF marks the end of a list.
 LLL_CONST(uint, kCompactLinkEnd, 0xFFFFFFu);
 LLL_CONST(uint, kLinkEnd, 0xFFFFFFFFu);

@@ -102,6 +102,9 @@ void addRenderOptions(CLI::App& cmd, lll::RenderJob& job) {
          "front of the tile's nearest surface and, where deep, its surfaces' depth range")
       ->check(CLI::Range(0u, 32u));
   addChoice(cmd, "--lll-link", s.lllLink, "link format: compact (8 B, <=256 lights) | wide (16 B) | auto");
+  addChoice(cmd, "--lll-records", s.lllRecords,
+            "opaque shading reads listed lights from: storage (light buffer) | uniform (uniform block, <=256 "
+            "lights) | auto (uniform on a GPU where they fit)");
   addChoice(cmd, "--lll-shade", s.lllShade,
             "lll opaque shading: compute (thin G-buffer, list walk in a compute pass) | fragment");
   addChoice(cmd, "--surfaces", s.surfaces,

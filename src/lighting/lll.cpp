@@ -33,6 +33,8 @@ constexpr uint32_t kShellShapes = 3;
 
 // shaders/common/lll_data.glsl's kLinkFormat.
 constexpr uint32_t kLinkFormatConstant = 42;
+// shaders/lighting/lll/lighting.glsl's kRecordsFromUniformBlock.
+constexpr uint32_t kRecordsFromUniformBlockConstant = 43;
 
 // The shaders' link format (kLinkCompact or kLinkWide) for --lll-link and the scene's lights.
 uint32_t linkFormatFor(LllLink link, uint32_t lightCount) {
@@ -42,6 +44,17 @@ uint32_t linkFormatFor(LllLink link, uint32_t lightCount) {
     throw InputError(fmt::format("--lll-link compact: {} lights, but compact links index at most {}",
                                  lightCount, gpu::kCompactLinkMaxLights));
   return gpu::kLinkCompact;
+}
+
+// Whether the opaque shading reads listed lights' records from the uniform block (--lll-records).
+// Auto: on a GPU while they fit; lavapipe (a CPU device) compiles a shader variant per bind of
+// uniform blocks' values (common/frame.glsl).
+bool recordsFromUniformBlock(const Context& context, LllRecords records, uint32_t lightCount) {
+  const bool fits = lightCount <= gpu::kUniformLightRecords;
+  if (records == LllRecords::Uniform && !fits)
+    throw InputError(fmt::format("--lll-records uniform: {} lights, but the uniform block holds at most {}",
+                                 lightCount, gpu::kUniformLightRecords));
+  return records == LllRecords::Uniform || (records == LllRecords::Auto && fits && !context.isCpuDevice());
 }
 
 // Indexed mesh of a light shell on the GPU.
@@ -78,6 +91,12 @@ class LightLinkedList final : public Technique {
   // shaders/common/lll_data.glsl's kLinkFormat: every pass that reads or writes links is compiled
   // for the pool's format, so no walk tests it per link.
   SpecializationConstants linkConstants() const { return {{kLinkFormatConstant, linkFormat_}}; }
+  // What the lit passes' lighting interface is compiled for: the links and where records are read.
+  SpecializationConstants lightingConstants() const {
+    SpecializationConstants constants = linkConstants();
+    constants[kRecordsFromUniformBlockConstant] = uniformRecords_ ? 1u : 0u;
+    return constants;
+  }
   void createShells(const GpuScene& scene);
   void allocatePool(uint64_t links);
   // The frame's bindings, the lists, the fills' bounds and shell order: what the passes building
@@ -97,6 +116,7 @@ class LightLinkedList final : public Technique {
   uint32_t linkFormat_;
   uint32_t linkBytes_;
   bool autoLinkFormat_;
+  bool uniformRecords_;
   uint32_t tilesX_ = 0;
   uint32_t tilesY_ = 0;
   uint32_t tiles_ = 0;
@@ -147,7 +167,8 @@ LightLinkedList::LightLinkedList(Context& context, const GpuScene& scene, const 
                                                              : OpaqueShading::GBuffer),
       linkFormat_(linkFormatFor(settings.lllLink, scene.lightCount())),
       linkBytes_(linkFormat_ == gpu::kLinkCompact ? 8 : 16),
-      autoLinkFormat_(settings.lllLink == LllLink::Auto) {
+      autoLinkFormat_(settings.lllLink == LllLink::Auto),
+      uniformRecords_(recordsFromUniformBlock(context, settings.lllRecords, scene.lightCount())) {
   const uint32_t tile = settings.tileSize;
   validateTileSize(tile);
   tilesX_ = divideRoundingUp(targets.width, tile);
@@ -311,7 +332,7 @@ LightingInterface LightLinkedList::lighting() const {
           },
           {&heads_, &links_, &tileRange_},
           classes_,
-          linkConstants()};
+          lightingConstants()};
 }
 
 // The heads and counters are emptied by the tile-depth pass (lighting/lll/tile_depth.comp); only the
@@ -457,6 +478,7 @@ std::vector<std::pair<std::string, double>> LightLinkedList::stats() const {
       {"lists_per_tile", double(slices_)},
       {"heads_per_list", double(classes_)},
       {"link_bytes_each", double(linkBytes_)},
+      {"records_from_uniform_block", uniformRecords_ ? 1.0 : 0.0},
       {"overflows", double(overflows_)},
       {"tiles", double(tiles_)},
       {"fill_workgroups_per_cell", double(fillSplits_)},

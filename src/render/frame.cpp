@@ -75,7 +75,8 @@ DescriptorWriter meshPassDescriptors(const FrameContext& frame) {
   DescriptorWriter writer;
   writer.storage(0, frame.uniformBuffer.handle())
       .storage(1, frame.scene.lightBuffer().handle())
-      .storage(2, frame.scene.materialBuffer().handle());
+      .storage(2, frame.scene.materialBuffer().handle())
+      .storage(51, frame.scene.lightBuffer().handle(), 0, kUniformLightRecordBytes);
   if (frame.shadows) frame.shadows->bind(writer);
   if (frame.lightShadows) frame.lightShadows->bind(writer);
   return writer;

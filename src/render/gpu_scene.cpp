@@ -295,8 +295,12 @@ void GpuScene::uploadMaterials() {
 void GpuScene::uploadLights(const std::vector<Light>& lights) {
   const VkDeviceSize bytes = lights.size() * sizeof(gpu::GpuLight);
   const bool uploadedBefore = bool(lights_);  // made here only
+  // Also a uniform buffer of its first kUniformLightRecordBytes (common/frame.glsl's binding 51),
+  // which it therefore always spans.
   if (!lights_ || lights_.size() < bytes)
-    lights_ = Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Device, "lights");
+    lights_ = Buffer(context_, std::max(bytes, kUniformLightRecordBytes),
+                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                     MemoryUse::Device, "lights");
   // The records are converted on every core straight into the staging buffer. The first upload's
   // staging is freed with it; from the second on (lights placed on the CPU every frame) it is kept
   // for the next frame: a million lights' 64 MB were 90 ms a frame on a 2-core machine when each

@@ -38,6 +38,10 @@ struct DrawItem {
 
 enum class DrawFilter { OpaqueOnly, MaskOnly, Opaque, Blend, All };
 
+// The light records the light buffer also offers as a uniform buffer (common/frame.glsl's binding
+// 51): the buffer is at least this large.
+constexpr VkDeviceSize kUniformLightRecordBytes = gpu::kUniformLightRecords * sizeof(gpu::GpuLight);
+
 class GpuScene {
  public:
   GpuScene(Context& context, const Scene& scene);

@@ -38,6 +38,17 @@ struct EnumNames<LllLink> {
   static constexpr std::array<std::string_view, 3> names{"compact", "wide", "auto"};
 };
 
+// Where lll's opaque shading reads the records of the lights its lists name: storage (the light
+// buffer) | uniform (the same records through a uniform block: a GPU's constant cache, which serves
+// a workgroup walking one list in a single read; at most kCompactLinkMaxLights lights) | auto
+// (uniform on a GPU while the lights fit; lavapipe folds uniform blocks' values into new shader
+// variants, see common/frame.glsl).
+enum class LllRecords : uint8_t { Storage, Uniform, Auto };
+template <>
+struct EnumNames<LllRecords> {
+  static constexpr std::array<std::string_view, 3> names{"storage", "uniform", "auto"};
+};
+
 // Where lll lights opaque surfaces with the G-buffer path: a compute pass over a thin G-buffer, or
 // the fragment shader of a second geometry pass (the chapter's forward shading).
 enum class LllShade : uint8_t { Compute, Fragment };
@@ -155,6 +166,7 @@ struct RenderSettings {
   // Light Linked List options (technique "lll").
   LllFill lllFill = LllFill::Compute;
   LllLink lllLink = LllLink::Auto;
+  LllRecords lllRecords = LllRecords::Auto;
   LllShade lllShade = LllShade::Compute;
   SurfaceSource surfaces = SurfaceSource::Visibility;
   GlassLighting glass = GlassLighting::Compute;

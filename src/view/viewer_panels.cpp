@@ -131,6 +131,7 @@ void Viewer::drawControls() {
         committedUint("fill splits (0: auto)", settings_.lllFillSplits, 0, 64);
       choice("slices", settings_.lllSlices, {1, 2, 4, 8, 16, 32});
       choice("link", settings_.lllLink);
+      choice("records", settings_.lllRecords);
       choice("shade", settings_.lllShade);
     }
     if (settings_.technique == "clustered") choice("cluster slices", settings_.clusterSlices, {4, 8, 16, 32});

@@ -78,6 +78,28 @@ bool nextLink(inout LightCursor cursor, out uint light, out bool listed) {
   return true;
 }
 
+// --lll-records (LightLinkedList::lightingConstants): where the opaque shading reads a listed
+// light's record. A workgroup walking one list reads the same record in every invocation, which a
+// GPU's constant cache serves in one read: ThreeL's opaque shading on the H100 (1080p) took 0.2041
+// -> 0.1985 ms at 16 lights, 2.168 -> 2.107 at 256 (bench/README.md, 2026-12-06). std140 lays a
+// GpuLight out as std430 does (four vec4).
+layout(constant_id = 43) const bool kRecordsFromUniformBlock = false;
+layout(std140, set = 0, binding = 51) uniform LightRecordBlock {
+  GpuLight uniformLights[kUniformLightRecords];
+};
+
+#define LIGHTING_LIGHT_RECORD
+GpuLight lightRecord(uint light) {
+  if (!kRecordsFromUniformBlock) return lights[light];
+  // Member by member: glslang types the uniform block's struct apart from the storage buffer's.
+  GpuLight record;
+  record.positionRange = uniformLights[light].positionRange;
+  record.colorIntensity = uniformLights[light].colorIntensity;
+  record.directionType = uniformLights[light].directionType;
+  record.spotParams = uniformLights[light].spotParams;
+  return record;
+}
+
 // As ThreeL's view: a listed light's colour where it reaches the surface, grey where the list has
 // it but the surface is out of its range (the cost of a coarse shape), black with no list entry.
 vec3 boundsView(Surface s, uvec2 pixel, float viewDepth) {
