@@ -138,12 +138,15 @@ TEST(Instancing, HundredThousandInstancesInOneDraw) {
 // double-sided quad and a floor. With `mirrored` the box's and the quad's nodes mirror them
 // (scale -1 along one axis); otherwise the same mirror is baked into their meshes' data
 // (positions and normals mirrored, triangles reversed) under the same nodes without it: both
-// files describe the same surfaces (glTF: a negative determinant makes the fronts clockwise).
+// files describe the same surfaces (glTF: a negative determinant makes the fronts clockwise). The
+// box has tangents (u, handedness 1), baked as the mirror of u with handedness -1: a mirroring node
+// must turn the bitangent cross(n, t) * w, which the renderer does with the sign of the node's
+// determinant (mesh.vert and the visibility rebuild) and the baked data with w.
 std::filesystem::path mirrorScene(const std::filesystem::path& dir, bool mirrored, bool glassBox) {
   using namespace gltf_test;
   GltfBuilder b;
   // Faces of the unit box: corners centre -u -v, +u -v, +u +v, -u +v with cross(u, v) = n.
-  std::vector<float> boxPositions, boxNormals;
+  std::vector<float> boxPositions, boxNormals, boxTangents;
   std::vector<uint32_t> boxIndices;
   for (int axis = 0; axis < 3; ++axis) {
     for (float sign : {1.0f, -1.0f}) {
@@ -156,6 +159,7 @@ std::filesystem::path mirrorScene(const std::filesystem::path& dir, bool mirrore
         const glm::vec3 p = 0.5f * (n + c.x * u + c.y * v);
         boxPositions.insert(boxPositions.end(), {p.x, p.y, p.z});
         boxNormals.insert(boxNormals.end(), {n.x, n.y, n.z});
+        boxTangents.insert(boxTangents.end(), {u.x, u.y, u.z, 1.0f});
       }
       boxIndices.insert(boxIndices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
     }
@@ -175,14 +179,20 @@ std::filesystem::path mirrorScene(const std::filesystem::path& dir, bool mirrore
   if (!mirrored) {
     bake(boxPositions, boxNormals, boxIndices, 0);
     bake(quadPositions, quadNormals, quadIndices, 2);
+    for (size_t i = 0; i < boxTangents.size(); i += 4) {
+      boxTangents[i] = -boxTangents[i];
+      boxTangents[i + 3] = -1.0f;
+    }
   }
   const auto addMesh = [&](const std::vector<float>& positions, const std::vector<float>& normals,
-                           const std::vector<uint32_t>& indices, int material) {
-    return b.addMesh(json::array(
-        {{{"attributes",
-           {{"POSITION", b.addPositions(positions)}, {"NORMAL", b.addAccessor(normals, kFloat, "VEC3")}}},
-          {"indices", b.addAccessor(indices, kUnsignedInt, "SCALAR")},
-          {"material", material}}}));
+                           const std::vector<uint32_t>& indices, int material,
+                           const std::vector<float>& tangents = {}) {
+    json attributes = {{"POSITION", b.addPositions(positions)},
+                       {"NORMAL", b.addAccessor(normals, kFloat, "VEC3")}};
+    if (!tangents.empty()) attributes["TANGENT"] = b.addAccessor(tangents, kFloat, "VEC4");
+    return b.addMesh(json::array({{{"attributes", attributes},
+                                   {"indices", b.addAccessor(indices, kUnsignedInt, "SCALAR")},
+                                   {"material", material}}}));
   };
   b.doc["materials"] = json::array(
       {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}}}},
@@ -195,7 +205,7 @@ std::filesystem::path mirrorScene(const std::filesystem::path& dir, bool mirrore
         {"doubleSided", true}}});
   const int floor = addMesh({-6, 0, -6, -6, 0, 6, 6, 0, 6, 6, 0, -6}, {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0},
                             {0, 1, 2, 0, 2, 3}, 0);
-  const int box = addMesh(boxPositions, boxNormals, boxIndices, 1);
+  const int box = addMesh(boxPositions, boxNormals, boxIndices, 1, boxTangents);
   const int quad = addMesh(quadPositions, quadNormals, quadIndices, 2);
   const json mirrorX = {-1, 1, 1}, mirrorZ = {1, 1, -1};
   const std::vector<int> roots = {
@@ -215,6 +225,10 @@ std::filesystem::path mirrorScene(const std::filesystem::path& dir, bool mirrore
 
 Scene litMirrorScene(const std::filesystem::path& file) {
   Scene scene = loadGltf(file);
+  // The box's normals tilted along its bitangent (and a little along its tangent), so that a
+  // bitangent turned the wrong way lights it differently.
+  scene.textures.push_back(Texture{"tilt", 1, 1, {150, 40, 190, 255}, false});
+  scene.materials.at(1).normalTexture = int(scene.textures.size() - 1);
   for (int i = 0; i < 3; ++i) {
     Light light;
     light.position = glm::vec3(-2.5f + 2.5f * float(i), 2.2f, 1.8f - 1.5f * float(i == 1));
