@@ -344,6 +344,21 @@ TEST(LllImages, AwkwardLightsMatchForward) {
     test::expectWithinBound(test::render(scene, settings).ldr, reference.ldr, test::kSameImage,
                             "lll/" + variantName(v) + " awkward lights");
   }
+  // --lll-records: the opaque shading reads listed lights' records through the uniform block or
+  // the storage buffer, spots' and boxes' fields too, to the same image; auto reads storage on a
+  // CPU device.
+  settings.lllFill = LllFill::Compute;
+  settings.lllShade = LllShade::Compute;
+  settings.lllSlices = 1;
+  for (const LllRecords records : {LllRecords::Uniform, LllRecords::Storage, LllRecords::Auto}) {
+    settings.lllRecords = records;
+    const test::Rendered lll = test::render(scene, settings);
+    const bool uniform =
+        records == LllRecords::Uniform || (records == LllRecords::Auto && !test::gpuContext().isCpuDevice());
+    EXPECT_EQ(test::stat(lll, "records_from_uniform_block"), uniform ? 1.0 : 0.0) << records;
+    test::expectWithinBound(lll.ldr, reference.ldr, test::kSameImage,
+                            fmt::format("lll/compute records from {} awkward lights", records));
+  }
 }
 
 // The atrium at 160x90 through lll with `settings` and a first link pool of one link a tile (far
@@ -425,34 +440,21 @@ TEST(LllImages, SliceHeadsPastTheDeviceLimitAreRefused) {
   }
 }
 
-// --lll-records: the opaque shading reads listed lights' records through the uniform block or the
-// storage buffer, with every light type (spots' and boxes' fields too) and the same image; auto
-// reads storage on a CPU device. Past the block's 256 records uniform is refused, naming it.
-TEST(LllImages, RecordsFromEitherBlockMatchForward) {
-  const Scene scene = test::awkwardLightsScene(40);
+// --lll-records uniform past the uniform block's 256 records is refused, naming it.
+TEST(LllImages, UniformRecordsRefuseTooManyLights) {
+  const Scene scene = test::awkwardLightsScene(gpu::kUniformLightRecords);
+  ASSERT_GT(scene.lights.size(), gpu::kUniformLightRecords);
   RenderSettings settings;
-  settings.width = 128;
-  settings.height = 128;
-  const test::Rendered reference = test::render(scene, test::reference(settings));
   settings.technique = "lll";
-  for (const LllRecords records : {LllRecords::Uniform, LllRecords::Storage, LllRecords::Auto}) {
-    settings.lllRecords = records;
-    const test::Rendered lll = test::render(scene, settings);
-    const bool uniform =
-        records == LllRecords::Uniform || (records == LllRecords::Auto && !test::gpuContext().isCpuDevice());
-    EXPECT_EQ(test::stat(lll, "records_from_uniform_block"), uniform ? 1.0 : 0.0) << records;
-    test::expectWithinBound(lll.ldr, reference.ldr, test::kSameImage,
-                            fmt::format("lll/compute records from {} awkward lights", records));
-  }
   settings.lllRecords = LllRecords::Uniform;
-  const Scene tooMany = test::awkwardLightsScene(gpu::kUniformLightRecords);
-  ASSERT_GT(tooMany.lights.size(), gpu::kUniformLightRecords);
+  settings.width = 32;
+  settings.height = 32;
   try {
-    Renderer(test::gpuContext(), tooMany, settings);
-    ADD_FAILURE() << "uniform records of " << tooMany.lights.size() << " lights accepted";
+    Renderer(test::gpuContext(), scene, settings);
+    ADD_FAILURE() << "uniform records of " << scene.lights.size() << " lights accepted";
   } catch (const InputError& e) {
     EXPECT_NE(
-        std::string(e.what()).find(fmt::format("--lll-records uniform: {} lights", tooMany.lights.size())),
+        std::string(e.what()).find(fmt::format("--lll-records uniform: {} lights", scene.lights.size())),
         std::string::npos)
         << e.what();
   }

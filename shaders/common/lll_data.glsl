@@ -89,11 +89,12 @@ uint tileIndexOf(uvec2 pixel) {
 }
 
 // A fill pushes at most one link per light into a tile's list, so no walk needs more steps than
-// there are lights (with compact links at most kCompactLinkMaxLights: a constant, no load; ThreeL's
-// opaque shading on the H100 at 1080p with uniform records, 0.1985 -> 0.1915 ms at 16 lights,
-// 2.106 -> 2.002 at 256: bench/README.md, 2026-12-06). Bounding walks by this rather than by the pool's size matters: inactive lanes
-// of a fragment shader (lavapipe runs 4x4 blocks) may start from undefined values, and a walk
-// bounded only by the pool then spins for the whole pool on a garbage chain while its block waits.
+// there are lights; with compact links at most kCompactLinkMaxLights, a constant that costs no load
+// (ThreeL's opaque shading on the H100 at 1080p with uniform records: 0.1985 -> 0.1915 ms at 16
+// lights, 2.106 -> 2.002 at 256; bench/README.md, 2026-12-06). Bounding walks by this rather than
+// by the pool's size matters: inactive lanes of a fragment shader (lavapipe runs 4x4 blocks) may
+// start from undefined values, and a walk bounded only by the pool then spins for the whole pool on
+// a garbage chain while its block waits.
 uint longestPossibleList() {
   return compactLinks() ? kCompactLinkMaxLights : min(lll.params.x, frame.counts.x);
 }
