@@ -38,11 +38,11 @@ struct EnumNames<LllLink> {
   static constexpr std::array<std::string_view, 3> names{"compact", "wide", "auto"};
 };
 
-// Where lll's opaque shading reads the records of the lights its lists name: storage (the light
-// buffer) | uniform (the same records through a uniform block: a GPU's constant cache, which serves
-// a workgroup walking one list in a single read; at most kCompactLinkMaxLights lights) | auto
-// (uniform on a GPU while the lights fit; lavapipe folds uniform blocks' values into new shader
-// variants, see common/frame.glsl).
+// Where lll's opaque shading from the visibility buffer (the default surfaces) reads the records of
+// the lights its lists name: storage (the light buffer) | uniform (the same records through a
+// uniform block: a GPU's constant cache, which serves a workgroup walking one list in a single read;
+// at most kUniformLightRecords lights) | auto (uniform on a GPU while the lights fit; lavapipe folds
+// uniform blocks' values into new shader variants, see common/frame.glsl).
 enum class LllRecords : uint8_t { Storage, Uniform, Auto };
 template <>
 struct EnumNames<LllRecords> {
