@@ -167,22 +167,24 @@ std::filesystem::path mirrorScene(const std::filesystem::path& dir, bool mirrore
   std::vector<float> quadPositions = {-0.5f, -0.5f, 0, 0.5f, -0.5f, 0, 0.5f, 0.5f, 0, -0.5f, 0.5f, 0};
   std::vector<float> quadNormals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
   std::vector<uint32_t> quadIndices = {0, 1, 2, 0, 2, 3};
-  // The box mirrors along x, the quad along z (so its front turns to the back).
+  // The box mirrors along x, the quad along z (so its front turns to the back). Tangents, where a
+  // mesh has them, mirror too and flip their handedness.
   const auto bake = [](std::vector<float>& positions, std::vector<float>& normals,
-                       std::vector<uint32_t>& indices, int axis) {
+                       std::vector<uint32_t>& indices, int axis, std::vector<float>* tangents = nullptr) {
     for (size_t i = size_t(axis); i < positions.size(); i += 3) {
       positions[i] = -positions[i];
       normals[i] = -normals[i];
     }
     for (size_t i = 0; i < indices.size(); i += 3) std::swap(indices[i + 1], indices[i + 2]);
+    if (tangents)
+      for (size_t i = 0; i < tangents->size(); i += 4) {
+        (*tangents)[i + size_t(axis)] = -(*tangents)[i + size_t(axis)];
+        (*tangents)[i + 3] = -(*tangents)[i + 3];
+      }
   };
   if (!mirrored) {
-    bake(boxPositions, boxNormals, boxIndices, 0);
+    bake(boxPositions, boxNormals, boxIndices, 0, &boxTangents);
     bake(quadPositions, quadNormals, quadIndices, 2);
-    for (size_t i = 0; i < boxTangents.size(); i += 4) {
-      boxTangents[i] = -boxTangents[i];
-      boxTangents[i + 3] = -1.0f;
-    }
   }
   const auto addMesh = [&](const std::vector<float>& positions, const std::vector<float>& normals,
                            const std::vector<uint32_t>& indices, int material,
