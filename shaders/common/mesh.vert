@@ -13,7 +13,9 @@ layout(location = 3) in vec4 inTangent;
 layout(location = 4) in vec2 inUv1;
 layout(location = 5) in vec4 inColor;  // half floats (lll::Vertex::color)
 layout(location = 8) in mat4 inModel;
-layout(location = 12) in mat3 inNormalMatrix;
+// The normal matrix's columns with their w: the first's is the sign of the model's determinant
+// (render/gpu_scene.cpp's normalMatrix), -1 where the transform mirrors.
+layout(location = 12) in mat3x4 inNormalColumns;
 
 layout(location = 0) out vec3 outWorldPosition;
 layout(location = 1) out vec3 outNormal;
@@ -27,13 +29,12 @@ invariant gl_Position;
 void main() {
   vec4 world = inModel * vec4(inPosition, 1.0);
   outWorldPosition = world.xyz;
-  outNormal = inNormalMatrix * inNormal;
+  outNormal = mat3(inNormalColumns) * inNormal;
   outUv = inUv;
   outUv1 = inUv1;
   outColor = inColor;
   // Tangents follow the surface (the model matrix, not the normal matrix); a mirroring transform
-  // flips the bitangent's handedness.
-  mat3 linear = mat3(inModel);
-  outTangent = vec4(linear * inTangent.xyz, inTangent.w * (determinant(linear) < 0.0 ? -1.0 : 1.0));
+  // flips the bitangent's handedness (the sign computed once, on the CPU).
+  outTangent = vec4(mat3(inModel) * inTangent.xyz, inTangent.w * inNormalColumns[0].w);
   gl_Position = frame.viewProj * world;
 }

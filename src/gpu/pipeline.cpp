@@ -244,7 +244,7 @@ Pipeline::Pipeline(Context& context, const PipelineLayout& layout, const Graphic
   }
   if (desc.vertexInput == VertexInput::Mesh) {
     for (uint32_t column = 0; column < 3; ++column)
-      used.push_back({12 + column, 1, VK_FORMAT_R32G32B32_SFLOAT,
+      used.push_back({12 + column, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
                       uint32_t(offsetof(gpu::MeshInstance, normalMatrix) + 16 * column)});
   }
   VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
